@@ -1,0 +1,35 @@
+"""roughcontact: boundary-element contact mechanics of rough spheres.
+
+Reproduces and extends R. Pohrt, V. L. Popov, "Contact Mechanics of Rough
+Spheres: Crossover from Fractal to Hertzian Behavior", Adv. Tribol. 2013,
+974178 (2013).
+
+Conventions (used throughout):
+
+* ``z`` (``heights``) is the rigid indenter's shape on an ``n × n`` grid of
+  square cells of side ``Δ = length/n``, measured from the undeformed
+  half-space towards the indenter.
+* ``depth`` is the rigid-body approach counted from first touch (0 when
+  ``min z`` just touches).
+* The half-space surface displacement is ``u = depth − (z − min z)`` wherever
+  the pressure is positive; the gap is ``≥ 0`` elsewhere; pressure ``≥ 0``.
+* ``force = Σ pressure × Δ²``; ``stiffness = dF/d(depth)``.
+* Units are the caller's: results scale exactly as ``F ∝ E*L²``,
+  ``k ∝ E*L``, ``d ∝ L``.
+
+Modules: :mod:`~roughcontact.surfaces` (height maps, eqs. 1–3 and 15),
+:mod:`~roughcontact.contact` (the BEM solver and stiffness),
+:mod:`~roughcontact.theory` (eqs. 7–18), :mod:`~roughcontact.operators`
+(elastic half-space influence operators).
+"""
+
+from importlib.metadata import PackageNotFoundError, version
+
+from . import contact, operators, surfaces, theory
+
+try:
+    __version__ = version("roughcontact")
+except PackageNotFoundError:  # running from a source tree that is not installed
+    __version__ = "0+unknown"
+
+__all__ = ["contact", "operators", "surfaces", "theory", "__version__"]

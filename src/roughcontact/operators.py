@@ -1,0 +1,142 @@
+"""Elastic half-space influence operators: surface displacement from pressure.
+
+Pressure is piecewise constant on the square cells (side ``Δ = length/n``) of an
+``n × n`` grid; displacements are taken at the cell centres and are positive
+into the half-space. ``E*`` is the effective modulus, ``1/E* = (1−ν²)/E`` for a
+rigid indenter.
+
+* :class:`FreeSpaceOperator` — non-periodic half-space: Love's closed-form
+  displacement of a uniformly loaded rectangle (Love 1929; Johnson 1985,
+  eq. 3.25) convolved with a zero-padded FFT (DC-FFT: Liu, Wang & Liu,
+  Wear 243, 101 (2000)). Any rectangular window of the grid can be convolved
+  on its own padded size, with results identical to the full grid for
+  pressures that vanish outside the window.
+* :class:`PeriodicOperator` — half-space periodic over ``length``:
+  ``ũ(q) = 2 p̃(q)/(E* |q|)`` for ``q ≠ 0`` and ``ũ(0) = 0`` (the mean
+  displacement of a periodic half-space is not defined; depths are then
+  measured against the mean plane).
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+import scipy.fft
+
+__all__ = ["love_coefficients", "FreeSpaceOperator", "PeriodicOperator", "operator_for"]
+
+
+def love_coefficients(n: int) -> np.ndarray:
+    """Dimensionless displacement ``c[i, j]`` at offset ``(i, j)`` cells from a loaded cell.
+
+    ``u = c[|i|, |j|] · p Δ/(π E*)`` for a uniform pressure ``p`` on one square
+    cell of side ``Δ``. With cell-unit coordinates and the half-width 1/2,
+
+    ``c = Σ_corners ± [X asinh(Y/|X|) + Y asinh(X/|Y|)]``,
+    ``X = i ± 1/2``, ``Y = j ± 1/2`` (Johnson 1985, eq. 3.25, with the
+    ``X ln|X|`` terms cancelled between corners). ``X`` and ``Y`` are never 0.
+    Self-coefficient: ``c[0, 0] = 4 ln(1 + √2)``.
+    """
+    offset = np.arange(n, dtype=float)
+    x = offset[:, None]
+    y = offset[None, :]
+
+    def corner(cx, cy):
+        return cx * np.arcsinh(cy / np.abs(cx)) + cy * np.arcsinh(cx / np.abs(cy))
+
+    return (corner(x + 0.5, y + 0.5) - corner(x + 0.5, y - 0.5)
+            - corner(x - 0.5, y + 0.5) + corner(x - 0.5, y - 0.5))
+
+
+class FreeSpaceOperator:
+    """Non-periodic elastic half-space on an ``n × n`` grid (DC-FFT).
+
+    Parameters
+    ----------
+    n : int
+        Cells per side.
+    length : float
+        Side length of the grid (length unit); cell size ``Δ = length/n``.
+    e_star : float
+        Effective modulus (pressure unit).
+
+    Notes
+    -----
+    Kernel spectra are cached per padded shape. For a window of ``m`` cells the
+    padded size is ``M = next_fast_len(2m − 1)``; :meth:`window_size` returns the
+    largest window that fits the same ``M``.
+    """
+
+    periodic = False
+
+    def __init__(self, n: int, length: float, e_star: float):
+        self.n = n
+        self.spacing = length / n
+        self.e_star = e_star
+        self.coefficients = love_coefficients(n) * (self.spacing / (np.pi * e_star))
+        self.self_coefficient = self.coefficients[0, 0]
+        self._spectra: dict[tuple[int, int], np.ndarray] = {}
+
+    def window_size(self, cells: int) -> int:
+        """Largest window ≥ ``cells`` (≤ n) convolved with the same padded FFT size."""
+        cells = min(max(int(cells), 1), self.n)
+        padded = scipy.fft.next_fast_len(2 * cells - 1, real=True)
+        return min((padded + 1) // 2, self.n)
+
+    def _spectrum(self, shape: tuple[int, int]) -> tuple[tuple[int, int], np.ndarray]:
+        padded = tuple(scipy.fft.next_fast_len(2 * m - 1, real=True) for m in shape)
+        spectrum = self._spectra.get(padded)
+        if spectrum is None:
+            index = [np.arange(size) for size in padded]
+            used = [(idx < m) | (idx > size - m) for idx, m, size in zip(index, shape, padded)]
+            offsets = [np.where(idx < m, idx, np.where(use, size - idx, 0))
+                       for idx, m, size, use in zip(index, shape, padded, used)]
+            kernel = self.coefficients[offsets[0][:, None], offsets[1][None, :]]
+            kernel = kernel * (used[0][:, None] & used[1][None, :])
+            spectrum = scipy.fft.rfft2(kernel)
+            self._spectra[padded] = spectrum
+        return padded, spectrum
+
+    def __call__(self, pressure: np.ndarray) -> np.ndarray:
+        """Displacement on the cells of ``pressure`` (any ``m1 × m2`` window, ``m ≤ n``),
+        for that pressure alone (zero outside the window)."""
+        shape = pressure.shape
+        padded, spectrum = self._spectrum(shape)
+        product = scipy.fft.rfft2(pressure, s=padded) * spectrum
+        return scipy.fft.irfft2(product, s=padded)[: shape[0], : shape[1]]
+
+
+class PeriodicOperator:
+    """Elastic half-space periodic over ``length`` on an ``n × n`` grid.
+
+    ``ũ(q) = 2 p̃(q)/(E* |q|)`` for ``q ≠ 0``; ``ũ(0) = 0``.
+    """
+
+    periodic = True
+
+    def __init__(self, n: int, length: float, e_star: float):
+        self.n = n
+        self.spacing = length / n
+        self.e_star = e_star
+        qx = 2.0 * np.pi * scipy.fft.fftfreq(n, d=self.spacing)
+        qy = 2.0 * np.pi * scipy.fft.rfftfreq(n, d=self.spacing)
+        q = np.hypot(qx[:, None], qy[None, :])
+        q[0, 0] = np.inf
+        self.spectrum = 2.0 / (e_star * q)
+        # Response of a cell to its own uniform unit pressure (mean removed).
+        unit = np.zeros((n, n))
+        unit[0, 0] = 1.0
+        self.self_coefficient = float(self(unit)[0, 0])
+
+    def __call__(self, pressure: np.ndarray) -> np.ndarray:
+        """Zero-mean displacement of the periodic half-space (full ``n × n`` grid)."""
+        n = self.n
+        return scipy.fft.irfft2(scipy.fft.rfft2(pressure) * self.spectrum, s=(n, n))
+
+
+@functools.lru_cache(maxsize=8)
+def operator_for(n: int, length: float, e_star: float, periodic: bool):
+    """Shared, cached operator for a grid (kernel spectra are reused across solves)."""
+    cls = PeriodicOperator if periodic else FreeSpaceOperator
+    return cls(n, length, e_star)
