@@ -124,8 +124,11 @@ def crossover_force(radius, hurst, h_rms, length, e_star, zeta):
 
 
 def crossover_slope(hurst):
-    """Local slope d ln k/d ln F of eq. 16 at F_tr, where both terms are equal: 2/(H+4).
+    """Local slope d ln k/d ln F of eq. 16 where its two terms are equal: 2/(H+4).
 
     With F = a k³ + b k^(H+1) and a k³ = b k^(H+1): d ln F/d ln k = (3 + H + 1)/2.
+    The terms are equal at the stiffness where the asymptotes (eqs. 9, 11)
+    intersect, i.e. on the eq. 16 curve at F = 2 F_tr (F_tr of eq. 17): a force
+    read off a measured curve where its slope crosses 2/(H+4) is 2 F_tr.
     """
     return 2.0 / (np.asarray(hurst, dtype=float) + 4.0)
