@@ -98,6 +98,27 @@ class FreeSpaceOperator:
             self._spectra[padded] = spectrum
         return padded, spectrum
 
+    @functools.cached_property
+    def _kernel(self) -> np.ndarray:
+        """Symmetric influence array: ``[n−1+i, n−1+j]`` holds the coefficient at offset (i, j)."""
+        n = self.n
+        index = np.abs(np.arange(-(n - 1), n))
+        return self.coefficients[index[:, None], index[None, :]]
+
+    def column_limit(self, shape: tuple[int, int]) -> int:
+        """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
+        padded = [scipy.fft.next_fast_len(2 * m - 1, real=True) for m in shape]
+        return max(4, int(2 * padded[0] * padded[1] * np.log2(padded[0] * padded[1])
+                          / (shape[0] * shape[1]) / 8))
+
+    def add_columns(self, field: np.ndarray, values: np.ndarray, cells: np.ndarray) -> None:
+        """Add the displacement of pressures ``values`` on the flat ``cells`` of the window
+        ``field`` to ``field`` in place, summing influence columns directly."""
+        m1, m2 = field.shape
+        origin = self.n - 1
+        for value, (i, j) in zip(values, zip(*np.unravel_index(cells, field.shape))):
+            field += value * self._kernel[origin - i: origin - i + m1, origin - j: origin - j + m2]
+
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
         """Displacement on the cells of ``pressure`` (any ``m1 × m2`` window, ``m ≤ n``),
         for that pressure alone (zero outside the window)."""
@@ -124,10 +145,23 @@ class PeriodicOperator:
         q = np.hypot(qx[:, None], qy[None, :])
         q[0, 0] = np.inf
         self.spectrum = 2.0 / (e_star * q)
-        # Response of a cell to its own uniform unit pressure (mean removed).
-        unit = np.zeros((n, n))
+        self.self_coefficient = float(self._kernel[0, 0])
+
+    @functools.cached_property
+    def _kernel(self) -> np.ndarray:
+        """Displacement of the whole grid under a unit pressure on cell (0, 0)."""
+        unit = np.zeros((self.n, self.n))
         unit[0, 0] = 1.0
-        self.self_coefficient = float(self(unit)[0, 0])
+        return self(unit)
+
+    def column_limit(self, shape: tuple[int, int]) -> int:
+        """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
+        return max(4, int(np.log2(shape[0] * shape[1])))
+
+    def add_columns(self, field: np.ndarray, values: np.ndarray, cells: np.ndarray) -> None:
+        """Add the displacement of pressures ``values`` on the flat ``cells`` to ``field`` in place."""
+        for value, (i, j) in zip(values, zip(*np.unravel_index(cells, field.shape))):
+            field += value * np.roll(self._kernel, (i, j), axis=(0, 1))
 
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
         """Zero-mean displacement of the periodic half-space (full ``n × n`` grid)."""

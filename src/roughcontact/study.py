@@ -1,0 +1,600 @@
+"""The parameter study: configuration, run naming and one indentation job.
+
+This module is what the Snakemake rules and the ``roughcontact`` command line
+call.  It imports only numpy (plus the core) at import time; the NetCDF writer
+(``netCDF4``) and the schema validator (``jsonschema``, ``yaml``) are imported
+where they are used, so the ``indent`` job starts quickly.
+
+Configuration
+-------------
+:func:`resolve_config` normalises a raw config (as Snakemake or ``yaml``
+loaded it), validates it against ``workflow/schemas/config.schema.yaml`` plus
+the checks a JSON schema cannot express, fills defaults and returns the
+resolved config.  Every problem is reported as one line (:class:`ConfigError`)
+naming the key and what is allowed.
+
+Runs
+----
+One run is one (H, R, h_rms, seed).  ``radius = inf`` is a nominally flat
+self-affine surface on the periodic half-space; a finite radius is a rough
+sphere on the free (non-periodic) half-space.  :func:`job_settings` gives
+everything one run needs, :func:`run_indent` computes it and writes one NetCDF
+file atomically.
+"""
+from __future__ import annotations
+
+import copy
+import math
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from . import provenance
+
+__all__ = [
+    "ConfigError",
+    "IndentError",
+    "find_schema",
+    "load_config",
+    "resolve_config",
+    "format_value",
+    "parse_value",
+    "runs",
+    "run_path",
+    "run_paths",
+    "combinations",
+    "job_settings",
+    "force_grid",
+    "run_indent",
+    "RUN_VARIABLES",
+]
+
+#: variables of every run file (dimension ``force``)
+RUN_VARIABLES = ("depth", "stiffness", "contact_area", "contact_cells", "iterations", "converged")
+
+RUN_DIR = "results/runs"
+
+
+class ConfigError(ValueError):
+    """An invalid configuration; ``str(err)`` is one line naming the key."""
+
+
+class IndentError(RuntimeError):
+    """A run that cannot produce trustworthy numbers (no convergence, or the
+    contact reached the edge of the free-space grid)."""
+
+
+# --------------------------------------------------------------------------
+# configuration
+# --------------------------------------------------------------------------
+SCHEMA_RELPATH = Path("workflow/schemas/config.schema.yaml")
+
+
+def find_schema(start: str | os.PathLike | None = None) -> Path:
+    """Locate ``workflow/schemas/config.schema.yaml``: above *start* (a file or
+    directory), the current directory, or the checkout holding this module."""
+    candidates = []
+    for base in (start, Path.cwd(), Path(__file__).resolve()):
+        if base is None:
+            continue
+        base = Path(base).resolve()
+        candidates += [base, *base.parents]
+    for base in candidates:
+        path = base / SCHEMA_RELPATH
+        if path.is_file():
+            return path
+    raise FileNotFoundError(f"cannot find {SCHEMA_RELPATH} (run from the roughcontact checkout)")
+
+
+def load_config(path: str | os.PathLike) -> dict:
+    """Read a YAML config file (no validation)."""
+    import yaml
+
+    with open(path) as fh:
+        data = yaml.safe_load(fh)
+    return data if data is not None else {}
+
+
+def _load_schema(schema) -> dict:
+    import yaml
+
+    if isinstance(schema, dict):
+        return schema
+    with open(schema if schema is not None else find_schema()) as fh:
+        return yaml.safe_load(fh)
+
+
+def _coerce(obj):
+    """Undo what command lines and YAML 1.1 do to numbers: ``--config`` passes
+    lists as strings, and PyYAML reads ``1e-5`` (no dot) and ``inf`` as strings."""
+    if isinstance(obj, dict):
+        return {k: _coerce(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_coerce(v) for v in obj]
+    if isinstance(obj, str):
+        text = obj.strip()
+        if text.startswith("[") and text.endswith("]"):
+            import yaml
+
+            try:
+                return _coerce(yaml.safe_load(text))
+            except Exception:
+                return obj
+        low = text.lower()
+        if low in ("inf", ".inf", "+inf", "infinity"):
+            return math.inf
+        if low in ("nan", ".nan"):
+            return obj  # keep as text: rejected by the schema with a clear line
+        try:
+            return int(text)
+        except ValueError:
+            pass
+        try:
+            return float(text)
+        except ValueError:
+            return obj
+    return obj
+
+
+def _key(path) -> str:
+    out = ""
+    for part in path:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out or "<top level>"
+
+
+def _short(value) -> str:
+    text = provenance.canonical_json(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _node(schema: dict, root: dict, path) -> dict:
+    """The schema node describing the instance at *path*."""
+    node = schema
+    for part in path:
+        node = _deref(node, root)
+        if isinstance(part, int):
+            if "items" in node:
+                node = node["items"]
+            else:
+                for branch in node.get("oneOf", []) + node.get("anyOf", []):
+                    if "items" in branch:
+                        node = branch["items"]
+                        break
+        else:
+            node = node.get("properties", {}).get(part, {})
+    return _deref(node, root)
+
+
+def _deref(node: dict, root: dict) -> dict:
+    ref = node.get("$ref")
+    if ref and ref.startswith("#/"):
+        target = root
+        for part in ref[2:].split("/"):
+            target = target[part]
+        return {**target, **{k: v for k, v in node.items() if k != "$ref"}}
+    return node
+
+
+def _describe(node: dict, root: dict, with_doc: bool = True) -> str:
+    node = _deref(node, root)
+    if "oneOf" in node or "anyOf" in node:
+        text = " or ".join(_describe(b, root, False) for b in node.get("oneOf", node.get("anyOf")))
+    elif "enum" in node:
+        text = "one of " + ", ".join(map(str, node["enum"]))
+    else:
+        kind = node.get("type")
+        if kind == "array":
+            text = "a non-empty list of " + ("distinct " if node.get("uniqueItems") else "")
+            text += _describe(node.get("items", {}), root, False).replace("an integer", "integers").replace("a number", "numbers")
+        elif kind == "object":
+            text = "a mapping with keys " + ", ".join(node.get("properties", {}))
+        else:
+            text = {"integer": "an integer", "number": "a number", "string": "a string"}.get(kind, "a value")
+            bounds = []
+            if "minimum" in node:
+                bounds.append(f">= {node['minimum']}")
+            if "exclusiveMinimum" in node:
+                bounds.append(f"> {node['exclusiveMinimum']}")
+            if "maximum" in node:
+                bounds.append(f"<= {node['maximum']}")
+            if "exclusiveMaximum" in node:
+                bounds.append(f"< {node['exclusiveMaximum']}")
+            if bounds:
+                text += " " + " and ".join(bounds)
+    if with_doc and node.get("description"):
+        text += f" ({node['description'].strip()})"
+    return text
+
+
+def _schema_error(err, root: dict) -> ConfigError:
+    path = list(err.absolute_path)
+    if err.validator == "additionalProperties":
+        allowed = list(err.schema.get("properties", {}))
+        extra = sorted(set(err.instance) - set(allowed))
+        where = _key(path)
+        names = ", ".join(f"'{_key(path + [e])}'" for e in extra)
+        return ConfigError(
+            f"unknown config key {names}; allowed keys {'at top level' if not path else 'in ' + where}: "
+            + ", ".join(allowed)
+        )
+    if err.validator == "required":
+        missing = err.message.split("'")[1] if "'" in err.message else "?"
+        node = _node(root, root, path + [missing])
+        return ConfigError(f"missing config key '{_key(path + [missing])}'; allowed: {_describe(node, root)}")
+    node = _node(root, root, path)
+    return ConfigError(f"config key '{_key(path)}' = {_short(err.instance)} is not allowed; allowed: {_describe(node, root)}")
+
+
+def _fill_defaults(instance, node, root):
+    node = _deref(node, root)
+    if isinstance(instance, dict):
+        for name, sub in node.get("properties", {}).items():
+            sub = _deref(sub, root)
+            if name not in instance and "default" in sub:
+                instance[name] = copy.deepcopy(sub["default"])
+            if name in instance:
+                _fill_defaults(instance[name], sub, root)
+
+
+def full_contact_slope(hurst: float, n: int, length: float) -> float:
+    """Estimated rms slope / h_rms of a self-affine surface with C(q) ~ q^(-2H-2)
+    between q0 = 2 pi / L and the Nyquist wave number q1 = pi n / L."""
+    q = np.geomspace(2 * np.pi / length, np.pi * n / length, 4001)
+    lnq = np.log(q)
+    def trap(y):
+        return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(lnq)))
+
+    num = trap(q ** (2 - 2 * hurst))  # int q^3 C(q) dq = int q^4 C dlnq
+    den = trap(q ** (-2 * hurst))     # int q C(q) dq = int q^2 C dlnq
+    return float(np.sqrt(num / den))
+
+
+def resolve_config(raw: dict, schema=None) -> dict:
+    """Validate and normalise a config; return the resolved copy.
+
+    Raises :class:`ConfigError` with one line naming the offending key and
+    what is allowed.  *schema* is a path or a loaded dict (default: the
+    schema of the checkout).
+    """
+    import jsonschema
+
+    root = _load_schema(schema)
+    cfg = _coerce(copy.deepcopy(dict(raw)))
+    validator = jsonschema.Draft202012Validator(root)
+    errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), _key(list(e.absolute_path))))
+    if errors:
+        # report the shallowest problem first: an unknown top-level key explains more than its children
+        raise _schema_error(errors[0], root)
+    _fill_defaults(cfg, root, root)
+
+    # normalise types
+    cfg["grid"]["n"] = int(cfg["grid"]["n"])
+    cfg["grid"]["length"] = float(cfg["grid"]["length"])
+    cfg["e_star"] = float(cfg["e_star"])
+    for axis in ("hurst", "radius", "h_rms"):
+        cfg[axis] = sorted(float(v) for v in cfg[axis])
+    seeds = cfg["seeds"]
+    cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)
+    for rng in cfg.get("forces", {}).values():
+        rng["from"], rng["to"], rng["count"] = float(rng["from"]), float(rng["to"]), int(rng["count"])
+
+    # checks a JSON schema cannot express
+    kinds = {"sphere" if math.isfinite(r) else "flat" for r in cfg["radius"]}
+    for kind in sorted(kinds):
+        if kind not in cfg.get("forces", {}):
+            what = "a finite radius (sphere)" if kind == "sphere" else "radius .inf (flat surface)"
+            raise ConfigError(
+                f"missing config key 'forces.{kind}': radius lists {what}; allowed: a mapping with keys from, to, count"
+            )
+    for kind, rng in cfg.get("forces", {}).items():
+        if not rng["from"] < rng["to"]:
+            raise ConfigError(
+                f"config key 'forces.{kind}': from = {rng['from']:g} must be smaller than to = {rng['to']:g}; "
+                "allowed: 0 < from < to (forces F/(E* L^2))"
+            )
+    n, length = cfg["grid"]["n"], cfg["grid"]["length"]
+    if "flat" in kinds and "flat" in cfg["forces"]:
+        slope = min(full_contact_slope(h, n, length) for h in cfg["hurst"]) * min(cfg["h_rms"])
+        limit = 0.5 * slope
+        if cfg["forces"]["flat"]["to"] >= limit:
+            raise ConfigError(
+                f"config key 'forces.flat.to' = {cfg['forces']['flat']['to']:g} would press the flat surfaces close to "
+                f"full contact (rms slope ~ {slope:.3g} for H = {max(cfg['hurst']):g}, h_rms = {min(cfg['h_rms']):g}, "
+                f"n = {n}); allowed: to < {limit:.3g}"
+            )
+    if "sphere" in kinds and "sphere" in cfg["forces"]:
+        rmax = max(r for r in cfg["radius"] if math.isfinite(r))
+        to = cfg["forces"]["sphere"]["to"]
+        a_over_l = (3 * to * rmax / (4 * length)) ** (1 / 3)  # Hertz: a^3 = 3 F R / (4 E*)
+        if a_over_l > 0.25:
+            limit = 4 * length * 0.25**3 / (3 * rmax)
+            raise ConfigError(
+                f"config key 'forces.sphere.to' = {to:g} gives a Hertz contact radius of {a_over_l:.2f} L for "
+                f"R = {rmax:g}, too close to the edge of the free-space grid; allowed: to <= {limit:.3g} for this radius"
+            )
+    return cfg
+
+
+# --------------------------------------------------------------------------
+# runs and file names
+# --------------------------------------------------------------------------
+def format_value(x) -> str:
+    """Wildcard text of a sweep value: shortest round-trip repr, ``inf``."""
+    x = float(x)
+    return "inf" if math.isinf(x) else repr(x)
+
+
+def parse_value(text: str) -> float:
+    return float(text)
+
+
+def combinations(cfg: dict):
+    """(hurst, radius, h_rms) triples in sweep order."""
+    return [(h, r, s) for h in cfg["hurst"] for r in cfg["radius"] for s in cfg["h_rms"]]
+
+
+def runs(cfg: dict):
+    """One dict per run: hurst, radius, h_rms, seed, kind."""
+    return [
+        {"hurst": h, "radius": r, "h_rms": s, "seed": seed, "kind": "sphere" if math.isfinite(r) else "flat"}
+        for (h, r, s) in combinations(cfg)
+        for seed in cfg["seeds"]
+    ]
+
+
+RUN_PATTERN = RUN_DIR + "/H{hurst}_R{radius}_h{h_rms}/seed{seed}.nc"
+LOG_PATTERN = "logs/indent/H{hurst}_R{radius}_h{h_rms}_seed{seed}.log"
+
+
+def run_path(hurst, radius, h_rms, seed, pattern: str = RUN_PATTERN) -> str:
+    return pattern.format(hurst=format_value(hurst), radius=format_value(radius),
+                          h_rms=format_value(h_rms), seed=int(seed))
+
+
+def run_paths(cfg: dict) -> list[str]:
+    return [run_path(r["hurst"], r["radius"], r["h_rms"], r["seed"]) for r in runs(cfg)]
+
+
+def force_grid(rng: dict) -> np.ndarray:
+    """Log-spaced F/(E* L^2) of a force range ``{from, to, count}``."""
+    return np.geomspace(rng["from"], rng["to"], int(rng["count"]))
+
+
+def job_settings(cfg: dict, hurst, radius, h_rms, seed) -> dict:
+    """Everything one run depends on (and nothing else, so that adding a seed
+    or an H value does not invalidate finished runs)."""
+    hurst, radius, h_rms, seed = float(hurst), float(radius), float(h_rms), int(seed)
+    kind = "sphere" if math.isfinite(radius) else "flat"
+    rng = cfg["forces"][kind]
+    return {
+        "hurst": hurst,
+        "radius": radius,
+        "h_rms": h_rms,
+        "seed": seed,
+        "kind": kind,
+        "periodic": kind == "flat",
+        "n": cfg["grid"]["n"],
+        "length": cfg["grid"]["length"],
+        "e_star": cfg["e_star"],
+        "forces": {"from": rng["from"], "to": rng["to"], "count": rng["count"]},
+        "tol": cfg["solver"]["tol"],
+        "stiffness": cfg["solver"]["stiffness"],
+        "rel_step": cfg["solver"].get("rel_step", 1e-3),
+        "maxiter": cfg["solver"].get("maxiter"),
+    }
+
+
+def settings_from_wildcards(cfg: dict, wildcards) -> dict:
+    return job_settings(cfg, parse_value(wildcards.hurst), parse_value(wildcards.radius),
+                        parse_value(wildcards.h_rms), int(wildcards.seed))
+
+
+def describe_run(s: dict) -> str:
+    r = "inf (flat, periodic)" if not math.isfinite(s["radius"]) else f"{s['radius']:g}"
+    return f"H = {s['hurst']:g}, R = {r}, h_rms = {s['h_rms']:g}, seed = {s['seed']}, n = {s['n']}"
+
+
+# --------------------------------------------------------------------------
+# one indentation
+# --------------------------------------------------------------------------
+class _Reporter:
+    """Writes progress lines to a log file and, optionally, a bar to stderr."""
+
+    def __init__(self, log=None, bar: bool = False, total: int = 0):
+        self.fh = open(log, "a") if log else None
+        self.bar = bar
+        self.total = total
+        self.t0 = time.perf_counter()
+
+    def line(self, text: str):
+        stamp = f"[{time.perf_counter() - self.t0:8.2f} s] {text}"
+        if self.fh:
+            self.fh.write(stamp + "\n")
+            self.fh.flush()
+        if self.bar:
+            sys.stderr.write("\r\033[K" if sys.stderr.isatty() else "")
+            sys.stderr.write(stamp + "\n")
+
+    def step(self, i: int, text: str):
+        if self.fh:
+            self.fh.write(f"[{time.perf_counter() - self.t0:8.2f} s] {text}\n")
+            self.fh.flush()
+        if self.bar:
+            width = 30
+            done = int(width * i / max(self.total, 1))
+            msg = f"[{'#' * done}{'.' * (width - done)}] {text}"
+            if sys.stderr.isatty():
+                sys.stderr.write("\r\033[K" + msg[:150])
+                if i == self.total:
+                    sys.stderr.write("\n")
+            else:
+                sys.stderr.write(msg + "\n")
+            sys.stderr.flush()
+
+    def close(self):
+        if self.fh:
+            self.fh.close()
+
+
+def make_surface(s: dict) -> np.ndarray:
+    from . import surfaces
+
+    if s["kind"] == "flat":
+        return surfaces.self_affine(s["n"], hurst=s["hurst"], h_rms=s["h_rms"], length=s["length"], seed=s["seed"])
+    return surfaces.rough_sphere(s["n"], radius=s["radius"], hurst=s["hurst"], h_rms=s["h_rms"],
+                                 length=s["length"], seed=s["seed"])
+
+
+def compute_run(s: dict, reporter: _Reporter | None = None) -> dict:
+    """Solve the warm-started load path of one run; return arrays over force.
+
+    Raises :class:`IndentError` (naming the run and what to change) when a
+    solve does not converge or the contact reaches the free-space grid edge.
+    """
+    from . import contact
+
+    rep = reporter or _Reporter()
+    L, E, n = s["length"], s["e_star"], s["n"]
+    forces = force_grid(s["forces"]) * E * L**2
+    z = make_surface(s)
+    cell = (L / n) ** 2
+    out = {name: np.zeros(len(forces)) for name in ("depth", "stiffness", "contact_area")}
+    out.update({name: np.zeros(len(forces), dtype=np.int64) for name in ("contact_cells", "iterations", "converged")})
+    out["force"] = forces
+    rep.line(f"indent {describe_run(s)}: {len(forces)} loads F/(E*L^2) = {s['forces']['from']:g} ... "
+             f"{s['forces']['to']:g}, tol = {s['tol']:g}, stiffness = {s['stiffness']}")
+    domain_error = getattr(contact, "DomainTooSmallError", ())
+    done = [0]
+    clock = [time.perf_counter()]
+
+    def progress(i, total, state):
+        done[0] = i
+        now = time.perf_counter()
+        rep.step(i, f"load step {i}/{total}: F/(E*L^2) = {state.force / (E * L**2):.3e}, "
+                    f"iterations = {state.iterations}, contact cells = {int(np.count_nonzero(state.contact))}, "
+                    f"{now - clock[0]:.2f} s")
+        clock[0] = now
+
+    extra = {"maxiter": int(s["maxiter"])} if s.get("maxiter") else {}
+    try:
+        states = contact.load_path(z, forces, length=L, e_star=E, periodic=s["periodic"], tol=s["tol"],
+                                   progress=progress, **extra)
+    except domain_error as exc:
+        fnorm = forces[done[0]] / (E * L**2)
+        raise IndentError(
+            f"indent {describe_run(s)}: the contact reached the edge of the free-space grid at load step "
+            f"{done[0] + 1}/{len(forces)} (F/(E*L^2) = {fnorm:.3g}); lower forces.sphere.to below {fnorm:.3g} "
+            f"or use more cells (grid.n) on a larger grid.length"
+        ) from exc
+    for i, state in enumerate(states):
+        fnorm = forces[i] / (E * L**2)
+        t0 = time.perf_counter()
+        if not state.converged:
+            raise IndentError(
+                f"indent {describe_run(s)}: the contact solver did not converge at load step {i + 1}/{len(forces)} "
+                f"(F/(E*L^2) = {fnorm:.3g}, {state.iterations} iterations, tol = {s['tol']:g}); raise solver.maxiter, "
+                f"loosen solver.tol, use more cells (grid.n) or a smaller load (forces.{s['kind']}.to)"
+            )
+        try:
+            if s["stiffness"] == "difference":
+                k = contact.stiffness(state, method="difference", rel_step=s["rel_step"])
+            else:
+                k = contact.stiffness(state)
+        except (RuntimeError, ValueError) as exc:
+            raise IndentError(
+                f"indent {describe_run(s)}: the stiffness ({s['stiffness']}) failed at load step {i + 1}/{len(forces)} "
+                f"(F/(E*L^2) = {fnorm:.3g}): {exc}; try solver.stiffness = "
+                f"{'punch' if s['stiffness'] == 'difference' else 'difference'} or more cells (grid.n)"
+            ) from exc
+        cells = int(np.count_nonzero(state.contact))
+        out["depth"][i] = state.depth
+        out["stiffness"][i] = k
+        out["contact_cells"][i] = cells
+        out["contact_area"][i] = cells * cell
+        out["iterations"][i] = state.iterations
+        out["converged"][i] = int(bool(state.converged))
+        rep.line(f"stiffness {i + 1}/{len(forces)}: F/(E*L^2) = {fnorm:.3e}, k/(E*L) = {k / (E * L):.4e}, "
+                 f"{time.perf_counter() - t0:.2f} s")
+        if not (np.isfinite(k) and k > 0):
+            raise IndentError(
+                f"indent {describe_run(s)}: non-positive stiffness k = {k!r} at load step {i + 1}/{len(forces)} "
+                f"(F/(E*L^2) = {fnorm:.3g}, {cells} contact cells); raise forces.{s['kind']}.from or grid.n"
+            )
+    return out
+
+
+def write_run(path, s: dict, out: dict) -> None:
+    """Write one run atomically (temp file, then rename) with provenance."""
+    import netCDF4
+
+    with provenance.atomic_path(path) as tmp:
+        with netCDF4.Dataset(tmp, "w", format="NETCDF4") as nc:
+            attrs = provenance.provenance_attrs(
+                config=s,
+                title="roughcontact indentation run",
+                kind=s["kind"],
+                seed=s["seed"],
+                grid_n=s["n"],
+                grid_length=s["length"],
+                e_star=s["e_star"],
+                periodic=s["periodic"],
+                solver_tol=s["tol"],
+                stiffness_method=s["stiffness"],
+                stiffness_rel_step=s["rel_step"],
+                force_normalized_from=s["forces"]["from"],
+                force_normalized_to=s["forces"]["to"],
+                force_count=s["forces"]["count"],
+            )
+            nc.setncatts(attrs)
+            nc.createDimension("force", len(out["force"]))
+            var = nc.createVariable("force", "f8", ("force",))
+            var[:] = out["force"]
+            var.setncatts({"long_name": "normal force F", "units": "e_star * length**2 (F/(E* L^2) = force / that)"})
+            for name, value, long in (
+                ("hurst", s["hurst"], "Hurst exponent H"),
+                ("radius", s["radius"], "sphere radius R (inf: nominally flat, periodic)"),
+                ("h_rms", s["h_rms"], "rms roughness height"),
+            ):
+                v = nc.createVariable(name, "f8", ())
+                v.assignValue(value)
+                v.setncatts({"long_name": long, "units": "length" if name != "hurst" else "1"})
+            v = nc.createVariable("seed", "i8", ())
+            v.assignValue(s["seed"])
+            v.long_name = "random seed of the surface"
+            meta = {
+                "depth": ("f8", "indentation depth from first touch", "length"),
+                "stiffness": ("f8", f"normal contact stiffness dF/dd ({s['stiffness']})", "e_star * length"),
+                "contact_area": ("f8", "contact area (contact cells * (L/n)^2)", "length**2"),
+                "contact_cells": ("i8", "number of grid cells in contact", "1"),
+                "iterations": ("i8", "solver iterations (warm-started from the previous load)", "1"),
+                "converged": ("i1", "solver converged (1) or not (0)", "1"),
+            }
+            for name in RUN_VARIABLES:
+                dtype, long, units = meta[name]
+                v = nc.createVariable(name, dtype, ("force",))
+                v[:] = out[name]
+                v.setncatts({"long_name": long, "units": units, "coordinates": "hurst radius h_rms seed"})
+
+
+def run_indent(settings: dict, output, log=None, progress: bool = False) -> dict:
+    """Compute one run and write it to *output* (NetCDF, atomic).
+
+    *log*: a file that receives one progress line per load step.
+    *progress*: also draw a progress bar on stderr (the command line).
+    Errors are written to the log before they propagate.
+    """
+    rep = _Reporter(log, bar=progress, total=int(settings["forces"]["count"]))
+    try:
+        out = compute_run(settings, rep)
+        write_run(output, settings, out)
+        rep.line(f"wrote {output}")
+        return out
+    except Exception as exc:
+        rep.line(f"FAILED: {exc}")
+        raise
+    finally:
+        rep.close()
