@@ -1,0 +1,51 @@
+# Merge the runs, fit zeta(H) (eq. 11), check the crossover (eqs. 16, 17).
+rule merge:
+    input:
+        runs=study.run_paths(config),
+    output:
+        stiffness="results/stiffness.nc",
+        ensemble="results/ensemble.nc",
+    log:
+        "logs/merge.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    script:
+        "../scripts/merge.py"
+
+
+rule fit_zeta:
+    input:
+        stiffness="results/stiffness.nc",
+    output:
+        csv=report(
+            "results/zeta.csv",
+            caption="../report/zeta_table.rst",
+            category="Tables",
+            labels={"table": "zeta(H)"},
+        ),
+        nc="results/zeta.nc",
+    log:
+        "logs/fit_zeta.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    script:
+        "../scripts/fit_zeta.py"
+
+
+rule crossover:
+    input:
+        ensemble="results/ensemble.nc",
+        zeta="results/zeta.csv",
+    output:
+        csv=report(
+            "results/crossover.csv",
+            caption="../report/crossover_table.rst",
+            category="Tables",
+            labels={"table": "crossover"},
+        ),
+    log:
+        "logs/crossover.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    script:
+        "../scripts/crossover.py"

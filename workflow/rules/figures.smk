@@ -1,0 +1,24 @@
+# The paper's Figs. 1-4, zeta(H) and a collapse plot, all in the report.
+from roughcontact import figures as _figures  # noqa: E402  (matplotlib only inside make_figures)
+
+FIGURE_SPECS = _figures.figure_specs(config)
+FIGURES = [spec["path"] for spec in FIGURE_SPECS]
+
+
+rule figures:
+    input:
+        stiffness="results/stiffness.nc",
+        ensemble="results/ensemble.nc",
+        zeta="results/zeta.csv",
+        crossover="results/crossover.csv",
+    output:
+        *[
+            report(s["path"], caption=s["caption"], category=s["category"], labels=s["labels"])
+            for s in FIGURE_SPECS
+        ],
+    log:
+        "logs/figures.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    script:
+        "../scripts/figures.py"

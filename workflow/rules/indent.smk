@@ -1,0 +1,18 @@
+# One job per (H, R, h_rms, seed): surface, warm-started load path, stiffness.
+rule indent:
+    output:
+        study.RUN_PATTERN,
+    log:
+        study.LOG_PATTERN,
+    params:
+        settings=lambda wc: study.settings_from_wildcards(config, wc),
+    wildcard_constraints:
+        hurst=r"[0-9.e+-]+",
+        radius=r"[0-9.e+-]+|inf",
+        h_rms=r"[0-9.e+-]+",
+        seed=r"\d+",
+    threads: 1
+    conda:
+        "../../envs/roughcontact.yaml"
+    script:
+        "../scripts/indent.py"

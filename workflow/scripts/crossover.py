@@ -1,0 +1,6 @@
+"""Snakemake `crossover` job: ensemble + zeta -> results/crossover.csv (eqs. 16, 17)."""
+from roughcontact.analysis import run_crossover
+
+snakemake = globals()["snakemake"]
+run_crossover(snakemake.config, snakemake.input.ensemble, snakemake.input.zeta, snakemake.output.csv,
+              log=snakemake.log[0])
