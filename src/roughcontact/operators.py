@@ -19,6 +19,7 @@ rigid indenter.
 
 from __future__ import annotations
 
+import collections
 import functools
 
 import numpy as np
@@ -69,6 +70,9 @@ class FreeSpaceOperator:
     """
 
     periodic = False
+    #: Kernel spectra kept (least recently used dropped first): a load path
+    #: only grows its window, so old sizes are rarely needed again.
+    cached_spectra = 6
 
     def __init__(self, n: int, length: float, e_star: float):
         self.n = n
@@ -76,7 +80,8 @@ class FreeSpaceOperator:
         self.e_star = e_star
         self.coefficients = love_coefficients(n) * (self.spacing / (np.pi * e_star))
         self.self_coefficient = self.coefficients[0, 0]
-        self._spectra: dict[tuple[int, int], np.ndarray] = {}
+        self._spectra: collections.OrderedDict[tuple[int, int], np.ndarray] = \
+            collections.OrderedDict()
 
     def window_size(self, cells: int) -> int:
         """Largest window ≥ ``cells`` (≤ n) convolved with the same padded FFT size."""
@@ -96,6 +101,10 @@ class FreeSpaceOperator:
             kernel = kernel * (used[0][:, None] & used[1][None, :])
             spectrum = scipy.fft.rfft2(kernel)
             self._spectra[padded] = spectrum
+            if len(self._spectra) > self.cached_spectra:
+                self._spectra.popitem(last=False)
+        else:
+            self._spectra.move_to_end(padded)
         return padded, spectrum
 
     @functools.cached_property
