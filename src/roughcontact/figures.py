@@ -149,7 +149,7 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
                     ax.axvline(fm, color="C3", ls=":", lw=1.2, label=f"F_tr measured = {fm:.2g}")
             ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
                    title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n}")
-            ax.legend(fontsize=7, loc="upper left")
+            ax.legend(fontsize=7, loc="lower right")
             fig.tight_layout()
             save(fig, path)
         elif key == "fig4":

@@ -226,6 +226,10 @@ def _schema_error(err, root: dict) -> ConfigError:
         node = _node(root, root, path + [missing])
         return ConfigError(f"missing config key '{_key(path + [missing])}'; allowed: {_describe(node, root)}")
     node = _node(root, root, path)
+    if path and isinstance(path[-1], int) and not node.get("description"):
+        parent = _node(root, root, path[:-1])
+        if parent.get("description"):
+            node = {**node, "description": parent["description"]}
     return ConfigError(f"config key '{_key(path)}' = {_short(err.instance)} is not allowed; allowed: {_describe(node, root)}")
 
 
@@ -410,12 +414,12 @@ class _Reporter:
         self.total = total
         self.t0 = time.perf_counter()
 
-    def line(self, text: str):
+    def line(self, text: str, show: bool = True):
         stamp = f"[{time.perf_counter() - self.t0:8.2f} s] {text}"
         if self.fh:
             self.fh.write(stamp + "\n")
             self.fh.flush()
-        if self.bar:
+        if self.bar and show:
             sys.stderr.write("\r\033[K" if sys.stderr.isatty() else "")
             sys.stderr.write(stamp + "\n")
 
@@ -518,7 +522,7 @@ def compute_run(s: dict, reporter: _Reporter | None = None) -> dict:
         out["iterations"][i] = state.iterations
         out["converged"][i] = int(bool(state.converged))
         rep.line(f"stiffness {i + 1}/{len(forces)}: F/(E*L^2) = {fnorm:.3e}, k/(E*L) = {k / (E * L):.4e}, "
-                 f"{time.perf_counter() - t0:.2f} s")
+                 f"{time.perf_counter() - t0:.2f} s", show=False)
         if not (np.isfinite(k) and k > 0):
             raise IndentError(
                 f"indent {describe_run(s)}: non-positive stiffness k = {k!r} at load step {i + 1}/{len(forces)} "
