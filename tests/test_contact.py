@@ -295,3 +295,15 @@ def test_non_square_heights_rejected():
 def test_unknown_stiffness_method_rejected(rough):
     with pytest.raises(ValueError, match="method"):
         contact.stiffness(rough[1], method="secant")
+
+
+def test_edge_contact_allowed_for_a_finite_flat_punch():
+    """A nominally flat rough indenter as large as the grid may touch its edge cells."""
+    z = surfaces.self_affine(64, hurst=0.7, h_rms=9e-3, length=1.0, seed=0)
+    state = contact.solve(z, force=1e-2, length=1.0, e_star=E_STAR, edge_contact=True)
+    edge = np.concatenate([state.contact[0], state.contact[-1],
+                           state.contact[:, 0], state.contact[:, -1]])
+    assert state.converged, "edge-contact solve did not converge"
+    assert edge.any(), "the test load should reach the edge"
+    gap = state.gap()
+    assert np.abs(gap[state.contact]).max() <= state.tol * state.depth, "gap open in contact"

@@ -80,7 +80,7 @@ class ContactState:
     gap_error : float
         Final ``max(max_c |g|, max_(not c) (−g)) / d``: the relative violation
         of complementarity that the stopping test bounds by ``tol``.
-    heights, length, e_star, periodic, tol :
+    heights, length, e_star, periodic, tol, edge_contact :
         The problem that was solved (``heights`` is the caller's array, not a copy).
     window : tuple of slice
         Rows and columns of the grid on which the last solve ran.
@@ -99,6 +99,7 @@ class ContactState:
     periodic: bool
     tol: float
     window: tuple[slice, slice]
+    edge_contact: bool = False
 
     @property
     def cell_area(self) -> float:
@@ -217,7 +218,8 @@ def _box(mask: np.ndarray, operator) -> tuple[slice, slice]:
     return tuple(window)
 
 
-def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, depth_bound):
+def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, depth_bound,
+           edge_contact):
     n = heights.shape[0]
     operator = operator_for(n, float(length), float(e_star), bool(periodic))
     lift = heights - heights.min()
@@ -256,15 +258,16 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
         p = np.zeros((n, n))
         p[window] = p_window
         edge = np.concatenate([p[0], p[-1], p[:, 0], p[:, -1]])
-        if np.any(edge > 0):
+        if not edge_contact and np.any(edge > 0):
             raise DomainTooSmallError(
                 f"the contact reached the edge of the {n}x{n} non-periodic grid at "
-                f"force {force:g}: enlarge the grid (length and n) or lower the load")
+                f"force {force:g}: enlarge the grid (length and n) or lower the load "
+                f"(a finite indenter whose face is the whole grid: edge_contact=True)")
     return ContactState(
         force=float(p.sum() * (length / n) ** 2), depth=float(depth), pressure=p,
         contact=p > 0, iterations=int(iterations), converged=bool(converged),
         gap_error=float(error), heights=heights, length=float(length), e_star=float(e_star),
-        periodic=bool(periodic), tol=float(tol), window=window)
+        periodic=bool(periodic), tol=float(tol), window=window, edge_contact=bool(edge_contact))
 
 
 def _check_solver_args(length, e_star, tol, maxiter):
@@ -277,7 +280,7 @@ def _check_solver_args(length, e_star, tol, maxiter):
 
 def solve(heights, *, force: float, length: float, e_star: float, periodic: bool = False,
           tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, initial=None,
-          windowed: bool = True) -> ContactState:
+          windowed: bool = True, edge_contact: bool = False) -> ContactState:
     """Contact of a rigid indenter of shape ``heights`` pressed by a normal ``force``.
 
     Parameters
@@ -306,6 +309,11 @@ def solve(heights, *, force: float, length: float, e_star: float, periodic: bool
         Solve non-periodic contacts on a window around the contact (module
         docstring); ``False`` solves on the whole grid, for verification. Both
         give the same solution within ``tol``.
+    edge_contact : bool
+        Non-periodic only: allow pressure on the grid's edge cells, for a
+        finite indenter whose face is the whole grid (e.g. a nominally flat
+        rough punch of side ``length``). By default such a contact means the
+        grid is too small for the body and raises.
 
     Returns
     -------
@@ -314,7 +322,8 @@ def solve(heights, *, force: float, length: float, e_star: float, periodic: bool
     Raises
     ------
     DomainTooSmallError
-        If the pressure of a non-periodic contact reaches the edge of the grid.
+        If the pressure of a non-periodic contact reaches the edge of the grid
+        and ``edge_contact`` is false.
     """
     heights = _check_heights(heights)
     check_finite_positive("force", force)
@@ -325,11 +334,13 @@ def solve(heights, *, force: float, length: float, e_star: float, periodic: bool
             raise ValueError(f"initial must have the shape of heights {heights.shape}, "
                              f"got {initial.shape}")
     bound = None if windowed else math.inf
-    return _solve(heights, float(force), length, e_star, periodic, tol, maxiter, initial, bound)
+    return _solve(heights, float(force), length, e_star, periodic, tol, maxiter, initial, bound,
+                  edge_contact)
 
 
 def load_path(heights, forces, *, length: float, e_star: float, periodic: bool = False,
-              tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, progress=None) -> list[ContactState]:
+              tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, edge_contact: bool = False,
+              progress=None) -> list[ContactState]:
     """Solve at each of ``forces`` in order, each solve warm-started from the previous one.
 
     Same parameters and result per force as :func:`solve`. Non-periodic solves
@@ -350,7 +361,8 @@ def load_path(heights, forces, *, length: float, e_star: float, periodic: bool =
         previous = states[-1] if states else None
         initial = None if previous is None else previous.pressure
         bound = None if previous is None else previous.depth * max(1.0, force / previous.force)
-        state = _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, bound)
+        state = _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, bound,
+                       edge_contact)
         states.append(state)
         if progress is not None:
             progress(i + 1, len(forces), state)
@@ -394,7 +406,7 @@ def stiffness(state: ContactState, *, method: str = "punch", tol: float | None =
         upper, lower = (
             _solve(state.heights, state.force * (1 + sign * rel_step), state.length, state.e_star,
                    state.periodic, tol, DEFAULT_MAXITER, state.pressure,
-                   state.depth * (1 + rel_step))
+                   state.depth * (1 + rel_step), state.edge_contact)
             for sign in (1, -1))
         return (upper.force - lower.force) / (upper.depth - lower.depth)
     if method != "punch":
