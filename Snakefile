@@ -12,7 +12,8 @@ min_version("9.0")
 # Use the package of this checkout, also in the jobs (no install needed for the workflow itself).
 SRC = str(Path(workflow.basedir) / "src")
 sys.path.insert(0, SRC)
-os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (SRC, os.environ.get("PYTHONPATH")) if p)
+# (set, not required: the envvars directive does not apply)
+os.environ.update(PYTHONPATH=os.pathsep.join(p for p in (SRC, os.environ.get("PYTHONPATH")) if p))
 
 from roughcontact import study  # noqa: E402  (numpy only)
 

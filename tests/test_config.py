@@ -1,0 +1,147 @@
+"""Config validation: every bad config stops with one line naming the key,
+before any job runs (study.resolve_config directly, and through snakemake)."""
+from __future__ import annotations
+
+import copy
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from roughcontact import study
+
+ROOT = Path(__file__).resolve().parents[1]
+SCHEMA = ROOT / "workflow/schemas/config.schema.yaml"
+TINY = yaml.safe_load((ROOT / "presets/tiny.yaml").read_text())
+
+
+def _with(path: str, value):
+    """TINY with config key *path* ('a.b' or 'a.b=DELETE') set to *value*."""
+    cfg = copy.deepcopy(TINY)
+    keys = path.split(".")
+    node = cfg
+    for key in keys[:-1]:
+        node = node[key]
+    if value is DELETE:
+        del node[keys[-1]]
+    else:
+        node[keys[-1]] = value
+    return cfg
+
+
+DELETE = object()
+
+# (id, config, text the one-line message must contain)
+BAD = [
+    ("unknown key", {**TINY, "hurts": [0.5]}, "'hurts'"),
+    ("unknown nested key", _with("grid.size", 3), "'grid.size'"),
+    ("negative radius", _with("radius", [0.5, -1.0]), "radius[1]"),
+    ("zero radius", _with("radius", [0.0]), "radius[0]"),
+    ("H = 0", _with("hurst", [0.0, 0.5]), "hurst[0]"),
+    ("H = 2", _with("hurst", [0.5, 2.0]), "hurst[1]"),
+    ("empty seed list", _with("seeds", []), "seeds"),
+    ("zero seed count", _with("seeds", 0), "seeds"),
+    ("duplicate seeds", _with("seeds", [1, 1]), "seeds"),
+    ("sphere from > to", _with("forces.sphere", {"from": 1e-2, "to": 1e-5, "count": 5}), "forces.sphere"),
+    ("flat from > to", _with("forces.flat", {"from": 1e-3, "to": 1e-5, "count": 5}), "forces.flat"),
+    ("non-positive force", _with("forces.sphere", {"from": 0, "to": 1e-5, "count": 5}), "forces.sphere.from"),
+    ("h_rms <= 0", _with("h_rms", [-1e-3]), "h_rms[0]"),
+    ("empty H list", _with("hurst", []), "hurst"),
+    ("n too small", _with("grid.n", 8), "grid.n"),
+    ("n not an integer", _with("grid.n", "many"), "grid.n"),
+    ("bad stiffness method", _with("solver.stiffness", "secant"), "solver.stiffness"),
+    ("missing grid", _with("grid", DELETE), "grid"),
+    ("missing sphere forces", _with("forces.sphere", DELETE), "forces.sphere"),
+    ("flat range near full contact", _with("forces.flat", {"from": 1e-5, "to": 0.5, "count": 5}), "forces.flat.to"),
+    ("sphere contact beyond the grid", _with("forces.sphere", {"from": 1e-5, "to": 0.2, "count": 5}),
+     "forces.sphere.to"),
+]
+
+
+@pytest.mark.parametrize("cfg, needle", [b[1:] for b in BAD], ids=[b[0] for b in BAD])
+def test_bad_config_one_line_naming_the_key(cfg, needle):
+    with pytest.raises(study.ConfigError) as info:
+        study.resolve_config(cfg, schema=SCHEMA)
+    msg = str(info.value)
+    assert "\n" not in msg
+    assert needle in msg
+    assert "allowed" in msg
+
+
+def test_good_configs_resolve():
+    for path in [ROOT / "config.yaml", *sorted((ROOT / "presets").glob("*.yaml"))]:
+        cfg = study.resolve_config(study.load_config(path), schema=SCHEMA)
+        assert cfg["seeds"] == sorted(set(cfg["seeds"]))
+        assert all(isinstance(s, int) for s in cfg["seeds"])
+
+
+def test_default_config_sweeps_every_axis():
+    cfg = study.resolve_config(study.load_config(ROOT / "config.yaml"), schema=SCHEMA)
+    for axis in ("hurst", "radius", "h_rms", "seeds"):
+        assert len(cfg[axis]) >= 2, axis
+    assert any(math.isinf(r) for r in cfg["radius"]) and any(math.isfinite(r) for r in cfg["radius"])
+
+
+def test_command_line_strings_are_coerced():
+    # `--config hurst=[0.5,0.8]` arrives as a string; PyYAML reads 1e-5 as a string
+    cfg = _with("hurst", "[0.5, 0.8]")
+    cfg["forces"]["sphere"]["from"] = "1e-5"
+    cfg["radius"] = ["0.5", "inf"]
+    out = study.resolve_config(cfg, schema=SCHEMA)
+    assert out["hurst"] == [0.5, 0.8] and out["forces"]["sphere"]["from"] == 1e-5
+    assert math.isinf(out["radius"][1])
+
+
+def _snakemake(args, cwd, timeout=120):
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    return subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), *args],
+                          cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env)
+
+
+SPEC_BAD = [b for b in BAD if b[0] in ("unknown key", "negative radius", "H = 0", "empty seed list",
+                                       "sphere from > to")]
+
+
+@pytest.mark.parametrize("cfg, needle", [b[1:] for b in SPEC_BAD], ids=[b[0] for b in SPEC_BAD])
+def test_snakemake_stops_before_any_job(tmp_path, cfg, needle):
+    (tmp_path / "bad.yaml").write_text(yaml.safe_dump(cfg))
+    proc = _snakemake(["--configfile", "bad.yaml", "--cores", "1"], tmp_path)
+    assert proc.returncode != 0
+    lines = [l for l in proc.stderr.splitlines() if "Invalid configuration" in l]
+    assert len(lines) == 1 and needle in lines[0], proc.stderr
+    assert not (tmp_path / "results").exists()
+    assert not (tmp_path / "logs").exists()
+
+
+def test_lint_is_clean(tmp_path):
+    proc = _snakemake(["--lint"], ROOT)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "Lints for" not in proc.stdout + proc.stderr
+
+
+def test_paper_preset_plans_50_indent_jobs_per_combination():
+    proc = _snakemake(["-n", "--configfile", "presets/paper.yaml"], ROOT)
+    assert proc.returncode == 0, proc.stderr
+    out = proc.stdout + proc.stderr
+    cfg = study.resolve_config(study.load_config(ROOT / "presets/paper.yaml"), schema=SCHEMA)
+    assert cfg["grid"]["n"] == 513 and cfg["hurst"] == [0.7] and 0.5 in cfg["radius"]
+    assert cfg["h_rms"] == [9e-3] and len(cfg["seeds"]) == 50
+    assert cfg["forces"]["sphere"]["from"] <= 1e-7 and cfg["forces"]["sphere"]["to"] >= 1e-2
+    for hurst, radius, h in study.combinations(cfg):
+        prefix = f"results/runs/H{study.format_value(hurst)}_R{study.format_value(radius)}_h{study.format_value(h)}/"
+        planned = {line.split(prefix)[1].split()[0] for line in out.splitlines()
+                   if "output:" in line and prefix in line}
+        assert len(planned) == 50, (prefix, len(planned))
+
+
+def test_cli_check_config(tmp_path):
+    from roughcontact import cli
+
+    assert cli.main(["check-config", str(ROOT / "config.yaml")]) == 0
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(yaml.safe_dump(_with("hurst", [0.0])))
+    assert cli.main(["check-config", str(bad), "--schema", str(SCHEMA)]) == 2

@@ -1,0 +1,193 @@
+"""End to end: presets/tiny.yaml through the real `snakemake` command in a
+temporary directory (about a minute on 2 cores), then checks of the merged
+data, the tables, the report, provenance, the CLI and failure handling."""
+from __future__ import annotations
+
+import math
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+
+from roughcontact import analysis, cli, study, theory
+
+ROOT = Path(__file__).resolve().parents[1]
+TINY = ROOT / "presets/tiny.yaml"
+
+
+def _snakemake(args, cwd, timeout=600):
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    return subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), *args],
+                          cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env)
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    work = tmp_path_factory.mktemp("tiny")
+    proc = _snakemake(["--configfile", str(TINY), "--cores", "2"], work)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    rep = _snakemake(["--configfile", str(TINY), "--report", "results/report.html"], work)
+    assert rep.returncode == 0, rep.stderr[-3000:]
+    cfg = study.resolve_config(study.load_config(TINY))
+    return work, cfg
+
+
+def test_merged_dataset_dims_coords_attrs(run):
+    work, cfg = run
+    with xr.open_dataset(work / "results/stiffness.nc") as ds:
+        assert tuple(ds["stiffness"].dims) == ("hurst", "radius", "h_rms", "seed", "force")
+        assert ds["hurst"].values.tolist() == cfg["hurst"]
+        assert ds["radius"].values.tolist() == cfg["radius"]
+        assert ds["h_rms"].values.tolist() == cfg["h_rms"]
+        assert ds["seed"].values.tolist() == cfg["seeds"]
+        for name in study.RUN_VARIABLES:
+            assert name in ds
+        for key in ("roughcontact_version", "git_commit", "config", "config_hash", "created_utc", "grid_n",
+                    "solver_tol", "stiffness_method"):
+            assert key in ds.attrs, key
+        assert ds.attrs["grid_n"] == cfg["grid"]["n"]
+        # every run converged; each surface kind has exactly its own force grid
+        assert np.nanmin(ds["converged"].values) == 1
+        for radius in cfg["radius"]:
+            kind = "sphere" if math.isfinite(radius) else "flat"
+            k = ds["stiffness"].sel(radius=radius)
+            assert int(np.isfinite(k).sum("force").min()) == cfg["forces"][kind]["count"]
+
+
+def test_stiffness_positive_and_increasing(run):
+    work, _ = run
+    with xr.open_dataset(work / "results/stiffness.nc") as ds:
+        k = ds["stiffness"].transpose(..., "force").values.reshape(-1, ds.sizes["force"])
+    for row in k:
+        row = row[np.isfinite(row)]
+        assert (row > 0).all()
+        # k = dF/dd grows with the contact set; equal when the set did not change
+        assert (np.diff(row) >= -1e-6 * row[1:]).all()
+        assert row[-1] > row[0]
+
+
+def test_hertz_limit_at_the_largest_load(run):
+    """At F/(E*L^2) = 1e-2 the tiny config is 13-400x above the crossover force
+    (eq. 17), so eq. 16 is within 6 % of Hertz there; the 65^2 grid resolves the
+    Hertz contact (radius 0.155 L = 10 cells) to a few per cent, and the seeds
+    scatter by a few per cent: 15 % bounds all three."""
+    work, cfg = run
+    with xr.open_dataset(work / "results/ensemble.nc") as ens:
+        for radius in [r for r in cfg["radius"] if math.isfinite(r)]:
+            sub = ens.sel(radius=radius)
+            F = float(sub["force"].dropna("force").max())
+            k = sub["k_mean"].sel(force=F).values
+            k_hertz = theory.hertz_stiffness(F, radius, cfg["e_star"])
+            assert np.all(np.abs(k / k_hertz - 1) < 0.15), k / k_hertz
+
+
+def test_ensemble_and_tables(run):
+    work, cfg = run
+    with xr.open_dataset(work / "results/ensemble.nc") as ens:
+        for name in ("k_mean", "k_std", "k_sem", "n_seeds"):
+            assert name in ens
+        assert int(ens["n_seeds"].max()) == len(cfg["seeds"])
+    zeta = pd.read_csv(work / "results/zeta.csv")
+    assert {"hurst", "zeta", "zeta_ci_low", "zeta_ci_high", "zeta_estimate", "exponent", "exponent_theory",
+            "n_points", "source", "window"} <= set(zeta.columns)
+    assert zeta["hurst"].tolist() == cfg["hurst"]
+    assert (zeta["source"] == "flat").all()
+    # coarse grid and two seeds: zeta within a factor 1.6 of 1.7/(H+1), CI brackets the estimate
+    assert np.all(np.abs(np.log(zeta["zeta"] / zeta["zeta_estimate"])) < np.log(1.6))
+    assert np.all(zeta["zeta_ci_low"] <= zeta["zeta"]) and np.all(zeta["zeta"] <= zeta["zeta_ci_high"])
+    cross = pd.read_csv(work / "results/crossover.csv")
+    assert {"hurst", "radius", "h_rms", "Ftr_pred_fit", "Ftr_pred_estimate", "F_slope", "Ftr_measured",
+            "ratio_fit", "slope_low", "slope_high", "max_abs_log10_k_over_eq16",
+            "rms_log10_k_over_eq16"} <= set(cross.columns)
+    assert len(cross) == len(cfg["hurst"]) * len(cfg["h_rms"])  # one finite radius
+    assert np.all(cross["rms_log10_k_over_eq16"] < 0.2)
+    with xr.open_dataset(work / "results/zeta.nc") as z:
+        assert "config_hash" in z.attrs
+
+
+def test_report_and_figures(run):
+    work, cfg = run
+    html = (work / "results/report.html").read_text(errors="replace")
+    assert len(html) > 100_000
+    for spec_path in (work / "results/figures").iterdir():
+        assert spec_path.stat().st_size > 1000
+    names = {p.name for p in (work / "results/figures").iterdir()}
+    assert {"fig1_surface.png", "fig2_rough_sphere.png", "fig4_profiles.png", "zeta.png", "collapse.png"} <= names
+    assert sum(n.startswith("fig3_") for n in names) == len(cfg["hurst"]) * len(cfg["h_rms"])
+
+
+def test_logs_and_run_provenance(run):
+    work, cfg = run
+    path = study.run_path(cfg["hurst"][0], cfg["radius"][0], cfg["h_rms"][0], cfg["seeds"][0])
+    log = (work / study.run_path(cfg["hurst"][0], cfg["radius"][0], cfg["h_rms"][0], cfg["seeds"][0],
+                                 pattern=study.LOG_PATTERN)).read_text()
+    n = cfg["forces"]["sphere"]["count"]
+    assert f"load step {n}/{n}" in log and "iterations" in log and " s]" in log
+    with xr.open_dataset(work / path) as ds:
+        assert ds.attrs["seed"] == cfg["seeds"][0]
+        assert ds.attrs["grid_n"] == cfg["grid"]["n"]
+        assert len(ds.attrs["config_hash"]) == 16
+    assert not list((work / "results").rglob(".*.tmp-*"))  # atomic writes leave no temp files
+
+
+def test_nothing_to_redo(run):
+    work, _ = run
+    proc = _snakemake(["--configfile", str(TINY), "-n"], work)
+    assert proc.returncode == 0
+    assert "Nothing to be done" in proc.stdout + proc.stderr
+
+
+def test_cli_shares_code_with_the_rule(run, tmp_path):
+    """`roughcontact indent` with the same settings writes the same numbers and hash."""
+    work, cfg = run
+    h, r, s, seed = cfg["hurst"][1], cfg["radius"][0], cfg["h_rms"][1], cfg["seeds"][1]
+    out = tmp_path / "run.nc"
+    assert cli.main(["indent", "--config", str(TINY), "--hurst", str(h), "--radius", str(r), "--h-rms", str(s),
+                     "--seed", str(seed), "-o", str(out), "-q"]) == 0
+    with xr.open_dataset(out) as a, xr.open_dataset(work / study.run_path(h, r, s, seed)) as b:
+        assert a.attrs["config_hash"] == b.attrs["config_hash"]
+        np.testing.assert_array_equal(a["stiffness"].values, b["stiffness"].values)
+        np.testing.assert_array_equal(a["depth"].values, b["depth"].values)
+
+
+def test_merge_names_a_truncated_or_foreign_file(run, tmp_path):
+    work, cfg = run
+    row = study.runs(cfg)[0]
+    good = work / study.run_path(row["hurst"], row["radius"], row["h_rms"], row["seed"])
+    expected = study.job_settings(cfg, row["hurst"], row["radius"], row["h_rms"], row["seed"])
+    bad = tmp_path / "truncated.nc"
+    bad.write_bytes(good.read_bytes()[:300])
+    with pytest.raises(analysis.MergeError, match="truncated.nc"):
+        analysis.read_run(bad, expected)
+    foreign = tmp_path / "foreign.nc"
+    xr.Dataset({"x": ("a", [1.0, 2.0])}).to_netcdf(foreign, engine="netcdf4")
+    with pytest.raises(analysis.MergeError, match="foreign.nc.*foreign"):
+        analysis.read_run(foreign, expected)
+    other = dict(expected, tol=1e-6)
+    with pytest.raises(analysis.MergeError, match="other settings"):
+        analysis.read_run(good, other)
+
+
+def test_failed_job_names_parameters_and_leaves_no_file(tmp_path):
+    settings = {"hurst": 0.7, "radius": 0.5, "h_rms": 9e-3, "seed": 3, "kind": "sphere", "periodic": False,
+                "n": 33, "length": 1.0, "e_star": 1.0, "forces": {"from": 1e-3, "to": 0.3, "count": 4},
+                "tol": 1e-8, "stiffness": "punch", "rel_step": 1e-3, "maxiter": None}
+    out = tmp_path / "run.nc"
+    with pytest.raises(study.IndentError) as info:
+        study.run_indent(settings, out, log=tmp_path / "run.log")
+    msg = str(info.value)
+    assert "H = 0.7" in msg and "R = 0.5" in msg and "seed = 3" in msg and "n = 33" in msg
+    assert "forces.sphere.to" in msg and "grid.n" in msg
+    assert "FAILED" in (tmp_path / "run.log").read_text()
+    assert not any(tmp_path.glob("*.nc")) and not any(tmp_path.glob(".*tmp*"))
+    # non-convergence
+    settings.update(forces={"from": 1e-4, "to": 1e-3, "count": 2}, maxiter=1)
+    with pytest.raises(study.IndentError, match="did not converge.*solver.maxiter"):
+        study.run_indent(settings, out)
+    assert not out.exists()
