@@ -57,6 +57,7 @@ BAD = [
     ("missing grid", _with("grid", DELETE), "grid"),
     ("missing sphere forces", _with("forces.sphere", DELETE), "forces.sphere"),
     ("flat range near full contact", _with("forces.flat", {"from": 1e-5, "to": 0.5, "count": 5}), "forces.flat.to"),
+    ("even slope window", _with("fit.slopes.window", 4), "fit.slopes.window"),
     ("sphere contact beyond the grid", _with("forces.sphere", {"from": 1e-5, "to": 0.2, "count": 5}),
      "forces.sphere.to"),
 ]

@@ -279,12 +279,17 @@ def fit_zeta(ds, cfg):
 # --------------------------------------------------------------------------
 # crossover
 # --------------------------------------------------------------------------
-def _loglog_slope(F, k):
-    """Local slope d ln k / d ln F at the interior points (central differences)."""
+def _loglog_slope(F, k, half: int = 1):
+    """Local slope d ln k / d ln F: the slope of a least-squares line through
+    the 2*half+1 neighbouring loads (``fit.slopes.window``; NaN near the ends).
+    half = 1 is the central difference; a wider window trades range for less
+    seed noise."""
     x, y = np.log(F), np.log(k)
     s = np.full_like(x, np.nan)
-    if x.size >= 3:
-        s[1:-1] = (y[2:] - y[:-2]) / (x[2:] - x[:-2])
+    for i in range(half, x.size - half):
+        xs, ys = x[i - half:i + half + 1], y[i - half:i + half + 1]
+        xm = xs - xs.mean()
+        s[i] = float(np.dot(xm, ys - ys.mean()) / np.dot(xm, xm))
     return s
 
 
@@ -298,7 +303,7 @@ def crossover(ens, zeta_df, cfg):
     """Predicted (eq. 17) and measured crossover per (H, R, h_rms), R finite.
 
     The measured force is where the local slope d ln k/d ln F of the ensemble
-    mean crosses 2/(H+4); on the eq. 16 curve that happens at F = 2 F_tr, so
+    mean (:func:`_loglog_slope`, resolved loads preferred) crosses 2/(H+4); on the eq. 16 curve that happens at F = 2 F_tr, so
     ``Ftr_measured`` is half that force (``F_slope`` is kept as read off).
     """
     import pandas as pd
@@ -327,9 +332,9 @@ def crossover(ens, zeta_df, cfg):
         k = sub["k_mean"].values[keep] / (E * L)
         cells = sub["contact_cells_mean"].values[keep]
         target = 2.0 / (hurst + 4.0)
-        s = _loglog_slope(F, k)
+        s = _loglog_slope(F, k, half=(int(cfg["fit"]["slopes"].get("window", 3)) - 1) // 2)
         d = s - target
-        idx = [i for i in range(1, len(F) - 2) if np.isfinite(d[i]) and np.isfinite(d[i + 1])
+        idx = [i for i in range(len(F) - 1) if np.isfinite(d[i]) and np.isfinite(d[i + 1])
                and d[i] > 0 >= d[i + 1]]
         resolved = cells >= min_cells
         idx_resolved = [i for i in idx if resolved[i]]

@@ -287,6 +287,9 @@ def resolve_config(raw: dict, schema=None) -> dict:
         rng["from"], rng["to"], rng["count"] = float(rng["from"]), float(rng["to"]), int(rng["count"])
 
     # checks a JSON schema cannot express
+    window = cfg["fit"]["slopes"].get("window", 3)
+    if window % 2 == 0:
+        raise ConfigError(f"config key 'fit.slopes.window' = {window} is not allowed; allowed: an odd integer >= 3")
     kinds = {"sphere" if math.isfinite(r) else "flat" for r in cfg["radius"]}
     for kind in sorted(kinds):
         if kind not in cfg.get("forces", {}):
