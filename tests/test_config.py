@@ -124,8 +124,8 @@ def test_lint_is_clean(tmp_path):
     assert "Lints for" not in proc.stdout + proc.stderr
 
 
-def test_paper_preset_plans_50_indent_jobs_per_combination():
-    proc = _snakemake(["-n", "--configfile", "presets/paper.yaml"], ROOT)
+def test_paper_preset_plans_50_indent_jobs_per_combination(tmp_path):
+    proc = _snakemake(["-n", "--configfile", str(ROOT / "presets/paper.yaml")], tmp_path)
     assert proc.returncode == 0, proc.stderr
     out = proc.stdout + proc.stderr
     cfg = study.resolve_config(study.load_config(ROOT / "presets/paper.yaml"), schema=SCHEMA)

@@ -105,13 +105,16 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
         elif key == "fig2":
             z = surfaces.rough_sphere(n, radius=R0, hurst=H0, h_rms=h0, length=L, seed=seed0)
             x = (np.arange(n) - n // 2) * L / n
-            X, Y = np.meshgrid(x, x, indexing="ij")
-            step = max(1, n // 96)
+            c = slice(n // 4, n - n // 4)  # central half: the roughness stays visible
+            X, Y = np.meshgrid(x[c], x[c], indexing="ij")
+            zc = z[c, c]
+            step = max(1, zc.shape[0] // 96)
             fig = plt.figure(figsize=(6, 5))
             ax = fig.add_subplot(projection="3d")
-            ax.plot_surface(X[::step, ::step], Y[::step, ::step], z[::step, ::step], cmap="viridis",
+            ax.plot_surface(X[::step, ::step], Y[::step, ::step], zc[::step, ::step], cmap="viridis",
                             linewidth=0, antialiased=False)
-            ax.set(title=f"rough sphere R = {R0:g}, H = {H0:g}, h_rms = {h0:g}", xlabel="x", ylabel="y", zlabel="z")
+            ax.set(title=f"rough sphere R = {R0:g}, H = {H0:g}, h_rms = {h0:g} (central half)",
+                   xlabel="x", ylabel="y", zlabel="z")
             save(fig, path)
         elif key[0] == "fig3":
             _, hurst, radius, h = key
@@ -153,11 +156,11 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
             fig.tight_layout()
             save(fig, path)
         elif key == "fig4":
-            r = np.linspace(-L / 2, L / 2, 801)
+            r = np.linspace(-0.2 * L, 0.2 * L, 801)  # where z_p and z_s are of similar size
             zp = r**2 / (2 * R0)
             q3d = theory.profile_prefactor(H0, h0, L, zeta_used(H0))
             zs = q3d * np.abs(r) ** H0
-            fig, axes = plt.subplots(1, 3, figsize=(10, 3.2), sharey=True)
+            fig, axes = plt.subplots(1, 3, figsize=(10, 3.2))
             for ax, zz, title in zip(axes, (zp, zs, zp + zs),
                                      ("(a) z_p = r²/(2R)", f"(b) z_s = Q3D |r|^H (eq. 6, 14)", "(c) z_c = z_p + z_s (eq. 15)")):
                 ax.plot(r, zz)
@@ -180,7 +183,7 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
             save(fig, path)
         elif key == "collapse":
             fig, ax = plt.subplots(figsize=(6, 4.6))
-            y = np.geomspace(1e-2, 1e2, 300)
+            y = np.geomspace(0.05, 30, 300)
             for j, hurst in enumerate(cfg["hurst"]):
                 ax.plot(y**3 + y ** (hurst + 1), y, "-", color=f"C{j}", lw=1,
                         label=f"eq. 16, H = {hurst:g}: F/F_tr = y³ + y^(H+1)")
