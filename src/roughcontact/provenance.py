@@ -124,6 +124,9 @@ def atomic_path(path: str | os.PathLike):
     """
     final = Path(path)
     final.parent.mkdir(parents=True, exist_ok=True)
+    for stale in final.parent.glob(f".{final.name}.tmp-*"):  # left by a killed (SIGKILL) writer
+        with contextlib.suppress(OSError):
+            stale.unlink()
     tmp = final.with_name(f".{final.name}.tmp-{os.getpid()}")
     try:
         yield tmp

@@ -5,6 +5,8 @@ rule merge:
     output:
         stiffness="results/stiffness.nc",
         ensemble="results/ensemble.nc",
+    params:
+        cfg=config,  # resolved config: a change of any setting reruns the analysis
     log:
         "logs/merge.log",
     conda:
@@ -24,6 +26,8 @@ rule fit_zeta:
             labels={"table": "zeta(H)"},
         ),
         nc="results/zeta.nc",
+    params:
+        cfg=config,
     log:
         "logs/fit_zeta.log",
     conda:
@@ -43,6 +47,8 @@ rule crossover:
             category="Tables",
             labels={"table": "crossover"},
         ),
+    params:
+        cfg=config,
     log:
         "logs/crossover.log",
     conda:

@@ -16,6 +16,8 @@ rule figures:
             report(s["path"], caption=s["caption"], category=s["category"], labels=s["labels"])
             for s in FIGURE_SPECS
         ],
+    params:
+        cfg=config,
     log:
         "logs/figures.log",
     conda:

@@ -2,5 +2,5 @@
 from roughcontact.analysis import run_crossover
 
 snakemake = globals()["snakemake"]
-run_crossover(snakemake.config, snakemake.input.ensemble, snakemake.input.zeta, snakemake.output.csv,
+run_crossover(snakemake.params.cfg, snakemake.input.ensemble, snakemake.input.zeta, snakemake.output.csv,
               log=snakemake.log[0])

@@ -2,5 +2,5 @@
 from roughcontact.figures import make_figures
 
 snakemake = globals()["snakemake"]
-make_figures(snakemake.config, snakemake.input.stiffness, snakemake.input.ensemble, snakemake.input.zeta,
+make_figures(snakemake.params.cfg, snakemake.input.stiffness, snakemake.input.ensemble, snakemake.input.zeta,
              snakemake.input.crossover, outputs=list(snakemake.output), log=snakemake.log[0])

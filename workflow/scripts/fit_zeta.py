@@ -2,5 +2,5 @@
 from roughcontact.analysis import run_fit_zeta
 
 snakemake = globals()["snakemake"]
-run_fit_zeta(snakemake.config, snakemake.input.stiffness, snakemake.output.csv, snakemake.output.nc,
+run_fit_zeta(snakemake.params.cfg, snakemake.input.stiffness, snakemake.output.csv, snakemake.output.nc,
              log=snakemake.log[0])

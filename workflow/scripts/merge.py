@@ -2,5 +2,5 @@
 from roughcontact.analysis import run_merge
 
 snakemake = globals()["snakemake"]
-run_merge(snakemake.config, snakemake.input.runs, snakemake.output.stiffness, snakemake.output.ensemble,
+run_merge(snakemake.params.cfg, snakemake.input.runs, snakemake.output.stiffness, snakemake.output.ensemble,
           log=snakemake.log[0])
