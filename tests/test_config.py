@@ -146,3 +146,12 @@ def test_cli_check_config(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text(yaml.safe_dump(_with("hurst", [0.0])))
     assert cli.main(["check-config", str(bad), "--schema", str(SCHEMA)]) == 2
+
+
+def test_conda_env_files_exist():
+    """A `conda:` directive whose file is missing breaks a real run after each job."""
+    import re
+
+    for smk in (ROOT / "workflow/rules").glob("*.smk"):
+        for rel in re.findall(r'conda:\s*\n\s*"([^"]+)"', smk.read_text()):
+            assert (smk.parent / rel).resolve().is_file(), (smk.name, rel)
