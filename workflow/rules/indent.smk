@@ -12,6 +12,8 @@ rule indent:
         h_rms=r"[0-9.e+-]+",
         seed=r"\d+",
     threads: 1
+    resources:
+        **study.indent_resources(config),  # mem_mb, runtime (minutes): for cluster executors
     conda:
         "../../envs/roughcontact.yaml"
     script:
