@@ -179,7 +179,8 @@ def _zeta_points(ds, cfg, hurst):
         radii, source = flat, "flat"
     else:
         radii = [r for r in cfg["radius"] if math.isfinite(r)]
-        source = "sphere small-force branch (no flat runs): eq. 16 minus its Hertz term"
+        source = ("sphere small-force branch (no flat runs): eq. 16 minus its Hertz term; "
+                  "no free exponent (the window is too narrow)")
     points = []
     for seed in cfg["seeds"]:
         xs, ys, fs = [], [], []
@@ -236,6 +237,7 @@ def fit_zeta(ds, cfg):
     for hurst in cfg["hurst"]:
         points, source = _zeta_points(ds, cfg, hurst)
         zeta, slope = _zeta_stats(points, hurst)
+        flat = source == "flat"
         rng = np.random.default_rng(20130702)  # fixed: identical numbers on every run
         boots = []
         if len(points) > 1 and math.isfinite(zeta):
@@ -254,9 +256,9 @@ def fit_zeta(ds, cfg):
             "zeta_ci_low": zlo,
             "zeta_ci_high": zhi,
             "zeta_estimate": float(theory.zeta_estimate(hurst)),
-            "exponent": slope,
-            "exponent_ci_low": slo,
-            "exponent_ci_high": shi,
+            "exponent": slope if flat else math.nan,
+            "exponent_ci_low": slo if flat else math.nan,
+            "exponent_ci_high": shi if flat else math.nan,
             "exponent_theory": 1 / (hurst + 1),
             "n_points": int(f_all.size),
             "n_seeds": len(points),
