@@ -191,3 +191,20 @@ def test_failed_job_names_parameters_and_leaves_no_file(tmp_path):
     with pytest.raises(study.IndentError, match="did not converge.*solver.maxiter"):
         study.run_indent(settings, out)
     assert not out.exists()
+
+
+def test_failing_jobs_through_snakemake_keep_going(tmp_path):
+    """maxiter = 1: every solve stops unconverged. Each job fails with its
+    parameters and a remedy, --keep-going tries them all, nothing is written."""
+    proc = _snakemake(["--configfile", str(TINY), "--config", "solver={tol: 1.0e-8, stiffness: punch, maxiter: 1}",
+                       "--cores", "2", "--keep-going"], tmp_path)
+    out = proc.stdout + proc.stderr
+    assert proc.returncode != 0
+    cfg = study.resolve_config(study.load_config(TINY))
+    n_runs = len(study.runs(cfg))
+    assert out.count("did not converge") >= n_runs
+    assert "H = 0.8, R = inf (flat, periodic), h_rms = 0.02, seed = 1, n = 65" in out
+    assert "raise solver.maxiter" in out
+    logs = list((tmp_path / "logs/indent").glob("*.log"))
+    assert len(logs) == n_runs and all("FAILED" in p.read_text() for p in logs)
+    assert not list(tmp_path.rglob("*.nc")) and not list(tmp_path.rglob(".*tmp*"))
