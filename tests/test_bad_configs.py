@@ -1,0 +1,122 @@
+"""Table of bad configs: each is rejected before any job runs, with one line naming the key."""
+from __future__ import annotations
+
+import copy
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from roughcontact import study
+
+REPO = Path(__file__).resolve().parents[1]
+
+GOOD = {
+    "grid": {"n": 65, "length": 1.0},
+    "e_star": 1.0,
+    "hurst": [0.5, 0.8],
+    "radius": [0.5, math.inf],
+    "h_rms": [9e-3],
+    "seeds": 2,
+    "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 6},
+               "flat": {"from": 1e-5, "to": 1e-4, "count": 4}},
+    "solver": {"tol": 1e-8, "stiffness": "punch"},
+    "fit": {"zeta": {"min_cells": 5, "max_area_fraction": 0.1},
+            "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 5.0}},
+}
+
+
+def _set(cfg, path, value):
+    keys = path.split(".")
+    node = cfg
+    for k in keys[:-1]:
+        node = node[k]
+    if value is DELETE:
+        del node[keys[-1]]
+    else:
+        node[keys[-1]] = value
+    return cfg
+
+
+DELETE = object()
+
+# (id, dotted key to change, new value, text the one-line message must name)
+BAD = [
+    ("unknown-top-key", "colour", "red", "colour"),
+    ("unknown-nested-key", "grid.cells", 65, "cells"),
+    ("unknown-solver-key", "solver.tolerance", 1e-8, "tolerance"),
+    ("missing-grid", "grid", DELETE, "grid"),
+    ("n-string", "grid.n", "big", "grid.n"),
+    ("n-float", "grid.n", 64.5, "grid.n"),
+    ("n-too-small", "grid.n", 8, "grid.n"),
+    ("length-zero", "grid.length", 0.0, "grid.length"),
+    ("e-star-negative", "e_star", -1.0, "e_star"),
+    ("hurst-zero", "hurst", [0.0, 0.5], "hurst"),
+    ("hurst-two", "hurst", [2.0], "hurst"),
+    ("hurst-negative", "hurst", [-0.3], "hurst"),
+    ("hurst-not-list", "hurst", {"a": 1}, "hurst"),
+    ("hurst-empty", "hurst", [], "hurst"),
+    ("radius-zero", "radius", [0.0], "radius"),
+    ("radius-negative", "radius", [-0.5, math.inf], "radius"),
+    ("radius-empty", "radius", [], "radius"),
+    ("h-rms-zero", "h_rms", [0.0], "h_rms"),
+    ("h-rms-negative", "h_rms", [-9e-3], "h_rms"),
+    ("seeds-zero", "seeds", 0, "seeds"),
+    ("seeds-empty", "seeds", [], "seeds"),
+    ("seeds-duplicate", "seeds", [1, 1, 2], "seeds"),
+    ("seeds-negative", "seeds", [-1, 2], "seeds"),
+    ("force-reversed", "forces.sphere", {"from": 1e-2, "to": 1e-6, "count": 6}, "forces.sphere"),
+    ("force-equal", "forces.sphere", {"from": 1e-4, "to": 1e-4, "count": 6}, "forces.sphere"),
+    ("force-zero", "forces.sphere.from", 0.0, "forces.sphere.from"),
+    ("force-negative", "forces.flat.to", -1e-4, "forces.flat.to"),
+    ("force-count-one", "forces.sphere.count", 1, "forces.sphere.count"),
+    ("flat-forces-missing", "forces.flat", DELETE, "forces.flat"),
+    ("flat-full-contact", "forces.flat.to", 0.5, "forces.flat.to"),
+    ("sphere-reaches-edge", "forces.sphere.to", 0.5, "forces.sphere.to"),
+    ("tol-zero", "solver.tol", 0.0, "solver.tol"),
+    ("stiffness-unknown", "solver.stiffness", "secant", "solver.stiffness"),
+    ("maxiter-zero", "solver.maxiter", 0, "solver.maxiter"),
+    ("min-cells-zero", "fit.zeta.min_cells", 0, "fit.zeta.min_cells"),
+    ("area-fraction-above-one", "fit.zeta.max_area_fraction", 1.5, "fit.zeta.max_area_fraction"),
+]
+
+
+def test_table_is_large_enough():
+    assert len(BAD) >= 20
+
+
+def test_good_config_passes():
+    study.resolve_config(copy.deepcopy(GOOD))
+
+
+@pytest.mark.parametrize("key,value,named", [b[1:] for b in BAD], ids=[b[0] for b in BAD])
+def test_bad_config_rejected_with_one_line(key, value, named):
+    cfg = _set(copy.deepcopy(GOOD), key, value)
+    with pytest.raises(study.ConfigError) as err:
+        study.resolve_config(cfg)
+    msg = str(err.value)
+    assert "\n" not in msg, msg
+    assert named in msg, msg
+    assert "allowed" in msg, msg
+
+
+# A few through the real `snakemake -n`: the run stops before any job, one line names the key.
+@pytest.mark.parametrize("case", ["unknown-top-key", "radius-negative", "hurst-zero",
+                                  "seeds-empty", "force-reversed"])
+def test_bad_config_stops_snakemake_before_any_job(tmp_path, case):
+    _, key, value, named = next(b for b in BAD if b[0] == case)
+    cfg = _set(copy.deepcopy(GOOD), key, value)
+    cfg_text = yaml.safe_dump(cfg).replace("inf", ".inf").replace("..inf", ".inf")
+    (tmp_path / "bad.yaml").write_text(cfg_text)
+    (tmp_path / "config.yaml").write_text(yaml.safe_dump(GOOD).replace("inf", ".inf").replace("..inf", ".inf"))
+    r = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(REPO / "Snakefile"), "-d", str(tmp_path),
+                        "--configfile", str(tmp_path / "bad.yaml"), "--cores", "1"],
+                       capture_output=True, text=True, timeout=120)
+    out = r.stdout + r.stderr
+    assert r.returncode != 0, out
+    lines = [l for l in out.splitlines() if "Invalid configuration" in l]
+    assert len(lines) == 1 and named in lines[0], out
+    assert not (tmp_path / "results").exists()
