@@ -239,9 +239,21 @@ PartitionName={PARTITION} Nodes={NODE_NAME} Default=YES MaxTime=INFINITE State=U
             return dec.returncode == 0
         self._wait_for("munged", ok)
 
+    def _link_default_conf(self) -> None:
+        # The executor plugin strips SLURM_* variables from the job environment, so the
+        # `srun` inside each job finds no SLURM_CONF: expose ours at the default path,
+        # but only if that path is free (never touch a real installation's config).
+        self.linked_conf = None
+        default = Path("/etc/slurm/slurm.conf")
+        if not default.exists() and not default.is_symlink():
+            default.parent.mkdir(parents=True, exist_ok=True)
+            default.symlink_to(self.conf)
+            self.linked_conf = default
+
     def start(self) -> "LocalSlurm":
         try:
             self._write_config()
+            self._link_default_conf()
             self._start_munge()
             self._spawn("slurmctld", [_which("slurmctld"), "-D", "-c", "-i"])
             self._wait_for("slurmctld", lambda: self._run("scontrol", "ping").returncode == 0
@@ -326,6 +338,10 @@ PartitionName={PARTITION} Nodes={NODE_NAME} Default=YES MaxTime=INFINITE State=U
                 continue
             terminate_process(p, grace=10)
         self.procs.clear()
+        link = getattr(self, "linked_conf", None)
+        if link is not None and link.is_symlink() and Path(os.readlink(link)) == self.conf:
+            link.unlink()
+        self.linked_conf = None
 
     def __enter__(self) -> "LocalSlurm":
         return self.start()
