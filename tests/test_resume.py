@@ -1,0 +1,61 @@
+"""Interrupt a running `snakemake` (SIGTERM, then SIGKILL) part way, rerun: it completes,
+finished runs are not recomputed, and the merged dataset equals an uninterrupted run."""
+from __future__ import annotations
+
+import copy
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import xarray as xr
+import yaml
+
+from test_slurm import REPO, TINY, _snakemake
+
+CFG = copy.deepcopy(TINY)
+CFG["seeds"] = 5  # 10 indent jobs
+
+
+def _write(d):
+    d.mkdir()
+    (d / "config.yaml").write_text(yaml.safe_dump(CFG).replace("'.inf'", ".inf"))
+
+
+def test_interrupt_and_resume(tmp_path):
+    ref, run = tmp_path / "ref", tmp_path / "run"
+    _write(ref)
+    _write(run)
+    _snakemake(ref, "--cores", "2")
+
+    cmd = [sys.executable, "-m", "snakemake", "results/stiffness.nc", "-s", str(REPO / "Snakefile"),
+           "-d", str(run), "--cores", "2", "--configfile", str(run / "config.yaml")]
+    p = subprocess.Popen(cmd, cwd=run, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                         start_new_session=True)
+    try:
+        end = time.monotonic() + 60
+        while time.monotonic() < end and len(list(run.glob("results/runs/*/*.nc"))) < 2:
+            time.sleep(0.1)
+        p.send_signal(signal.SIGTERM)
+        time.sleep(1.0)
+        os.killpg(p.pid, signal.SIGKILL)  # snakemake (and its jobs) as a crash would
+        p.wait(timeout=10)
+    finally:
+        if p.poll() is None:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+    done = {f: f.stat().st_mtime_ns for f in run.glob("results/runs/*/*.nc")}
+    assert 1 <= len(done) < 10, f"interrupt was not part way: {len(done)} runs finished"
+    assert not (run / "results/stiffness.nc").exists()
+
+    # a SIGKILLed snakemake leaves its lock: the documented `--unlock`, then rerun
+    _snakemake(run, "--unlock")
+    _snakemake(run, "--cores", "2", "--rerun-incomplete")
+    for f, mtime in done.items():
+        assert f.stat().st_mtime_ns == mtime, f"{f} was recomputed"
+    assert len(list(run.glob("results/runs/*/*.nc"))) == 10
+    with xr.open_dataset(ref / "results/stiffness.nc") as a, xr.open_dataset(run / "results/stiffness.nc") as b:
+        for name in list(a.data_vars) + list(a.coords):
+            np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
