@@ -189,7 +189,7 @@ class ContactMechanicsPeer:
     name = "ContactMechanics"
 
     def __init__(self, heights, *, length: float, e_star: float, tol: float = 1e-8,
-                 solver: str = "bugnicourt"):
+                 solver: str = "polonsky_keer"):
         from ContactMechanics import FreeFFTElasticHalfSpace
         from ContactMechanics.Systems import NonSmoothContactSystem
         from SurfaceTopography import Topography
