@@ -81,6 +81,10 @@ PEER_NAMES = ("cm", "tamaas")
 #: Iteration cap of every peer solve (far above what converged solves need).
 MAX_ITERATIONS = 100_000
 
+#: A warm-started ContactMechanics solution is accepted when its penetration outside
+#: the contact set is at most ``ACCEPT·tol·d`` (roughcontact stops at ``tol·d``).
+ACCEPT = 10.0
+
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class PeerSolution:
@@ -242,6 +246,15 @@ class ContactMechanicsPeer:
             raise RuntimeError(f"ContactMechanics (polonsky_keer) did not converge: {result.message}")
         return np.asarray(result.jac), float(result.offset), int(result.nit)
 
+    def _penetration(self, pixel_forces: np.ndarray, depth: float) -> float:
+        """Largest penetration outside the contact set, relative to ``depth``: the
+        half of roughcontact's stopping test that ContactMechanics does not check."""
+        from roughcontact.contact import displacement
+
+        pressure = pixel_forces / self.cell_area
+        gap = displacement(pressure, length=self.length, e_star=self.e_star) - self.heights - depth
+        return float(-gap[pressure <= 0].min(initial=0.0) / depth)
+
     def solve(self, force: float, *, initial: PeerSolution | None = None) -> PeerSolution:
         """Solve at total ``force``, warm-started from ``initial`` if given.
 
@@ -251,7 +264,10 @@ class ContactMechanicsPeer:
             Total normal force (force unit).
         initial : PeerSolution, optional
             A neighbouring solution; its pressure, scaled to ``force``, is the
-            starting point and its depth sets the tolerance scale.
+            starting point and its depth sets the tolerance scale. A
+            warm-started solution that penetrates the indenter outside its
+            contact set by more than ``ACCEPT·tol·d`` is discarded and the
+            solve repeated from uniform forces (the check's time is counted).
 
         Returns
         -------
@@ -271,6 +287,14 @@ class ContactMechanicsPeer:
         while True:
             pixel_forces, depth, spent = method(force, pixel_forces, depth_scale)
             iterations += spent
+            if initial is not None and self._penetration(pixel_forces, depth) > ACCEPT * self.tol:
+                # ContactMechanics' Polonsky-Keer stops after one iteration when a warm
+                # start has a single contact cell (zero step, and its penetration test
+                # looks only inside the contact set): start again from uniform forces.
+                initial, refine = None, True
+                pixel_forces = np.full((self.n, self.n), force / self.n**2)
+                depth_scale = float(-self.heights.min())
+                continue
             if not refine or depth >= 0.5 * depth_scale:
                 break
             depth_scale = depth
@@ -345,7 +369,8 @@ class TamaasPeer:
             Total normal force (force unit).
         initial : PeerSolution, optional
             A neighbouring solution; its pressure scaled to ``force`` is the
-            starting point. Without it the solve starts from zero pressure.
+            starting point. Without it, or where tamaas fails on the warm start
+            (a contact of a cell or two), the solve starts from zero pressure.
 
         Returns
         -------
@@ -354,9 +379,16 @@ class TamaasPeer:
         start = time.perf_counter()
         if initial is None:
             self.model.traction[...] = 0.0
+            iterations = self._run(force)
         else:
             self.model.traction[...] = initial.pressure * (force / initial.force)
-        iterations = self._run(force)
+            try:
+                iterations = self._run(force)
+            except self._tm.FloatingPointError:
+                # tamaas 2.9 computes its error as 0/0 on a warm-started contact of
+                # one or two cells; the cold start from zero pressure works there.
+                self.model.traction[...] = 0.0
+                iterations = self._run(force)
         pressure = np.array(self.model.traction, copy=True)
         contact = pressure > 0
         displacement = np.zeros_like(pressure)
