@@ -355,6 +355,8 @@ def runs(cfg: dict):
 
 RUN_PATTERN = RUN_DIR + "/H{hurst}_R{radius}_h{h_rms}/seed{seed}.nc"
 LOG_PATTERN = "logs/indent/H{hurst}_R{radius}_h{h_rms}_seed{seed}.log"
+#: Snakemake's per-job benchmark (wall seconds, peak RSS ``max_rss`` in MB) of each run
+BENCHMARK_PATTERN = "results/benchmarks/indent/H{hurst}_R{radius}_h{h_rms}_seed{seed}.tsv"
 
 
 def run_path(hurst, radius, h_rms, seed, pattern: str = RUN_PATTERN) -> str:

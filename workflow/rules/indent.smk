@@ -4,6 +4,8 @@ rule indent:
         study.RUN_PATTERN,
     log:
         study.LOG_PATTERN,
+    benchmark:
+        study.BENCHMARK_PATTERN
     params:
         settings=lambda wc: study.settings_from_wildcards(config, wc),
     wildcard_constraints:
