@@ -136,12 +136,20 @@ def displacement(pressure, *, length: float, e_star: float, periodic: bool = Fal
     return operator_for(pressure.shape[0], float(length), float(e_star), bool(periodic))(pressure)
 
 
-def _centred_gap(gap, contact):
-    """Gap relative to its contact mean ``d``, ``d``, and the relative complementarity error."""
-    depth = gap[contact].mean()
-    gap -= depth
-    error = max(np.abs(gap[contact]).max(), -gap[~contact].min(initial=0.0)) / abs(depth)
-    return gap, depth, error
+def _gap_state(gap, pressure, support):
+    """Depth, relative complementarity error and the penetrating free cells of a gap field.
+
+    ``gap`` and ``pressure`` are flat views of the window, ``support`` the flat
+    indices of the contact set ``c = {p > 0}``. The depth ``d`` is the mean gap
+    over ``c``; the error is ``max(max_c |g − d|, max_(not c) (d − g)) / d``;
+    the penetrating free cells are ``{p = 0, g < d}`` (flat indices).
+    """
+    depth = float(gap[support].mean())
+    inner = float(np.abs(gap[support] - depth).max())
+    candidates = np.flatnonzero(gap < depth)
+    below = candidates[pressure[candidates] == 0.0]
+    outer = depth - float(gap[below].min()) if below.size else 0.0
+    return depth, max(inner, outer) / abs(depth), below
 
 
 def _polonsky_keer(lift, operator, total, pressure, tol, maxiter):
@@ -152,7 +160,10 @@ def _polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     mean over the contact set ``c = {p > 0}``:
     ``max_c |g − ḡ| ≤ tol·ḡ`` and ``min_(not c) (g − ḡ) ≥ −tol·ḡ``.
 
-    One convolution per iteration instead of P&K's two: the new pressure is
+    The contact set is kept as an index array, so that besides the one
+    convolution an iteration makes only a few passes over the window (the
+    gap, the search for penetrating free cells, the update of ``u``).
+    One convolution instead of P&K's two: the new pressure is
     ``s (p − τ t + Δp)`` where ``Δp`` (clipped and overlapping cells) is
     usually a handful of cells, so ``u`` is updated as
     ``s (u − τ K t + K Δp)`` with ``K Δp`` summed column by column. ``u`` is
@@ -160,47 +171,62 @@ def _polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     before convergence is accepted.
     """
     pressure = pressure * (total / pressure.sum())
+    flat_pressure = pressure.reshape(-1)
+    support = np.flatnonzero(flat_pressure)
     displacement = operator(pressure)
     exact, since_exact = True, 0
     direction = np.zeros_like(pressure)
+    flat_direction = direction.reshape(-1)
+    direction_support = support
+    gap = np.empty_like(pressure)
+    flat_gap = gap.reshape(-1)
     conjugate = False
     norm_old = 1.0
     error = math.inf
     column_limit = operator.column_limit(pressure.shape)
     for iteration in range(maxiter + 1):
-        contact = pressure > 0
-        gap, depth, error = _centred_gap(displacement + lift, contact)
+        np.add(displacement, lift, out=gap)
+        depth, error, below = _gap_state(flat_gap, flat_pressure, support)
         if error <= tol and not exact:
             displacement, exact, since_exact = operator(pressure), True, 0
-            gap, depth, error = _centred_gap(displacement + lift, contact)
+            np.add(displacement, lift, out=gap)
+            depth, error, below = _gap_state(flat_gap, flat_pressure, support)
         if error <= tol:
             return pressure, depth, iteration, True, error
         if iteration == maxiter:
             break
-        residual = np.where(contact, gap, 0.0)
-        norm = float(np.sum(residual**2))
-        direction = np.where(contact, residual + (norm / norm_old if conjugate else 0.0) * direction,
-                             0.0)
+        residual = flat_gap[support] - depth
+        norm = float(residual @ residual)
+        values = residual + (norm / norm_old) * flat_direction[support] if conjugate else residual
         norm_old = norm
+        flat_direction[direction_support] = 0.0
+        flat_direction[support] = values
+        direction_support = support
         response = operator(direction)
-        centred = response[contact] - response[contact].mean()
-        curvature = float(np.sum(centred * direction[contact]))
+        on_contact = response.reshape(-1)[support]
+        curvature = float((on_contact - on_contact.mean()) @ values)
         step = norm / curvature if curvature > 0 else 1.0 / operator.self_coefficient
-        trial = pressure - step * direction
-        pressure = np.maximum(trial, 0.0)
-        overlap = (pressure == 0.0) & (gap < 0.0)
-        conjugate = not overlap.any()
-        pressure[overlap] = -step * gap[overlap]
-        scale = total / pressure.sum()
-        changed = np.flatnonzero(pressure != trial)
+        trial = flat_pressure[support] - step * values
+        clipped = trial <= 0.0
+        flat_pressure[support] = np.where(clipped, 0.0, trial)
+        # cells with zero pressure and a negative gap enter the contact set
+        overlap = np.concatenate([below, support[clipped & (residual < 0.0)]])
+        flat_pressure[overlap] = -step * (flat_gap[overlap] - depth)
+        conjugate = overlap.size == 0
+        # Δp = p − (p_old − τ t): nonzero on the clipped and the entering free cells
+        changed = np.concatenate([support[clipped], below])
+        delta = np.concatenate([flat_pressure[support[clipped]] - trial[clipped],
+                                flat_pressure[below]])
+        support = np.concatenate([support[~clipped], overlap])  # disjoint parts
+        scale = total / flat_pressure[support].sum()
+        flat_pressure[support] *= scale
         if len(changed) <= column_limit and since_exact < _REFRESH:
-            displacement -= step * response
-            operator.add_columns(displacement, (pressure - trial).flat[changed], changed)
+            response *= step
+            displacement -= response
+            operator.add_columns(displacement, delta, changed)
             displacement *= scale
-            pressure *= scale
             exact, since_exact = False, since_exact + 1
         else:
-            pressure *= scale
             displacement, exact, since_exact = operator(pressure), True, 0
     return pressure, depth, maxiter, False, error
 
