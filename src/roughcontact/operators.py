@@ -118,7 +118,7 @@ class FreeSpaceOperator:
         """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
         padded = [scipy.fft.next_fast_len(2 * m - 1, real=True) for m in shape]
         return max(4, int(2 * padded[0] * padded[1] * np.log2(padded[0] * padded[1])
-                          / (shape[0] * shape[1]) / 8))
+                          / (shape[0] * shape[1]) / 3))
 
     def add_columns(self, field: np.ndarray, values: np.ndarray, cells: np.ndarray) -> None:
         """Add the displacement of pressures ``values`` on the flat ``cells`` of the window
@@ -166,7 +166,7 @@ class PeriodicOperator:
 
     def column_limit(self, shape: tuple[int, int]) -> int:
         """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
-        return max(2, int(2 * np.log2(shape[0] * shape[1]) / 8))
+        return max(4, int(np.log2(shape[0] * shape[1])))
 
     def add_columns(self, field: np.ndarray, values: np.ndarray, cells: np.ndarray) -> None:
         """Add the displacement of pressures ``values`` on the flat ``cells`` to ``field`` in place."""
