@@ -1,6 +1,6 @@
 # roughcontact parameter study (Pohrt & Popov 2013): `snakemake --cores 2`
 # Sweep: config.yaml (or --configfile presets/*.yaml); output: results/; report:
-# `snakemake --report results/report.html`.  See docs/pipeline.md.
+# `snakemake --report results/report.html`.  See README.md.
 import os
 import sys
 from pathlib import Path
