@@ -158,11 +158,10 @@ class PeriodicOperator:
 
     @functools.cached_property
     def _kernel(self) -> np.ndarray:
-        """Displacement under a unit pressure on cell (0, 0), tiled 2 × 2: the column of
-        cell ``(i, j)`` is the view ``[n − i: 2n − i, n − j: 2n − j]``."""
+        """Displacement of the whole grid under a unit pressure on cell (0, 0)."""
         unit = np.zeros((self.n, self.n))
         unit[0, 0] = 1.0
-        return np.tile(self(unit), (2, 2))
+        return self(unit)
 
     def column_limit(self, shape: tuple[int, int]) -> int:
         """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
@@ -170,9 +169,13 @@ class PeriodicOperator:
 
     def add_columns(self, field: np.ndarray, values: np.ndarray, cells: np.ndarray) -> None:
         """Add the displacement of pressures ``values`` on the flat ``cells`` to ``field`` in place."""
-        n = self.n
+        n, kernel = self.n, self._kernel
         for value, (i, j) in zip(values, zip(*np.unravel_index(cells, field.shape))):
-            field += value * self._kernel[n - i: 2 * n - i, n - j: 2 * n - j]
+            # the kernel rolled by (i, j), added as four blocks (no rolled copy)
+            field[i:, j:] += value * kernel[: n - i, : n - j]
+            field[i:, :j] += value * kernel[: n - i, n - j:]
+            field[:i, j:] += value * kernel[n - i:, : n - j]
+            field[:i, :j] += value * kernel[n - i:, n - j:]
 
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
         """Zero-mean displacement of the periodic half-space (full ``n × n`` grid)."""
