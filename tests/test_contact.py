@@ -193,6 +193,64 @@ def test_wavy_full_contact_above_critical_load():
     assert wavy_state(1.5).contact.all(), "not in full contact at p/p* = 1.5"
 
 
+# --- nominally flat rough surface (periodic) -------------------------------------------
+
+@pytest.fixture(scope="module", params=[128, 129])
+def flat_path(request):
+    """Self-affine surface on the periodic half-space; loads with 1 to a few hundred cells."""
+    n = request.param
+    z = surfaces.self_affine(n, hurst=0.7, h_rms=9e-3, length=1.0, seed=3)
+    forces = np.geomspace(1e-6, 3e-4, 5)
+    return z, forces, contact.load_path(z, forces, length=1.0, e_star=E_STAR, periodic=True)
+
+
+def test_flat_candidates_equal_whole_grid(flat_path):
+    """The dense solve on the cells that can touch gives the whole-grid FFT solution."""
+    z, forces, states = flat_path
+    for force, state in zip(forces, states):
+        full = contact.solve(z, force=force, length=1.0, e_star=E_STAR, periodic=True,
+                             windowed=False)
+        assert state.depth == pytest.approx(full.depth, rel=1e-7), f"depth differs at F = {force:g}"
+        assert np.array_equal(state.contact, full.contact), f"contact set differs at F = {force:g}"
+
+
+def test_flat_candidates_complementarity(flat_path):
+    """Complementarity on the whole grid: |g| ≤ tol·d in contact, g ≥ −tol·d outside."""
+    _, forces, states = flat_path
+    for force, state in zip(forces, states):
+        gap = state.gap()
+        assert np.abs(gap[state.contact]).max() <= state.tol * state.depth, f"gap open at F = {force:g}"
+        assert gap[~state.contact].min() >= -state.tol * state.depth, f"penetration at F = {force:g}"
+
+
+def test_flat_cold_solve_enlarges_the_candidates(monkeypatch):
+    """A cold solve at F/(E*L²) = 3e-4 (60 contact cells, depth 1.7× the first bound: the
+    depth of the 64 lowest cells) enlarges the candidates once and still equals the FFT
+    solution on the whole grid."""
+    z = surfaces.self_affine(129, hurst=0.7, h_rms=9e-3, length=1.0, seed=3)
+    used = []
+    solve_candidates = contact._solve_candidates
+    monkeypatch.setattr(contact, "_solve_candidates",
+                        lambda *args: used.append(solve_candidates(*args)) or used[-1])
+    state = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True)
+    full = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True, windowed=False)
+    assert used and used[-1] is not None, "the candidate solve was not used"
+    assert state.depth > np.quantile(z - z.min(), 64 / z.size), "the first bound was not too small"
+    assert state.depth == pytest.approx(full.depth, rel=1e-7), "depth differs from the whole grid"
+    assert np.array_equal(state.contact, full.contact), "contact set differs from the whole grid"
+
+
+@pytest.mark.parametrize("periodic", [True, False])
+def test_dense_punch_stiffness_equals_matrix_free(flat_path, rough, monkeypatch, periodic):
+    """The punch stiffness with a dense influence matrix equals the FFT-based one."""
+    states = flat_path[2] if periodic else [rough[1]]
+    dense = [contact.stiffness(s) for s in states]
+    monkeypatch.setattr(contact, "DENSE_CELLS", 0)
+    for state, k in zip(states, dense):
+        assert k == pytest.approx(contact.stiffness(state), rel=1e-7), \
+            f"dense punch stiffness differs ({int(state.contact.sum())} cells)"
+
+
 # --- rough sphere ----------------------------------------------------------------------
 
 @pytest.fixture(scope="module")
