@@ -302,11 +302,11 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
     full = (slice(0, n), slice(0, n))
     if initial is None or not np.any(initial > 0):
         initial = None
+    if depth_bound is None:  # cold start: the depth that touches the 64 lowest cells
+        depth_bound = np.quantile(lift, min(1.0, 64.0 / lift.size))
     if periodic:
         window = full
         solution = None
-        if depth_bound is None:
-            depth_bound = np.quantile(lift, min(1.0, 64.0 / lift.size))
         if math.isfinite(depth_bound) and depth_bound > 0:
             solution = _solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound)
         if solution is None:
@@ -314,8 +314,6 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
             solution = _polonsky_keer(lift, operator, total, start, tol, maxiter)
         p, depth, iterations, converged, error = solution
     else:
-        if depth_bound is None:
-            depth_bound = np.quantile(lift, min(1.0, 64.0 / lift.size))
         iterations = 0
         while True:
             window = _box(lift <= depth_bound, operator)
