@@ -52,6 +52,7 @@ def test_interrupt_and_resume(tmp_path):
         # before Snakemake records its job is (rightly) recomputed on resume
         while time.monotonic() < end and len(_recorded(run)) < 2:
             time.sleep(0.1)
+        recorded = _recorded(run)
         p.send_signal(signal.SIGTERM)
         time.sleep(1.0)
         os.killpg(p.pid, signal.SIGKILL)  # snakemake (and its jobs) as a crash would
@@ -60,6 +61,8 @@ def test_interrupt_and_resume(tmp_path):
         if p.poll() is None:
             os.killpg(p.pid, signal.SIGKILL)
             p.wait()
+    assert len(recorded) >= 2, ("no two runs recorded in .snakemake/metadata within 60 s "
+                                f"(recorded: {sorted(recorded)}; Snakemake's file persistence backend assumed)")
     present = {f: f.stat().st_mtime_ns for f in run.glob("results/runs/*/*.nc")}
     assert len(present) < 10, f"interrupt was not part way: all {len(present)} runs present"
     assert not (run / "results/stiffness.nc").exists()
