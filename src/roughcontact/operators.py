@@ -82,6 +82,7 @@ class FreeSpaceOperator:
         self.self_coefficient = self.coefficients[0, 0]
         self._spectra: collections.OrderedDict[tuple[int, int], np.ndarray] = \
             collections.OrderedDict()
+        self._symmetric: np.ndarray | None = None
 
     def window_size(self, cells: int) -> int:
         """Largest window ≥ ``cells`` (≤ n) convolved with the same padded FFT size."""
@@ -107,12 +108,17 @@ class FreeSpaceOperator:
             self._spectra.move_to_end(padded)
         return padded, spectrum
 
-    @functools.cached_property
-    def _kernel(self) -> np.ndarray:
-        """Symmetric influence array: ``[n−1+i, n−1+j]`` holds the coefficient at offset (i, j)."""
-        n = self.n
-        index = np.abs(np.arange(-(n - 1), n))
-        return self.coefficients[index[:, None], index[None, :]]
+    def _kernel(self, half: int) -> np.ndarray:
+        """Symmetric influence array for windows of up to ``half`` cells a side:
+        ``[half−1+i, half−1+j]`` holds the coefficient at offset (i, j), ``|i|, |j| < half``.
+
+        Kept for the largest window seen, so its memory follows the window, not
+        the grid: ``(2 half − 1)²`` values instead of ``(2n − 1)²``.
+        """
+        if self._symmetric is None or (self._symmetric.shape[0] + 1) // 2 < half:
+            index = np.abs(np.arange(-(half - 1), half))
+            self._symmetric = self.coefficients[index[:, None], index[None, :]]
+        return self._symmetric
 
     def column_limit(self, shape: tuple[int, int]) -> int:
         """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
@@ -124,9 +130,10 @@ class FreeSpaceOperator:
         """Add the displacement of pressures ``values`` on the flat ``cells`` of the window
         ``field`` to ``field`` in place, summing influence columns directly."""
         m1, m2 = field.shape
-        origin = self.n - 1
+        kernel = self._kernel(max(m1, m2))
+        origin = (kernel.shape[0] - 1) // 2
         for value, (i, j) in zip(values, zip(*np.unravel_index(cells, field.shape))):
-            field += value * self._kernel[origin - i: origin - i + m1, origin - j: origin - j + m2]
+            field += value * kernel[origin - i: origin - i + m1, origin - j: origin - j + m2]
 
     def influence_matrix(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
         """Dense ``A[a, b]``: displacement at cell ``(rows[a], cols[a])`` under unit pressure
