@@ -17,7 +17,7 @@ rule merge:
 
 rule fit_zeta:
     input:
-        stiffness="results/stiffness.nc",
+        stiffness=rules.merge.output.stiffness,
     output:
         csv=report(
             "results/zeta.csv",
@@ -38,8 +38,8 @@ rule fit_zeta:
 
 rule crossover:
     input:
-        ensemble="results/ensemble.nc",
-        zeta="results/zeta.csv",
+        ensemble=rules.merge.output.ensemble,
+        zeta=rules.fit_zeta.output.csv,
     output:
         csv=report(
             "results/crossover.csv",

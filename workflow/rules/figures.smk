@@ -2,15 +2,14 @@
 from roughcontact import figures as _figures  # noqa: E402  (matplotlib only inside make_figures)
 
 FIGURE_SPECS = _figures.figure_specs(config)
-FIGURES = [spec["path"] for spec in FIGURE_SPECS]
 
 
 rule figures:
     input:
-        stiffness="results/stiffness.nc",
-        ensemble="results/ensemble.nc",
-        zeta="results/zeta.csv",
-        crossover="results/crossover.csv",
+        stiffness=rules.merge.output.stiffness,
+        ensemble=rules.merge.output.ensemble,
+        zeta=rules.fit_zeta.output.csv,
+        crossover=rules.crossover.output.csv,
     output:
         *[
             report(s["path"], caption=s["caption"], category=s["category"], labels=s["labels"])

@@ -1,7 +1,7 @@
 # One job per (H, R, h_rms, seed): surface, warm-started load path, stiffness.
 rule indent:
     output:
-        study.RUN_PATTERN,
+        run=study.RUN_PATTERN,
     log:
         study.LOG_PATTERN,
     benchmark:

@@ -6,4 +6,4 @@ The work is done by roughcontact.study.run_indent, the same function behind
 from roughcontact.study import run_indent
 
 snakemake = globals()["snakemake"]  # injected by Snakemake's script: directive
-run_indent(snakemake.params.settings, snakemake.output[0], log=snakemake.log[0])
+run_indent(snakemake.params.settings, snakemake.output.run, log=snakemake.log[0])
