@@ -30,9 +30,15 @@ def _write(d):
 def _recorded(run: Path) -> set[str]:
     """Run files Snakemake has recorded as finished: a metadata record and no
     incomplete marker (both keyed by the base64 of the output path)."""
+    def decoded(name):
+        try:
+            return urlsafe_b64decode(name).decode()
+        except ValueError:  # not a record (binascii.Error and UnicodeDecodeError are ValueErrors)
+            return None
+
     def keys(sub):
         d = run / ".snakemake" / sub
-        return {urlsafe_b64decode(f.name).decode() for f in d.glob("*") if f.is_file()} if d.is_dir() else set()
+        return {decoded(f.name) for f in d.glob("*") if f.is_file()} - {None} if d.is_dir() else set()
     return {k for k in keys("metadata") - keys("incomplete") if k.startswith("results/runs/")}
 
 
