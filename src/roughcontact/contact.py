@@ -256,6 +256,15 @@ def _box(mask: np.ndarray, operator) -> tuple[slice, slice]:
     return tuple(window)
 
 
+def _start(previous, lift, depth_bound):
+    """Starting pressure on some cells: ``previous`` (a neighbouring solution on the
+    same cells, or ``None``) where it is positive anywhere, else unit pressure on the
+    cells with ``lift ≤ depth_bound``."""
+    if previous is not None and np.any(previous > 0):
+        return np.maximum(previous, 0.0)
+    return (lift <= depth_bound).astype(float)
+
+
 def _solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound):
     """Periodic contact solved on the cells that can touch, with a dense influence matrix.
 
@@ -278,9 +287,8 @@ def _solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound)
         if cells.size > DENSE_CELLS:
             return None
         dense = DenseOperator(operator.influence_matrix(*np.divmod(cells, n)))
-        start = None if initial is None else np.maximum(initial.reshape(-1)[cells], 0.0)
-        if start is None or not np.any(start > 0):
-            start = (flat_lift[cells] <= depth_bound).astype(float)
+        start = _start(None if initial is None else initial.reshape(-1)[cells], flat_lift[cells],
+                       depth_bound)
         p_cells, depth, spent, converged, error = _polonsky_keer(
             flat_lift[cells], dense, total, start, tol, maxiter - iterations)
         iterations += spent
@@ -309,8 +317,8 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
         solution = None
         if math.isfinite(depth_bound) and depth_bound > 0:
             solution = _solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound)
-        if solution is None:
-            start = np.ones((n, n)) if initial is None else np.maximum(initial, 0.0)
+        if solution is None:  # from the neighbouring solution, or uniform pressure
+            start = _start(initial, lift, math.inf)
             solution = _polonsky_keer(lift, operator, total, start, tol, maxiter)
         p, depth, iterations, converged, error = solution
     else:
@@ -318,9 +326,7 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
         while True:
             window = _box(lift <= depth_bound, operator)
             local = lift[window]
-            start = None if initial is None else np.maximum(initial[window], 0.0)
-            if start is None or not np.any(start > 0):
-                start = (local <= depth_bound).astype(float)
+            start = _start(None if initial is None else initial[window], local, depth_bound)
             p_window, depth, spent, converged, error = _polonsky_keer(
                 local, operator, total, start, tol, maxiter - iterations)
             iterations += spent
