@@ -75,7 +75,7 @@ def test_interrupt_and_resume(tmp_path):
 
     # a SIGKILLed snakemake leaves its lock: the documented `--unlock`, then rerun
     _snakemake(run, "--unlock")
-    # the dry run says which runs it would redo; the recorded ones must not be among them
+    # the dry run says which runs it would redo; the others are finished and must survive
     planned = set(re.findall(r"output: (\S+\.nc)", _snakemake(run, "-n", "--rerun-incomplete")))
     done = {f: m for f, m in present.items() if str(f.relative_to(run)) not in planned}
     assert len(done) >= 2, f"fewer than two finished run survived the interrupt (present: {sorted(present)}, planned: {sorted(planned)})"
