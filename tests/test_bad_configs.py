@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from roughcontact import study
+from roughcontact import config, study
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -89,14 +89,14 @@ def test_table_is_large_enough():
 
 
 def test_good_config_passes():
-    study.resolve_config(copy.deepcopy(GOOD))
+    config.resolve_config(copy.deepcopy(GOOD))
 
 
 @pytest.mark.parametrize("key,value,named", [b[1:] for b in BAD], ids=[b[0] for b in BAD])
 def test_bad_config_rejected_with_one_line(key, value, named):
     cfg = _set(copy.deepcopy(GOOD), key, value)
-    with pytest.raises(study.ConfigError) as err:
-        study.resolve_config(cfg)
+    with pytest.raises(config.ConfigError) as err:
+        config.resolve_config(cfg)
     msg = str(err.value)
     assert "\n" not in msg, msg
     assert named in msg, msg

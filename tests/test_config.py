@@ -1,5 +1,5 @@
 """Config validation: every bad config stops with one line naming the key,
-before any job runs (study.resolve_config directly, and through snakemake)."""
+before any job runs (config.resolve_config directly, and through snakemake)."""
 from __future__ import annotations
 
 import copy
@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from roughcontact import study
+from roughcontact import config, study
 
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = ROOT / "workflow/schemas/config.schema.yaml"
@@ -65,8 +65,8 @@ BAD = [
 
 @pytest.mark.parametrize("cfg, needle", [b[1:] for b in BAD], ids=[b[0] for b in BAD])
 def test_bad_config_one_line_naming_the_key(cfg, needle):
-    with pytest.raises(study.ConfigError) as info:
-        study.resolve_config(cfg, schema=SCHEMA)
+    with pytest.raises(config.ConfigError) as info:
+        config.resolve_config(cfg, schema=SCHEMA)
     msg = str(info.value)
     assert "\n" not in msg
     assert needle in msg
@@ -75,13 +75,13 @@ def test_bad_config_one_line_naming_the_key(cfg, needle):
 
 def test_good_configs_resolve():
     for path in [ROOT / "config.yaml", *sorted((ROOT / "presets").glob("*.yaml"))]:
-        cfg = study.resolve_config(study.load_config(path), schema=SCHEMA)
+        cfg = config.resolve_config(config.load_config(path), schema=SCHEMA)
         assert cfg["seeds"] == sorted(set(cfg["seeds"]))
         assert all(isinstance(s, int) for s in cfg["seeds"])
 
 
 def test_default_config_sweeps_every_axis():
-    cfg = study.resolve_config(study.load_config(ROOT / "config.yaml"), schema=SCHEMA)
+    cfg = config.resolve_config(config.load_config(ROOT / "config.yaml"), schema=SCHEMA)
     for axis in ("hurst", "radius", "h_rms", "seeds"):
         assert len(cfg[axis]) >= 2, axis
     assert any(math.isinf(r) for r in cfg["radius"]) and any(math.isfinite(r) for r in cfg["radius"])
@@ -92,7 +92,7 @@ def test_command_line_strings_are_coerced():
     cfg = _with("hurst", "[0.5, 0.8]")
     cfg["forces"]["sphere"]["from"] = "1e-5"
     cfg["radius"] = ["0.5", "inf"]
-    out = study.resolve_config(cfg, schema=SCHEMA)
+    out = config.resolve_config(cfg, schema=SCHEMA)
     assert out["hurst"] == [0.5, 0.8] and out["forces"]["sphere"]["from"] == 1e-5
     assert math.isinf(out["radius"][1])
 
@@ -128,7 +128,7 @@ def test_paper_preset_plans_50_indent_jobs_per_combination(tmp_path):
     proc = _snakemake(["-n", "--configfile", str(ROOT / "presets/paper.yaml")], tmp_path)
     assert proc.returncode == 0, proc.stderr
     out = proc.stdout + proc.stderr
-    cfg = study.resolve_config(study.load_config(ROOT / "presets/paper.yaml"), schema=SCHEMA)
+    cfg = config.resolve_config(config.load_config(ROOT / "presets/paper.yaml"), schema=SCHEMA)
     assert cfg["grid"]["n"] == 513 and cfg["hurst"] == [0.7] and 0.5 in cfg["radius"]
     assert cfg["h_rms"] == [9e-3] and len(cfg["seeds"]) == 50
     assert cfg["forces"]["sphere"]["from"] <= 1e-7 and cfg["forces"]["sphere"]["to"] >= 1e-2

@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 import xarray as xr
 
-from roughcontact import analysis, cli, study, theory
+from roughcontact import analysis, cli, config, study, theory
 
 ROOT = Path(__file__).resolve().parents[1]
 TINY = ROOT / "presets/tiny.yaml"
@@ -34,7 +34,7 @@ def run(tmp_path_factory):
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     rep = _snakemake(["--configfile", str(TINY), "--report", "results/report.html"], work)
     assert rep.returncode == 0, rep.stderr[-3000:]
-    cfg = study.resolve_config(study.load_config(TINY))
+    cfg = config.resolve_config(config.load_config(TINY))
     return work, cfg
 
 
@@ -200,7 +200,7 @@ def test_failing_jobs_through_snakemake_keep_going(tmp_path):
                        "--cores", "2", "--keep-going"], tmp_path)
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0
-    cfg = study.resolve_config(study.load_config(TINY))
+    cfg = config.resolve_config(config.load_config(TINY))
     n_runs = len(study.runs(cfg))
     assert out.count("did not converge") >= n_runs
     assert "H = 0.8, R = inf (flat, periodic), h_rms = 0.02, seed = 1, n = 65" in out

@@ -12,7 +12,7 @@ import argparse
 import math
 import sys
 
-from . import study
+from . import config, study
 
 # config keys as they appear in error messages -> the command-line flag
 _FLAGS = {
@@ -63,7 +63,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def _schema_or_none(start):
     try:
-        return study.find_schema(start)
+        return config.find_schema(start)
     except FileNotFoundError:
         return None
 
@@ -71,7 +71,7 @@ def _schema_or_none(start):
 def settings_from_args(args) -> dict:
     """Resolved job settings for ``roughcontact indent`` (raises ConfigError)."""
     kind = "sphere" if math.isfinite(args.radius) else "flat"
-    base = study.load_config(args.config) if args.config else {}
+    base = config.load_config(args.config) if args.config else {}
     grid = dict(base.get("grid", {}))
     grid.setdefault("n", 257)
     grid.setdefault("length", 1.0)
@@ -97,10 +97,10 @@ def settings_from_args(args) -> dict:
     }
     schema = _schema_or_none(args.config)
     if schema is None:  # installed without the workflow: the core checks its own arguments
-        resolved = study._coerce(cfg)
+        resolved = config._coerce(cfg)
         resolved["seeds"] = [int(args.seed)]
     else:
-        resolved = study.resolve_config(cfg, schema=schema)
+        resolved = config.resolve_config(cfg, schema=schema)
     return study.job_settings(resolved, args.hurst, args.radius, args.h_rms, args.seed)
 
 
@@ -114,9 +114,9 @@ def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     if args.command == "check-config":
         try:
-            cfg = study.resolve_config(study.load_config(args.config),
-                                       schema=args.schema or study.find_schema(args.config))
-        except (study.ConfigError, FileNotFoundError) as err:
+            cfg = config.resolve_config(config.load_config(args.config),
+                                       schema=args.schema or config.find_schema(args.config))
+        except (config.ConfigError, FileNotFoundError) as err:
             print(f"{args.config}: invalid configuration: {err}", file=sys.stderr)
             return 2
         runs = study.runs(cfg)
@@ -125,7 +125,7 @@ def main(argv=None) -> int:
         return 0
     try:
         settings = settings_from_args(args)
-    except study.ConfigError as err:
+    except config.ConfigError as err:
         print(f"roughcontact indent: invalid argument: {_flagged(str(err))}", file=sys.stderr)
         return 2
     try:

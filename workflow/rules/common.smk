@@ -11,13 +11,13 @@ sys.path.insert(0, SRC)
 # (set, not required: the envvars directive does not apply)
 os.environ.update(PYTHONPATH=os.pathsep.join(p for p in (SRC, os.environ.get("PYTHONPATH")) if p))
 
-from roughcontact import study  # noqa: E402  (numpy only)
+from roughcontact import config as rc_config, study  # noqa: E402  (numpy only)
 
 SCHEMA = str(Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
 try:
     # one line naming the key and what is allowed, before any job starts
-    C = study.resolve_config(config, schema=SCHEMA)
-except study.ConfigError as err:
+    C = rc_config.resolve_config(config, schema=SCHEMA)
+except rc_config.ConfigError as err:
     raise SystemExit(f"Invalid configuration: {err}")
 validate(C, SCHEMA)  # the same schema through Snakemake (passes once resolve_config did)
 config.clear()
