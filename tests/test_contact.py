@@ -313,6 +313,34 @@ def test_load_path_matches_independent_solves(rough):
     assert [s.force for s in states] == pytest.approx([1e-5, 1e-4, 1e-3], rel=1e-12), "forces"
 
 
+@pytest.mark.parametrize("n", [64, 65])
+def test_iter_load_path_equals_load_path(n):
+    """The generator yields, state by state, exactly what load_path returns (same solves,
+    same warm starts: equal to the last bit), and reports progress the same way."""
+    z = surfaces.rough_sphere(n, radius=0.5, hurst=0.7, h_rms=9e-3, length=1.0, seed=5)
+    forces = np.geomspace(1e-5, 1e-3, 4)
+    calls = []
+    listed = contact.load_path(z, forces, length=1.0, e_star=E_STAR,
+                               progress=lambda i, total, s: calls.append((i, total, s.force)))
+    generated = contact.iter_load_path(z, forces, length=1.0, e_star=E_STAR)
+    count = 0
+    for a, b in zip(listed, generated, strict=True):
+        count += 1
+        assert a.depth == b.depth, f"depth differs at F = {a.force:g}"
+        assert a.iterations == b.iterations, f"iterations differ at F = {a.force:g}"
+        assert np.array_equal(a.pressure, b.pressure), f"pressure differs at F = {a.force:g}"
+    assert count == len(forces), "the generator yielded the wrong number of states"
+    assert [c[:2] for c in calls] == [(i + 1, len(forces)) for i in range(len(forces))], \
+        "progress calls"
+
+
+def test_iter_load_path_checks_arguments_eagerly():
+    """Bad arguments raise when the generator is made, not at the first next()."""
+    z = surfaces.paraboloid(16, radius=0.5)
+    with pytest.raises(ValueError, match="forces"):
+        contact.iter_load_path(z, [1e-4, -1.0], length=1.0, e_star=E_STAR)
+
+
 def test_stiffness_increases_along_load_path(rough):
     z, _ = rough
     states = contact.load_path(z, np.geomspace(1e-6, 1e-3, 6), length=1.0, e_star=E_STAR)

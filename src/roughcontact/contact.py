@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Iterator
 
 import numpy as np
 from scipy.sparse.linalg import LinearOperator, cg
@@ -53,6 +54,7 @@ __all__ = [
     "DomainTooSmallError",
     "solve",
     "load_path",
+    "iter_load_path",
     "stiffness",
     "displacement",
 ]
@@ -424,35 +426,60 @@ def solve(heights, *, force: float, length: float, e_star: float, periodic: bool
                   edge_contact)
 
 
-def load_path(heights, forces, *, length: float, e_star: float, periodic: bool = False,
-              tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, edge_contact: bool = False,
-              progress=None) -> list[ContactState]:
-    """Solve at each of ``forces`` in order, each solve warm-started from the previous one.
+def iter_load_path(heights, forces, *, length: float, e_star: float, periodic: bool = False,
+                   tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, edge_contact: bool = False,
+                   progress=None) -> Iterator[ContactState]:
+    """Solve at each of ``forces`` in order, yielding each state as soon as it is solved.
 
-    Same parameters and result per force as :func:`solve`. Non-periodic solves
-    also inherit a depth bound: ``d(F)`` is concave with ``d(0) = 0`` (the
-    contact set grows with the load, so ``dF/dd`` does not decrease), hence
-    ``d(F) ≤ d(F₀)·max(1, F/F₀)``.
+    Same parameters and result per force as :func:`solve`. Each solve is
+    warm-started from the previous state only, so a caller that drops each
+    state after processing it keeps at most two pressure arrays alive.
+    Non-periodic solves also inherit a depth bound: ``d(F)`` is concave with
+    ``d(0) = 0`` (the contact set grows with the load, so ``dF/dd`` does not
+    decrease), hence ``d(F) ≤ d(F₀)·max(1, F/F₀)`` with ``F₀`` the previous force.
 
-    ``progress``, if given, is called as ``progress(i, len(forces), state)``
-    after each solve.
+    The arguments are checked when this function is called, not at the first
+    ``next``. ``progress``, if given, is called as ``progress(i, len(forces),
+    state)`` after each solve, before the state is yielded.
+
+    Yields
+    ------
+    ContactState
+        One per force, in the order of ``forces``.
     """
     heights = _check_heights(heights)
     _check_solver_args(length, e_star, tol, maxiter)
     forces = [float(f) for f in np.atleast_1d(np.asarray(forces, dtype=float))]
     for f in forces:
         check_finite_positive("forces", f)
-    states: list[ContactState] = []
+    return _iter_states(heights, forces, length, e_star, periodic, tol, maxiter, edge_contact,
+                        progress)
+
+
+def _iter_states(heights, forces, length, e_star, periodic, tol, maxiter, edge_contact, progress):
+    previous = None
     for i, force in enumerate(forces):
-        previous = states[-1] if states else None
         initial = None if previous is None else previous.pressure
         bound = None if previous is None else previous.depth * max(1.0, force / previous.force)
         state = _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, bound,
                        edge_contact)
-        states.append(state)
         if progress is not None:
             progress(i + 1, len(forces), state)
-    return states
+        previous = state
+        yield state
+
+
+def load_path(heights, forces, *, length: float, e_star: float, periodic: bool = False,
+              tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, edge_contact: bool = False,
+              progress=None) -> list[ContactState]:
+    """All states of :func:`iter_load_path` as a list (same parameters and states).
+
+    ``progress``, if given, is called as ``progress(i, len(forces), state)``
+    after each solve.
+    """
+    return list(iter_load_path(heights, forces, length=length, e_star=e_star, periodic=periodic,
+                               tol=tol, maxiter=maxiter, edge_contact=edge_contact,
+                               progress=progress))
 
 
 def stiffness(state: ContactState, *, method: str = "punch", tol: float | None = None,
