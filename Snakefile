@@ -25,13 +25,15 @@ localrules:
     merge,
     fit_zeta,
     crossover,
+    claims,
     figures,
 
 
 rule all:
+    default_target: True
     input:
         rules.merge.output,
         rules.fit_zeta.output,
         rules.crossover.output,
+        rules.claims.output,
         rules.figures.output,
-    default_target: True

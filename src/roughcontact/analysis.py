@@ -1,4 +1,4 @@
-"""Merge, ensemble statistics, the ζ(H) fit and the crossover check.
+"""Merge, ensemble statistics and the ζ(H) fit (the verdicts are in :mod:`.verdicts`).
 
 Imports xarray and pandas (the ``pipeline`` extra); ``import roughcontact``
 does not import this module.
@@ -7,16 +7,19 @@ All forces in the tables are normalised, F/(E* L²); stiffnesses k/(E* L).
 """
 from __future__ import annotations
 
+import logging
 import math
 import os
-from pathlib import Path
 
 import numpy as np
 
 from . import provenance, study, theory
 
-__all__ = ["MergeError", "read_run", "merge_runs", "ensemble", "fit_zeta", "crossover",
-           "write_netcdf", "write_csv"]
+__all__ = ["MergeError", "read_run", "merge_runs", "ensemble", "fit_zeta", "write_groups", "read_groups",
+           "write_netcdf", "write_csv", "run_merge", "run_fit_zeta"]
+
+
+log = logging.getLogger(__name__)
 
 
 class MergeError(RuntimeError):
@@ -79,12 +82,36 @@ def read_run(path, expected: dict | None = None):
 
 
 # --------------------------------------------------------------------------
-# merge and ensemble
+# merge and ensemble: one group per surface kind
 # --------------------------------------------------------------------------
-def merge_runs(cfg: dict, paths=None):
-    """Merge all run files of the resolved config *cfg* into one Dataset with
-    dims (hurst, radius, h_rms, seed, force).  Forces that a surface kind does
-    not use (spheres and flat surfaces have different grids) are NaN."""
+#: NetCDF types of the run variables in the merged file (counts stay integers)
+_DTYPES = {"depth": "f8", "stiffness": "f8", "contact_area": "f8", "contact_cells": "i8",
+           "iterations": "i8", "converged": "i1"}
+_AXIS_ATTRS = {
+    "hurst": {"long_name": "Hurst exponent H", "units": "1"},
+    "radius": {"long_name": "sphere radius R", "units": "length"},
+    "h_rms": {"long_name": "rms roughness height", "units": "length"},
+    "seed": {"long_name": "random seed of the surface", "units": "1"},
+}
+
+
+def _force_coords(cfg: dict, kind: str) -> dict:
+    L, E = cfg["grid"]["length"], cfg["e_star"]
+    force = study.force_grid(cfg["forces"][kind]) * E * L**2
+    return {
+        "force": ("force", force, {"long_name": "normal force F", "units": "e_star * length**2"}),
+        "force_normalized": ("force", force / (E * L**2), {"long_name": "F/(E* L^2)", "units": "1"}),
+    }
+
+
+def merge_runs(cfg: dict, paths=None) -> dict:
+    """Merge all run files of the resolved config *cfg*, one Dataset per surface kind.
+
+    Returns ``{"sphere": ds, "flat": ds}`` (the kinds the sweep has): the sphere
+    Dataset has dims (hurst, radius, h_rms, seed, force), the flat one (hurst,
+    h_rms, seed, force) (:data:`study.AXES`); each kind has its own force grid,
+    so no variable is padded, and counts are integers.
+    """
     import xarray as xr
 
     table = study.runs(cfg)
@@ -92,117 +119,114 @@ def merge_runs(cfg: dict, paths=None):
         paths = [study.run_path(r["hurst"], r["radius"], r["h_rms"], r["seed"]) for r in table]
     if len(paths) != len(table):
         raise MergeError(f"merge got {len(paths)} run files for {len(table)} runs of the config")
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    kinds = sorted({r["kind"] for r in table})
-    force = np.unique(np.concatenate([study.force_grid(cfg["forces"][k]) * E * L**2 for k in kinds]))
-    coords = {"hurst": cfg["hurst"], "radius": cfg["radius"], "h_rms": cfg["h_rms"], "seed": cfg["seeds"]}
-    shape = tuple(len(v) for v in coords.values()) + (len(force),)
-    data = {name: np.full(shape, np.nan) for name in study.RUN_VARIABLES}
-    attrs_of = {}
-    commits = set()
-    for row, path in zip(table, paths):
-        expected = study.job_settings(cfg, row["hurst"], row["radius"], row["h_rms"], row["seed"])
-        ds = read_run(path, expected)
-        idx = (cfg["hurst"].index(row["hurst"]), cfg["radius"].index(row["radius"]),
-               cfg["h_rms"].index(row["h_rms"]), cfg["seeds"].index(row["seed"]))
-        pos = np.searchsorted(force, ds["force"].values)
-        for name in study.RUN_VARIABLES:
-            data[name][idx + (pos,)] = ds[name].values.astype(float)
-            attrs_of.setdefault(name, dict(ds[name].attrs))
-        commits.add(ds.attrs.get("git_commit", "unknown"))
-    dims = ("hurst", "radius", "h_rms", "seed", "force")
-    variables = {}
-    for name in study.RUN_VARIABLES:
-        attrs = {k: v for k, v in attrs_of.get(name, {}).items() if k != "coordinates"}
-        if name in ("contact_cells", "iterations", "converged"):
-            attrs["note"] = "stored as float: NaN where this surface kind has no load at this force"
-        variables[name] = (dims, data[name], attrs)
-    ds = xr.Dataset(
-        variables,
-        coords={
-            **coords,
-            "force": ("force", force, {"long_name": "normal force F", "units": "e_star * length**2"}),
-            "force_normalized": ("force", force / (E * L**2), {"long_name": "F/(E* L^2)", "units": "1"}),
-        },
-    )
-    ds["hurst"].attrs.update(long_name="Hurst exponent H", units="1")
-    ds["radius"].attrs.update(long_name="sphere radius R (inf: nominally flat, periodic)", units="length")
-    ds["h_rms"].attrs.update(long_name="rms roughness height", units="length")
-    ds["seed"].attrs.update(long_name="random seed of the surface")
-    ds.attrs.update(provenance.provenance_attrs(
-        config=cfg, title="roughcontact parameter study: all runs",
-        grid_n=cfg["grid"]["n"], grid_length=L, e_star=E, solver_tol=cfg["solver"]["tol"],
-        stiffness_method=cfg["solver"]["stiffness"], seeds=cfg["seeds"],
-        run_git_commits=sorted(commits),
-    ))
-    return ds
+    groups = {}
+    for kind in ("sphere", "flat"):
+        rows = [(row, path) for row, path in zip(table, paths) if row["kind"] == kind]
+        if not rows:
+            continue
+        axes = study.AXES[kind]
+        coords = {axis: sorted({row[axis] for row, _ in rows}) for axis in axes}
+        coords["seed"] = list(cfg["seeds"])
+        count = cfg["forces"][kind]["count"]
+        shape = tuple(len(v) for v in coords.values()) + (count,)
+        data = {name: np.zeros(shape, dtype=_DTYPES[name]) for name in study.RUN_VARIABLES}
+        attrs_of, commits = {}, set()
+        for row, path in rows:
+            expected = study.job_settings(cfg, row["hurst"], row["radius"], row["h_rms"], row["seed"])
+            ds = read_run(path, expected)
+            idx = tuple(coords[axis].index(row[axis]) for axis in (*axes, "seed"))
+            for name in study.RUN_VARIABLES:
+                data[name][idx] = ds[name].values
+                attrs_of.setdefault(name, {k: v for k, v in ds[name].attrs.items() if k != "coordinates"})
+            commits.add(ds.attrs.get("git_commit", "unknown"))
+        dims = (*axes, "seed", "force")
+        ds = xr.Dataset(
+            {name: (dims, data[name], attrs_of[name]) for name in study.RUN_VARIABLES},
+            coords={**{axis: (axis, coords[axis], _AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
+                    **_force_coords(cfg, kind)},
+            attrs={"surface_kind": kind, "half_space": "periodic" if kind == "flat" else "free (non-periodic)",
+                   "run_git_commits": provenance.canonical_json(sorted(commits))},
+        )
+        groups[kind] = ds
+    return groups
 
 
 def ensemble(ds):
     """Mean, standard deviation and standard error of k over seeds (and means
-    of depth, contact area and contact cells)."""
+    of depth, contact area and contact cells) of one kind's Dataset."""
+    k = ds["stiffness"]
+    n_seeds = ds.sizes["seed"]
+    std = k.std("seed", ddof=1) if n_seeds > 1 else k.isel(seed=0) * np.nan
+    per_load = {
+        "k_mean": (k.mean("seed"), {"long_name": "ensemble mean stiffness", "units": "e_star * length"}),
+        "k_std": (std, {"long_name": "standard deviation of k over seeds (ddof=1)", "units": "e_star * length"}),
+        "k_sem": (std / math.sqrt(n_seeds), {"long_name": "standard error of the mean k", "units": "e_star * length"}),
+        "depth_mean": (ds["depth"].mean("seed"), {"long_name": "mean indentation depth", "units": "length"}),
+        "contact_area_mean": (ds["contact_area"].mean("seed"), {"long_name": "mean contact area", "units": "length**2"}),
+        "contact_cells_mean": (ds["contact_cells"].mean("seed"), {"long_name": "mean contact cells", "units": "1"}),
+    }
     import xarray as xr
 
-    k = ds["stiffness"]
-    count = k.notnull().sum("seed")
-    mean = k.mean("seed")
-    std = k.std("seed", ddof=1) if ds.sizes["seed"] > 1 else xr.full_like(mean, np.nan)
-    sem = std / np.sqrt(count.where(count > 0))
-    out = xr.Dataset(
-        {
-            "k_mean": (mean.dims, mean.values, {"long_name": "ensemble mean stiffness", "units": "e_star * length"}),
-            "k_std": (std.dims, std.values, {"long_name": "standard deviation of k over seeds (ddof=1)", "units": "e_star * length"}),
-            "k_sem": (sem.dims, sem.values, {"long_name": "standard error of the mean k", "units": "e_star * length"}),
-            "n_seeds": (count.dims, count.values.astype("int32"), {"long_name": "number of seeds"}),
-            "depth_mean": (mean.dims, ds["depth"].mean("seed").values, {"units": "length"}),
-            "contact_area_mean": (mean.dims, ds["contact_area"].mean("seed").values, {"units": "length**2"}),
-            "contact_cells_mean": (mean.dims, ds["contact_cells"].mean("seed").values, {"units": "1"}),
-        },
-        coords={c: ds[c] for c in ("hurst", "radius", "h_rms", "force", "force_normalized")},
-    )
-    out.attrs.update({k: v for k, v in ds.attrs.items()})
-    out.attrs["title"] = "roughcontact parameter study: ensemble statistics over seeds"
-    return out
+    return xr.Dataset({name: value.assign_attrs(attrs) for name, (value, attrs) in per_load.items()},
+                      attrs={**ds.attrs, "n_seeds": n_seeds})
+
+
+def write_groups(path, groups: dict, attrs: dict) -> None:
+    """Write ``{kind: Dataset}`` as the groups of one NetCDF4 file (atomic);
+    *attrs* become the root group's attributes (provenance)."""
+    import xarray as xr
+
+    tree = xr.DataTree.from_dict({"/": xr.Dataset(attrs=attrs), **groups})
+    with provenance.atomic_path(path) as tmp:
+        tree.to_netcdf(tmp, engine="netcdf4")
+
+
+def read_groups(path) -> dict:
+    """``{kind: Dataset}`` of a file written by :func:`write_groups`, loaded in memory."""
+    import xarray as xr
+
+    with xr.open_datatree(path, engine="netcdf4") as tree:
+        return {name: node.to_dataset().load() for name, node in tree.children.items()}
 
 
 # --------------------------------------------------------------------------
 # ζ(H)
 # --------------------------------------------------------------------------
-def _zeta_points(ds, cfg, hurst):
+def _zeta_points(groups, cfg, hurst):
     """Per seed: arrays x = ln(F_r/(E h L)), y = ln(k/(E L)) inside the fit window,
     and the source label.  F_r is F for flat runs and F minus the Hertz force
     at the same k (eq. 16) for spheres."""
     L, E = cfg["grid"]["length"], cfg["e_star"]
     zc = cfg["fit"]["zeta"]
-    flat = [r for r in cfg["radius"] if not math.isfinite(r)]
-    if flat:
-        radii, source = flat, "flat"
+    if "flat" in groups:
+        ds, source = groups["flat"], "flat"
+        radii = [math.inf]
     else:
-        radii = [r for r in cfg["radius"] if math.isfinite(r)]
+        ds = groups["sphere"]
+        radii = ds["radius"].values.tolist()
         source = ("sphere small-force branch (no flat runs): eq. 16 minus its Hertz term; "
                   "no free exponent (the window is too narrow)")
     points = []
     for seed in cfg["seeds"]:
         xs, ys, fs = [], [], []
         for radius in radii:
-            for h in cfg["h_rms"]:
-                sub = ds.sel(hurst=hurst, radius=radius, h_rms=h, seed=seed)
+            for h in ds["h_rms"].values.tolist():
+                sub = ds.sel(hurst=hurst, h_rms=h, seed=seed)
+                if math.isfinite(radius):
+                    sub = sub.sel(radius=radius)
                 F = sub["force"].values
                 k = sub["stiffness"].values
-                cells = sub["contact_cells"].values
-                ok = np.isfinite(k) & (cells >= zc["min_cells"])
+                ok = sub["contact_cells"].values >= zc["min_cells"]
                 if math.isfinite(radius):
                     f_tr = theory.crossover_force(radius, hurst, h, L, E, theory.zeta_estimate(hurst))
                     ok &= F <= zc.get("sphere_max_force_ratio", 0.3) * f_tr
-                    hertz = E * (k / E) ** 3 / (6 * radius)
-                    Fr = F - hertz
+                    Fr = F - E * (k / E) ** 3 / (6 * radius)
                     ok &= Fr > 0.1 * F
                 else:
                     ok &= sub["contact_area"].values / L**2 <= zc["max_area_fraction"]
                     Fr = F
-                with np.errstate(invalid="ignore", divide="ignore"):
-                    xs.append(np.log(Fr[ok] / (E * h * L)))
-                    ys.append(np.log(k[ok] / (E * L)))
+                xs.append(np.log(Fr[ok] / (E * h * L)))
+                ys.append(np.log(k[ok] / (E * L)))
                 fs.append(F[ok] / (E * L**2))
         points.append((np.concatenate(xs), np.concatenate(ys), np.concatenate(fs)))
     return points, source
@@ -218,7 +242,7 @@ def _zeta_stats(points, hurst):
     return math.exp(ln_zeta), slope
 
 
-def fit_zeta(ds, cfg):
+def fit_zeta(groups, cfg):
     """ζ(H) from eq. 11 (exponent fixed to 1/(H+1)) and the free exponent, with
     bootstrap-over-seeds confidence intervals.  Returns (DataFrame, Dataset).
 
@@ -235,7 +259,7 @@ def fit_zeta(ds, cfg):
     level = float(zc.get("confidence", 0.95))
     rows = []
     for hurst in cfg["hurst"]:
-        points, source = _zeta_points(ds, cfg, hurst)
+        points, source = _zeta_points(groups, cfg, hurst)
         zeta, slope = _zeta_stats(points, hurst)
         flat = source == "flat"
         rng = np.random.default_rng(20130702)  # fixed: identical numbers on every run
@@ -279,139 +303,24 @@ def fit_zeta(ds, cfg):
 
 
 # --------------------------------------------------------------------------
-# crossover
-# --------------------------------------------------------------------------
-def _loglog_slope(F, k, half: int = 1):
-    """Local slope d ln k / d ln F: the slope of a least-squares line through
-    the 2*half+1 neighbouring loads (``fit.slopes.window``; NaN near the ends).
-    half = 1 is the central difference; a wider window trades range for less
-    seed noise."""
-    x, y = np.log(F), np.log(k)
-    s = np.full_like(x, np.nan)
-    for i in range(half, x.size - half):
-        xs, ys = x[i - half:i + half + 1], y[i - half:i + half + 1]
-        xm = xs - xs.mean()
-        s[i] = float(np.dot(xm, ys - ys.mean()) / np.dot(xm, xm))
-    return s
-
-
-def _fit_slope(F, k, mask):
-    if mask.sum() < 2:
-        return math.nan
-    return float(np.polyfit(np.log(F[mask]), np.log(k[mask]), 1)[0])
-
-
-def crossover(ens, zeta_df, cfg):
-    """Predicted (eq. 17) and measured crossover per (H, R, h_rms), R finite.
-
-    The measured force is where the local slope d ln k/d ln F of the ensemble
-    mean (:func:`_loglog_slope`, resolved loads preferred) crosses 2/(H+4); on the eq. 16 curve that happens at F = 2 F_tr, so
-    ``Ftr_measured`` is half that force (``F_slope`` is kept as read off).
-    """
-    import pandas as pd
-
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    min_cells = cfg["fit"]["zeta"]["min_cells"]
-    low, high = cfg["fit"]["slopes"]["low_max_ratio"], cfg["fit"]["slopes"]["high_min_ratio"]
-    zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"]))
-    rows = []
-    for hurst, radius, h in study.combinations(cfg):
-        if not math.isfinite(radius):
-            continue
-        notes = []
-        z_est = float(theory.zeta_estimate(hurst))
-        z_fit = float(zeta_of.get(hurst, math.nan))
-        if not math.isfinite(z_fit):
-            notes.append("no fitted zeta: 1.7/(H+1) used")
-            z_fit_used = z_est
-        else:
-            z_fit_used = z_fit
-        f_fit = theory.crossover_force(radius, hurst, h, L, E, z_fit_used) / (E * L**2)
-        f_est = theory.crossover_force(radius, hurst, h, L, E, z_est) / (E * L**2)
-        sub = ens.sel(hurst=hurst, radius=radius, h_rms=h)
-        keep = np.isfinite(sub["k_mean"].values)
-        F = sub["force"].values[keep] / (E * L**2)
-        k = sub["k_mean"].values[keep] / (E * L)
-        cells = sub["contact_cells_mean"].values[keep]
-        target = 2.0 / (hurst + 4.0)
-        s = _loglog_slope(F, k, half=(int(cfg["fit"]["slopes"].get("window", 3)) - 1) // 2)
-        d = s - target
-        idx = [i for i in range(len(F) - 1) if np.isfinite(d[i]) and np.isfinite(d[i + 1])
-               and d[i] > 0 >= d[i + 1]]
-        resolved = cells >= min_cells
-        idx_resolved = [i for i in idx if resolved[i]]
-        idx = idx_resolved or idx
-        if idx:
-            # several downward crossings (noise): take the one nearest the prediction 2 F_tr
-            i = min(idx, key=lambda j: abs(np.log(F[j]) - np.log(2 * f_fit)))
-            t = d[i] / (d[i] - d[i + 1])
-            f_slope = float(np.exp(np.log(F[i]) + t * (np.log(F[i + 1]) - np.log(F[i]))))
-            if len(idx) > 1:
-                notes.append(f"{len(idx)} slope crossings, the one nearest 2 F_tr taken")
-        else:
-            f_slope = math.nan
-            notes.append("local slope never crosses 2/(H+4) inside the load range")
-        lo_mask = (F <= low * f_fit) & resolved
-        hi_mask = F >= high * f_fit
-        if lo_mask.sum() < 2:
-            notes.append(f"fewer than 2 loads below {low} F_tr with >= {min_cells} cells")
-        if hi_mask.sum() < 2:
-            notes.append(f"fewer than 2 loads above {high} F_tr")
-        k16 = theory.stiffness_from_force(F[resolved] * E * L**2, radius, hurst, h, L, E, z_fit_used) / (E * L)
-        dev = np.abs(np.log10(k[resolved] / k16)) if resolved.any() else np.array([np.nan])
-        f_meas = f_slope / 2
-        rows.append({
-            "hurst": hurst, "radius": radius, "h_rms": h,
-            "zeta_fit": z_fit, "zeta_estimate": z_est,
-            "Ftr_pred_fit": f_fit, "Ftr_pred_estimate": f_est,
-            "slope_target": target, "F_slope": f_slope, "Ftr_measured": f_meas,
-            "ratio_fit": f_meas / f_fit, "ratio_estimate": f_meas / f_est,
-            "slope_low": _fit_slope(F, k, lo_mask), "slope_low_theory": 1 / (hurst + 1),
-            "slope_high": _fit_slope(F, k, hi_mask), "slope_high_theory": 1 / 3,
-            "max_abs_log10_k_over_eq16": float(np.max(dev)),
-            "rms_log10_k_over_eq16": float(np.sqrt(np.mean(dev**2))),
-            "n_loads": int(len(F)), "n_loads_resolved": int(resolved.sum()),
-            "note": "; ".join(notes),
-        })
-    columns = ["hurst", "radius", "h_rms", "zeta_fit", "zeta_estimate", "Ftr_pred_fit", "Ftr_pred_estimate",
-               "slope_target", "F_slope", "Ftr_measured", "ratio_fit", "ratio_estimate", "slope_low",
-               "slope_low_theory", "slope_high", "slope_high_theory", "max_abs_log10_k_over_eq16",
-               "rms_log10_k_over_eq16", "n_loads", "n_loads_resolved", "note"]
-    return pd.DataFrame(rows, columns=columns)
-
-
-# --------------------------------------------------------------------------
 # entry points used by workflow/scripts
 # --------------------------------------------------------------------------
-def run_merge(cfg, run_files, out_stiffness, out_ensemble, log=None):
-    ds = merge_runs(cfg, list(run_files))
-    write_netcdf(ds, out_stiffness)
-    write_netcdf(ensemble(ds), out_ensemble)
-    _log(log, f"merged {len(run_files)} runs into {out_stiffness} and {out_ensemble}")
+def run_merge(cfg, run_files, out_stiffness, out_ensemble):
+    """``merge`` rule: run files -> stiffness.nc and ensemble.nc (one group per kind)."""
+    groups = merge_runs(cfg, list(run_files))
+    attrs = provenance.provenance_attrs(
+        config=cfg, title="roughcontact parameter study: all runs", layout="one group per surface kind (sphere, flat)",
+        grid_n=cfg["grid"]["n"], grid_length=cfg["grid"]["length"], e_star=cfg["e_star"],
+        solver_tol=cfg["solver"]["tol"], stiffness_method=cfg["solver"]["stiffness"], seeds=cfg["seeds"])
+    write_groups(out_stiffness, groups, attrs)
+    attrs["title"] = "roughcontact parameter study: ensemble statistics over seeds"
+    write_groups(out_ensemble, {kind: ensemble(ds) for kind, ds in groups.items()}, attrs)
+    log.info("merged %d runs (%s) into %s and %s", len(run_files), ", ".join(groups), out_stiffness, out_ensemble)
 
 
-def run_fit_zeta(cfg, stiffness_nc, out_csv, out_nc, log=None):
-    import xarray as xr
-
-    with xr.open_dataset(stiffness_nc, engine="netcdf4") as ds:
-        df, zds = fit_zeta(ds.load(), cfg)
+def run_fit_zeta(cfg, stiffness_nc, out_csv, out_nc):
+    """``fit_zeta`` rule: stiffness.nc -> zeta.csv and zeta.nc (eq. 11)."""
+    df, zds = fit_zeta(read_groups(stiffness_nc), cfg)
     write_csv(df, out_csv)
     write_netcdf(zds, out_nc)
-    _log(log, df.to_string())
-
-
-def run_crossover(cfg, ensemble_nc, zeta_csv, out_csv, log=None):
-    import pandas as pd
-    import xarray as xr
-
-    with xr.open_dataset(ensemble_nc, engine="netcdf4") as ens:
-        df = crossover(ens.load(), pd.read_csv(zeta_csv), cfg)
-    write_csv(df, out_csv)
-    _log(log, df.to_string())
-
-
-def _log(log, text):
-    if log:
-        Path(log).parent.mkdir(parents=True, exist_ok=True)
-        with open(log, "a") as fh:
-            fh.write(text + "\n")
+    log.info("zeta(H):\n%s", df.to_string())

@@ -6,10 +6,13 @@ and pandas are imported there).
 """
 from __future__ import annotations
 
+import logging
 import math
 from pathlib import Path
 
 from . import study
+
+log = logging.getLogger(__name__)
 
 FIG_DIR = "results/figures"
 CAPTIONS = "../report"  # relative to workflow/rules/
@@ -53,7 +56,7 @@ def _pick(values, preferred):
     return preferred if preferred in values else values[len(values) // 2]
 
 
-def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, outputs=None, log=None):
+def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs=None):
     """Draw every figure of :func:`figure_specs` (to *outputs*, same order, if given)."""
     import matplotlib
 
@@ -61,18 +64,16 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
     import matplotlib.pyplot as plt
     import numpy as np
     import pandas as pd
-    import xarray as xr
 
-    from . import provenance, surfaces, theory
+    from . import analysis, provenance, surfaces, theory
 
     specs = figure_specs(cfg)
     paths = list(outputs) if outputs is not None else [s["path"] for s in specs]
     L, E, n = cfg["grid"]["length"], cfg["e_star"], cfg["grid"]["n"]
     zeta_df = pd.read_csv(zeta_csv)
-    cross = pd.read_csv(crossover_csv) if crossover_csv else pd.DataFrame()
+    cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"]))
-    with xr.open_dataset(ensemble_nc, engine="netcdf4") as ens:
-        ens = ens.load()
+    ens = analysis.read_groups(ensemble_nc).get("sphere")
     min_cells = cfg["fit"]["zeta"]["min_cells"]
     H0 = _pick(cfg["hurst"], 0.7)
     h0 = _pick(cfg["h_rms"], 9e-3)
@@ -119,16 +120,15 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
         elif key[0] == "fig3":
             _, hurst, radius, h = key
             sub = ens.sel(hurst=hurst, radius=radius, h_rms=h)
-            ok = np.isfinite(sub["k_mean"].values)
-            F = sub["force"].values[ok] / (E * L**2)
-            k = sub["k_mean"].values[ok] / (E * L)
-            err = np.nan_to_num(sub["k_sem"].values[ok] / (E * L))
-            cells = sub["contact_cells_mean"].values[ok]
+            F = sub["force"].values / (E * L**2)
+            k = sub["k_mean"].values / (E * L)
+            err = np.nan_to_num(sub["k_sem"].values / (E * L))
+            cells = sub["contact_cells_mean"].values
             res = cells >= min_cells
             zf = zeta_used(hurst)
             fig, ax = plt.subplots(figsize=(6, 4.6))
             ax.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
-                        label=f"BEM mean of {int(sub['n_seeds'].max())} seeds")
+                        label=f"BEM mean of {ens.attrs['n_seeds']} seeds")
             if (~res).any():
                 ax.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
                             label=f"< {min_cells} contact cells (unresolved)")
@@ -145,11 +145,14 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
             row = cross[(np.isclose(cross["hurst"], hurst)) & (np.isclose(cross["radius"], radius))
                         & (np.isclose(cross["h_rms"], h))] if len(cross) else cross
             if len(row):
-                fp = float(row["Ftr_pred_fit"].iloc[0])
-                fm = float(row["Ftr_measured"].iloc[0])
+                r = row.iloc[0]
+                fp = float(r["Ftr_pred_fit"]) if math.isfinite(r["Ftr_pred_fit"]) else float(r["Ftr_pred_estimate"])
                 ax.axvline(fp, color="0.4", ls="-.", lw=1, label=f"F_tr predicted (eq. 17) = {fp:.2g}")
-                if math.isfinite(fm):
-                    ax.axvline(fm, color="C3", ls=":", lw=1.2, label=f"F_tr measured = {fm:.2g}")
+                if math.isfinite(r["Ftr_ci_low"]):
+                    ax.axvspan(r["Ftr_ci_low"], r["Ftr_ci_high"], color="C3", alpha=0.15, lw=0,
+                               label=f"F_tr measured = {r['Ftr_measured']:.2g} "
+                                     f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
+                    ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
             ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
                    title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n}")
             ax.legend(fontsize=7, loc="lower right")
@@ -162,7 +165,7 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
             zs = q3d * np.abs(r) ** H0
             fig, axes = plt.subplots(1, 3, figsize=(10, 3.2))
             for ax, zz, title in zip(axes, (zp, zs, zp + zs),
-                                     ("(a) z_p = r²/(2R)", f"(b) z_s = Q3D |r|^H (eq. 6, 14)", "(c) z_c = z_p + z_s (eq. 15)")):
+                                     ("(a) z_p = r²/(2R)", "(b) z_s = Q3D |r|^H (eq. 6, 14)", "(c) z_c = z_p + z_s (eq. 15)")):
                 ax.plot(r, zz)
                 ax.set(title=title, xlabel="r")
             axes[0].set_ylabel("z")
@@ -193,7 +196,7 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
                         ftr = theory.crossover_force(radius, hurst, h, L, E, zf)
                         ktr = theory.hertz_stiffness(ftr, radius, E)
                         sub = ens.sel(hurst=hurst, radius=radius, h_rms=h)
-                        ok = np.isfinite(sub["k_mean"].values) & (sub["contact_cells_mean"].values >= min_cells)
+                        ok = sub["contact_cells_mean"].values >= min_cells
                         ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3,
                                 color=f"C{j}", alpha=0.7)
             ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
@@ -201,6 +204,4 @@ def make_figures(cfg, stiffness_nc, ensemble_nc, zeta_csv, crossover_csv, output
             ax.legend(fontsize=7)
             fig.tight_layout()
             save(fig, path)
-    if log:
-        Path(log).parent.mkdir(parents=True, exist_ok=True)
-        Path(log).write_text("\n".join(paths) + "\n")
+    log.info("wrote %s", ", ".join(paths))

@@ -15,8 +15,8 @@ file atomically.
 """
 from __future__ import annotations
 
+import logging
 import math
-import sys
 import time
 
 import numpy as np
@@ -35,12 +35,20 @@ __all__ = [
     "force_grid",
     "run_indent",
     "RUN_VARIABLES",
+    "AXES",
+    "kind_of",
 ]
 
 #: variables of every run file (dimension ``force``)
 RUN_VARIABLES = ("depth", "stiffness", "contact_area", "contact_cells", "iterations", "converged")
 
 RUN_DIR = "results/runs"
+
+logger = logging.getLogger(__name__)
+
+#: sweep axes of the runs of each surface kind, in the order of the merged
+#: file's dimensions (then ``seed`` and ``force``); a flat surface has no radius
+AXES = {"sphere": ("hurst", "radius", "h_rms"), "flat": ("hurst", "h_rms")}
 
 
 class IndentError(RuntimeError):
@@ -61,6 +69,11 @@ def parse_value(text: str) -> float:
     return float(text)
 
 
+def kind_of(radius) -> str:
+    """``"sphere"`` for a finite radius (free half-space), ``"flat"`` for ``inf`` (periodic)."""
+    return "sphere" if math.isfinite(radius) else "flat"
+
+
 def combinations(cfg: dict):
     """(hurst, radius, h_rms) triples in sweep order."""
     return [(h, r, s) for h in cfg["hurst"] for r in cfg["radius"] for s in cfg["h_rms"]]
@@ -69,7 +82,7 @@ def combinations(cfg: dict):
 def runs(cfg: dict):
     """One dict per run: hurst, radius, h_rms, seed, kind."""
     return [
-        {"hurst": h, "radius": r, "h_rms": s, "seed": seed, "kind": "sphere" if math.isfinite(r) else "flat"}
+        {"hurst": h, "radius": r, "h_rms": s, "seed": seed, "kind": kind_of(r)}
         for (h, r, s) in combinations(cfg)
         for seed in cfg["seeds"]
     ]
@@ -99,7 +112,7 @@ def job_settings(cfg: dict, hurst, radius, h_rms, seed) -> dict:
     """Everything one run depends on (and nothing else, so that adding a seed
     or an H value does not invalidate finished runs)."""
     hurst, radius, h_rms, seed = float(hurst), float(radius), float(h_rms), int(seed)
-    kind = "sphere" if math.isfinite(radius) else "flat"
+    kind = kind_of(radius)
     rng = cfg["forces"][kind]
     return {
         "hurst": hurst,
@@ -148,45 +161,6 @@ def describe_run(s: dict) -> str:
 # --------------------------------------------------------------------------
 # one indentation
 # --------------------------------------------------------------------------
-class _Reporter:
-    """Writes progress lines to a log file and, optionally, a bar to stderr."""
-
-    def __init__(self, log=None, bar: bool = False, total: int = 0):
-        self.fh = open(log, "a") if log else None
-        self.bar = bar
-        self.total = total
-        self.t0 = time.perf_counter()
-
-    def line(self, text: str, show: bool = True):
-        stamp = f"[{time.perf_counter() - self.t0:8.2f} s] {text}"
-        if self.fh:
-            self.fh.write(stamp + "\n")
-            self.fh.flush()
-        if self.bar and show:
-            sys.stderr.write("\r\033[K" if sys.stderr.isatty() else "")
-            sys.stderr.write(stamp + "\n")
-
-    def step(self, i: int, text: str):
-        if self.fh:
-            self.fh.write(f"[{time.perf_counter() - self.t0:8.2f} s] {text}\n")
-            self.fh.flush()
-        if self.bar:
-            width = 30
-            done = int(width * i / max(self.total, 1))
-            msg = f"[{'#' * done}{'.' * (width - done)}] {text}"
-            if sys.stderr.isatty():
-                sys.stderr.write("\r\033[K" + msg[:150])
-                if i == self.total:
-                    sys.stderr.write("\n")
-            else:
-                sys.stderr.write(msg + "\n")
-            sys.stderr.flush()
-
-    def close(self):
-        if self.fh:
-            self.fh.close()
-
-
 def make_surface(s: dict) -> np.ndarray:
     from . import surfaces
 
@@ -196,82 +170,89 @@ def make_surface(s: dict) -> np.ndarray:
                                  length=s["length"], seed=s["seed"])
 
 
-def compute_run(s: dict, reporter: _Reporter | None = None) -> dict:
+def compute_run(s: dict, progress=None) -> dict:
     """Solve the warm-started load path of one run; return arrays over force.
+
+    Each state is reduced to its numbers (depth, stiffness, contact cells)
+    as soon as it is solved, so only two states are alive at a time.
+    *progress*, if given, is called as ``progress(i, total, text)`` after each
+    load. Progress lines go to the ``roughcontact.study`` logger.
 
     Raises :class:`IndentError` (naming the run and what to change) when a
     solve does not converge or the contact reaches the free-space grid edge.
     """
     from . import contact
 
-    rep = reporter or _Reporter()
     L, E, n = s["length"], s["e_star"], s["n"]
     forces = force_grid(s["forces"]) * E * L**2
+    total = len(forces)
     z = make_surface(s)
     cell = (L / n) ** 2
-    out = {name: np.zeros(len(forces)) for name in ("depth", "stiffness", "contact_area")}
-    out.update({name: np.zeros(len(forces), dtype=np.int64) for name in ("contact_cells", "iterations", "converged")})
+    out = {name: np.zeros(total) for name in ("depth", "stiffness", "contact_area")}
+    out.update({name: np.zeros(total, dtype=np.int64) for name in ("contact_cells", "iterations", "converged")})
     out["force"] = forces
-    rep.line(f"indent {describe_run(s)}: {len(forces)} loads F/(E*L^2) = {s['forces']['from']:g} ... "
-             f"{s['forces']['to']:g}, tol = {s['tol']:g}, stiffness = {s['stiffness']}")
-    domain_error = getattr(contact, "DomainTooSmallError", ())
-    done = [0]
-    clock = [time.perf_counter()]
-
-    def progress(i, total, state):
-        done[0] = i
-        now = time.perf_counter()
-        rep.step(i, f"load step {i}/{total}: F/(E*L^2) = {state.force / (E * L**2):.3e}, "
-                    f"iterations = {state.iterations}, contact cells = {int(np.count_nonzero(state.contact))}, "
-                    f"{now - clock[0]:.2f} s")
-        clock[0] = now
-
+    logger.info("indent %s: %d loads F/(E*L^2) = %g ... %g, tol = %g, stiffness = %s", describe_run(s), total,
+             s["forces"]["from"], s["forces"]["to"], s["tol"], s["stiffness"])
     extra = {"maxiter": int(s["maxiter"])} if s.get("maxiter") else {}
+    path = contact.iter_load_path(z, forces, length=L, e_star=E, periodic=s["periodic"], tol=s["tol"], **extra)
+    i = 0
+    clock = time.perf_counter()
     try:
-        states = contact.load_path(z, forces, length=L, e_star=E, periodic=s["periodic"], tol=s["tol"],
-                                   progress=progress, **extra)
-    except domain_error as exc:
-        fnorm = forces[done[0]] / (E * L**2)
+        for i, state in enumerate(path):
+            _record(s, out, i, state, cell)
+            now = time.perf_counter()
+            text = (f"load step {i + 1}/{total}: F/(E*L^2) = {forces[i] / (E * L**2):.3e}, "
+                    f"iterations = {state.iterations}, contact cells = {out['contact_cells'][i]}, "
+                    f"k/(E*L) = {out['stiffness'][i] / (E * L):.4e}, {now - clock:.2f} s")
+            clock = now
+            logger.info(text)
+            if progress is not None:
+                progress(i + 1, total, text)
+    except contact.DomainTooSmallError as exc:
+        fnorm = forces[i] / (E * L**2)
         raise IndentError(
             f"indent {describe_run(s)}: the contact reached the edge of the free-space grid at load step "
-            f"{done[0] + 1}/{len(forces)} (F/(E*L^2) = {fnorm:.3g}); lower forces.sphere.to below {fnorm:.3g} "
+            f"{i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}); lower forces.sphere.to below {fnorm:.3g} "
             f"or use more cells (grid.n) on a larger grid.length"
         ) from exc
-    for i, state in enumerate(states):
-        fnorm = forces[i] / (E * L**2)
-        t0 = time.perf_counter()
-        if not state.converged:
-            raise IndentError(
-                f"indent {describe_run(s)}: the contact solver did not converge at load step {i + 1}/{len(forces)} "
-                f"(F/(E*L^2) = {fnorm:.3g}, {state.iterations} iterations, tol = {s['tol']:g}); raise solver.maxiter, "
-                f"loosen solver.tol, use more cells (grid.n) or a smaller load (forces.{s['kind']}.to)"
-            )
-        try:
-            if s["stiffness"] == "difference":
-                k = contact.stiffness(state, method="difference", rel_step=s["rel_step"])
-            else:
-                k = contact.stiffness(state)
-        except (RuntimeError, ValueError) as exc:
-            raise IndentError(
-                f"indent {describe_run(s)}: the stiffness ({s['stiffness']}) failed at load step {i + 1}/{len(forces)} "
-                f"(F/(E*L^2) = {fnorm:.3g}): {exc}; try solver.stiffness = "
-                f"{'punch' if s['stiffness'] == 'difference' else 'difference'} or more cells (grid.n)"
-            ) from exc
-        cells = int(np.count_nonzero(state.contact))
-        out["depth"][i] = state.depth
-        out["stiffness"][i] = k
-        out["contact_cells"][i] = cells
-        out["contact_area"][i] = cells * cell
-        out["iterations"][i] = state.iterations
-        out["converged"][i] = int(bool(state.converged))
-        rep.line(f"stiffness {i + 1}/{len(forces)}: F/(E*L^2) = {fnorm:.3e}, k/(E*L) = {k / (E * L):.4e}, "
-                 f"{time.perf_counter() - t0:.2f} s", show=False)
-        if not (np.isfinite(k) and k > 0):
-            raise IndentError(
-                f"indent {describe_run(s)}: non-positive stiffness k = {k!r} at load step {i + 1}/{len(forces)} "
-                f"(F/(E*L^2) = {fnorm:.3g}, {cells} contact cells); raise forces.{s['kind']}.from or grid.n"
-            )
     return out
+
+
+def _record(s: dict, out: dict, i: int, state, cell: float) -> None:
+    """Check one solved state and store its numbers at load *i* of *out*."""
+    from . import contact
+
+    total = len(out["force"])
+    fnorm = state.force / (s["e_star"] * s["length"] ** 2)
+    if not state.converged:
+        raise IndentError(
+            f"indent {describe_run(s)}: the contact solver did not converge at load step {i + 1}/{total} "
+            f"(F/(E*L^2) = {fnorm:.3g}, {state.iterations} iterations, tol = {s['tol']:g}); raise solver.maxiter, "
+            f"loosen solver.tol, use more cells (grid.n) or a smaller load (forces.{s['kind']}.to)"
+        )
+    try:
+        if s["stiffness"] == "difference":
+            k = contact.stiffness(state, method="difference", rel_step=s["rel_step"])
+        else:
+            k = contact.stiffness(state)
+    except (RuntimeError, ValueError) as exc:
+        raise IndentError(
+            f"indent {describe_run(s)}: the stiffness ({s['stiffness']}) failed at load step {i + 1}/{total} "
+            f"(F/(E*L^2) = {fnorm:.3g}): {exc}; try solver.stiffness = "
+            f"{'punch' if s['stiffness'] == 'difference' else 'difference'} or more cells (grid.n)"
+        ) from exc
+    cells = int(np.count_nonzero(state.contact))
+    if not (np.isfinite(k) and k > 0):
+        raise IndentError(
+            f"indent {describe_run(s)}: non-positive stiffness k = {k!r} at load step {i + 1}/{total} "
+            f"(F/(E*L^2) = {fnorm:.3g}, {cells} contact cells); raise forces.{s['kind']}.from or grid.n"
+        )
+    out["depth"][i] = state.depth
+    out["stiffness"][i] = k
+    out["contact_cells"][i] = cells
+    out["contact_area"][i] = cells * cell
+    out["iterations"][i] = state.iterations
+    out["converged"][i] = int(bool(state.converged))
 
 
 def write_run(path, s: dict, out: dict) -> None:
@@ -330,18 +311,22 @@ def write_run(path, s: dict, out: dict) -> None:
 def run_indent(settings: dict, output, log=None, progress: bool = False) -> dict:
     """Compute one run and write it to *output* (NetCDF, atomic).
 
-    *log*: a file that receives one progress line per load step.
-    *progress*: also draw a progress bar on stderr (the command line).
-    Errors are written to the log before they propagate.
+    *log*: a file that receives the ``roughcontact`` log lines (one per
+    load step). *progress*: also draw a ``tqdm`` bar on stderr (the command
+    line). Errors are logged before they propagate.
     """
-    rep = _Reporter(log, bar=progress, total=int(settings["forces"]["count"]))
-    try:
-        out = compute_run(settings, rep)
+    from tqdm.auto import tqdm
+
+    from .logs import log_to
+
+    with log_to(log), tqdm(total=int(settings["forces"]["count"]), disable=not progress, unit="load",
+                                desc=f"H={settings['hurst']:g} R={settings['radius']:g} seed={settings['seed']}",
+                                dynamic_ncols=True) as bar:
+        def advance(i, total, text):
+            bar.set_postfix_str(text.split(": ", 1)[1][:60], refresh=False)
+            bar.update(1)
+
+        out = compute_run(settings, progress=advance)
         write_run(output, settings, out)
-        rep.line(f"wrote {output}")
-        return out
-    except Exception as exc:
-        rep.line(f"FAILED: {exc}")
-        raise
-    finally:
-        rep.close()
+        logger.info("wrote %s", output)
+    return out

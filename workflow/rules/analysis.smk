@@ -1,16 +1,16 @@
-# Merge the runs, fit zeta(H) (eq. 11), check the crossover (eqs. 16, 17).
+# Merge the runs, fit zeta(H) (eq. 11), measure the crossover (eqs. 16, 17), the claims table.
 rule merge:
     input:
         runs=study.run_paths(config),
     output:
         stiffness="results/stiffness.nc",
         ensemble="results/ensemble.nc",
-    params:
-        cfg=config,  # resolved config: a change of any setting reruns the analysis
     log:
         "logs/merge.log",
     conda:
         "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,  # resolved config: a change of any setting reruns the analysis
     script:
         "../scripts/merge.py"
 
@@ -26,19 +26,19 @@ rule fit_zeta:
             labels={"table": "zeta(H)"},
         ),
         nc="results/zeta.nc",
-    params:
-        cfg=config,
     log:
         "logs/fit_zeta.log",
     conda:
         "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
     script:
         "../scripts/fit_zeta.py"
 
 
 rule crossover:
     input:
-        ensemble=rules.merge.output.ensemble,
+        stiffness=rules.merge.output.stiffness,
         zeta=rules.fit_zeta.output.csv,
     output:
         csv=report(
@@ -47,11 +47,34 @@ rule crossover:
             category="Tables",
             labels={"table": "crossover"},
         ),
-    params:
-        cfg=config,
+        nc="results/crossover.nc",
     log:
         "logs/crossover.log",
     conda:
         "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
     script:
         "../scripts/crossover.py"
+
+
+rule claims:
+    input:
+        crossover=rules.crossover.output.csv,
+        replicates=rules.crossover.output.nc,
+        zeta=rules.fit_zeta.output.csv,
+    output:
+        csv=report(
+            "results/claims.csv",
+            caption="../report/claims_table.rst",
+            category="1. Claims of the paper",
+            labels={"table": "claims"},
+        ),
+    log:
+        "logs/claims.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/claims.py"

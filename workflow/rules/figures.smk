@@ -1,25 +1,31 @@
 # The paper's Figs. 1-4, zeta(H) and a collapse plot, all in the report.
-from roughcontact import figures as _figures  # noqa: E402  (matplotlib only inside make_figures)
+from roughcontact import (
+    figures as _figures,
+)  # noqa: E402  (matplotlib only inside make_figures)
 
 FIGURE_SPECS = _figures.figure_specs(config)
 
 
 rule figures:
     input:
-        stiffness=rules.merge.output.stiffness,
         ensemble=rules.merge.output.ensemble,
         zeta=rules.fit_zeta.output.csv,
         crossover=rules.crossover.output.csv,
     output:
         *[
-            report(s["path"], caption=s["caption"], category=s["category"], labels=s["labels"])
+            report(
+                s["path"],
+                caption=s["caption"],
+                category=s["category"],
+                labels=s["labels"],
+            )
             for s in FIGURE_SPECS
         ],
-    params:
-        cfg=config,
     log:
         "logs/figures.log",
     conda:
         "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
     script:
         "../scripts/figures.py"

@@ -6,17 +6,17 @@ rule indent:
         study.LOG_PATTERN,
     benchmark:
         study.BENCHMARK_PATTERN
-    params:
-        settings=lambda wc: study.settings_from_wildcards(config, wc),
     wildcard_constraints:
         hurst=r"[0-9.e+-]+",
         radius=r"[0-9.e+-]+|inf",
         h_rms=r"[0-9.e+-]+",
         seed=r"\d+",
+    conda:
+        "../../envs/roughcontact.yaml"
     threads: 1
     resources:
         **study.indent_resources(config),  # mem_mb, runtime (minutes): for cluster executors
-    conda:
-        "../../envs/roughcontact.yaml"
+    params:
+        settings=lambda wc: study.settings_from_wildcards(config, wc),
     script:
         "../scripts/indent.py"

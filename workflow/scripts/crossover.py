@@ -1,6 +1,8 @@
-"""Snakemake `crossover` job: ensemble + zeta -> results/crossover.csv (eqs. 16, 17)."""
-from roughcontact.analysis import run_crossover
+"""Snakemake `crossover` job: stiffness + zeta -> results/crossover.csv (eq. 16 fitted, F_tr with a 95 % interval)."""
+from roughcontact.logs import log_to
+from roughcontact.verdicts import run_crossover
 
 snakemake = globals()["snakemake"]
-run_crossover(snakemake.params.cfg, snakemake.input.ensemble, snakemake.input.zeta, snakemake.output.csv,
-              log=snakemake.log[0])
+with log_to(snakemake.log[0]):
+    run_crossover(snakemake.params.cfg, snakemake.input.stiffness, snakemake.input.zeta, snakemake.output.csv,
+                  snakemake.output.nc)

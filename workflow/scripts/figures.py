@@ -1,6 +1,8 @@
 """Snakemake `figures` job: Figs. 1-4, zeta(H), collapse plot (PNG, in the report)."""
 from roughcontact.figures import make_figures
+from roughcontact.logs import log_to
 
 snakemake = globals()["snakemake"]
-make_figures(snakemake.params.cfg, snakemake.input.stiffness, snakemake.input.ensemble, snakemake.input.zeta,
-             snakemake.input.crossover, outputs=list(snakemake.output), log=snakemake.log[0])
+with log_to(snakemake.log[0]):
+    make_figures(snakemake.params.cfg, snakemake.input.ensemble, snakemake.input.zeta, snakemake.input.crossover,
+                 outputs=list(snakemake.output))

@@ -1,6 +1,7 @@
 """Snakemake `fit_zeta` job: results/stiffness.nc -> results/zeta.csv, results/zeta.nc (eq. 11)."""
 from roughcontact.analysis import run_fit_zeta
+from roughcontact.logs import log_to
 
 snakemake = globals()["snakemake"]
-run_fit_zeta(snakemake.params.cfg, snakemake.input.stiffness, snakemake.output.csv, snakemake.output.nc,
-             log=snakemake.log[0])
+with log_to(snakemake.log[0]):
+    run_fit_zeta(snakemake.params.cfg, snakemake.input.stiffness, snakemake.output.csv, snakemake.output.nc)

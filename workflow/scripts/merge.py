@@ -1,6 +1,7 @@
-"""Snakemake `merge` job: all run files -> results/stiffness.nc, results/ensemble.nc."""
+"""Snakemake `merge` job: all run files -> results/stiffness.nc, results/ensemble.nc (a group per surface kind)."""
 from roughcontact.analysis import run_merge
+from roughcontact.logs import log_to
 
 snakemake = globals()["snakemake"]
-run_merge(snakemake.params.cfg, snakemake.input.runs, snakemake.output.stiffness, snakemake.output.ensemble,
-          log=snakemake.log[0])
+with log_to(snakemake.log[0]):
+    run_merge(snakemake.params.cfg, snakemake.input.runs, snakemake.output.stiffness, snakemake.output.ensemble)

@@ -1,0 +1,8 @@
+"""Snakemake `claims` job: crossover and zeta tables -> results/claims.csv (the paper's claims, verdicts)."""
+from roughcontact.claims import run_claims
+from roughcontact.logs import log_to
+
+snakemake = globals()["snakemake"]
+with log_to(snakemake.log[0]):
+    run_claims(snakemake.params.cfg, snakemake.input.crossover, snakemake.input.replicates, snakemake.input.zeta,
+               snakemake.output.csv)
