@@ -103,3 +103,152 @@ def test_crossover_slope_is_local_slope_of_eq16(hurst):
     k = theory.stiffness_from_force(f, radius, hurst, h, length, e_star, zeta)
     slope = np.diff(np.log(k))[0] / 2e-5
     assert slope == pytest.approx(theory.crossover_slope(hurst), rel=1e-6), "slope at F_tr"
+
+
+# --- smooth bodies of revolution z = (R/m)(r/R)^m --------------------------------------------
+
+EXPONENTS = [0.5, 1.0, 2.0, 3.0, 4.0]
+
+
+def test_body_prefactor():
+    assert theory.body_prefactor(0.37, 2.0) == pytest.approx(1 / (2 * 0.37), rel=1e-15), \
+        "Q(m=2) = 1/(2R)"
+    assert theory.body_prefactor(0.37, 1.0) == 1.0, "Q(m=1) = 1"
+
+
+@pytest.mark.parametrize("force", [1e-6, 1e-3, 2.0])
+def test_body_stiffness_at_two_is_eq9(force):
+    """m = 2: k = E* (6 R F/E*)^(1/3) (eq. 9), to round-off."""
+    radius, e_star = 0.37, 2.5
+    assert theory.body_stiffness(force, radius, e_star, exponent=2.0) == \
+        pytest.approx(e_star * (6 * radius * force / e_star) ** (1 / 3), rel=1e-14), "eq. 9"
+    assert theory.body_stiffness(force, radius, e_star) == \
+        theory.hertz_stiffness(force, radius, e_star), "body_stiffness(m=2) != hertz_stiffness"
+
+
+@pytest.mark.parametrize("exponent", EXPONENTS)
+def test_body_stiffness_is_eq7(exponent):
+    """k = 2 E* ((m+1) F/(2 Q E* m κ(m)))^(1/(m+1)) with Q = R^(1−m)/m (eq. 7, H → m)."""
+    radius, e_star = 0.37, 2.5
+    forces = np.geomspace(1e-8, 1.0, 5)
+    q = radius ** (1 - exponent) / exponent
+    assert np.allclose(theory.body_stiffness(forces, radius, e_star, exponent=exponent),
+                       theory.profile_stiffness(forces, q, exponent, e_star), rtol=1e-12), \
+        f"body stiffness != eq. 7 at m = {exponent}"
+
+
+def test_cone_closed_forms():
+    """Cone z = r (m = 1, κ(1) = π/2, Q = 1): d = π a/2, F = π E* a²/2, k = 2 E* a."""
+    a, e_star = 0.12, 2.5
+    cone = theory.body_indentation(a, 0.8, e_star, exponent=1.0)
+    assert cone.depth == pytest.approx(math.pi * a / 2, rel=1e-14), "cone depth"
+    assert cone.force == pytest.approx(math.pi * e_star * a**2 / 2, rel=1e-14), "cone force"
+    assert cone.stiffness == pytest.approx(2 * e_star * a, rel=1e-15), "cone stiffness"
+
+
+def test_hertz_closed_forms():
+    """m = 2 (κ(2) = 2, Q = 1/(2R)): d = a²/R, F = 4 E* a³/(3R)."""
+    a, radius, e_star = 0.12, 0.5, 2.5
+    sphere = theory.body_indentation(a, radius, e_star)
+    assert sphere.depth == pytest.approx(a**2 / radius, rel=1e-14), "Hertz depth"
+    assert sphere.force == pytest.approx(4 * e_star * a**3 / (3 * radius), rel=1e-14), \
+        "Hertz force"
+
+
+def test_quartic_closed_forms():
+    """m = 4 (κ(4) = 8/3, Q = 1/(4R³)): d = 2a⁴/(3R³), F = 16 E* a⁵/(15 R³)."""
+    a, radius, e_star = 0.12, 0.5, 2.5
+    body = theory.body_indentation(a, radius, e_star, exponent=4.0)
+    assert body.depth == pytest.approx(2 * a**4 / (3 * radius**3), rel=1e-14), "m = 4 depth"
+    assert body.force == pytest.approx(16 * e_star * a**5 / (15 * radius**3), rel=1e-14), \
+        "m = 4 force"
+
+
+@pytest.mark.parametrize("hurst", HURSTS + [4.0])
+def test_profile_indentation_is_eq7_and_dF_dd_is_k(hurst):
+    """Eliminating a gives eq. 7, and dF/dd = k = 2 E* a (central differences in a,
+    step 1e-5 relative: error O(1e-10))."""
+    q3d, e_star = 0.8, 1.7
+    a = np.array([0.05, 0.2]) * np.exp([[-1e-5], [0.0], [1e-5]])
+    ind = theory.profile_indentation(a, q3d, hurst, e_star)
+    assert np.allclose(theory.profile_stiffness(ind.force[1], q3d, hurst, e_star),
+                       ind.stiffness[1], rtol=1e-12), "k(F) is not eq. 7"
+    slope = (ind.force[2] - ind.force[0]) / (ind.depth[2] - ind.depth[0])
+    assert np.allclose(slope, ind.stiffness[1], rtol=1e-8), "dF/dd != 2 E* a"
+
+
+@pytest.mark.parametrize("exponent", EXPONENTS)
+def test_eq16_body_term_is_body_force(exponent):
+    """F(k) − F_rough(k) of the generalised eq. 16 is the body's force at a = k/(2E*)."""
+    radius, hurst, h, length, e_star, zeta = 0.5, 0.7, 9e-3, 1.0, 2.0, 1.1
+    k = np.geomspace(1e-3, 1.0, 5)
+    total = theory.force_from_stiffness(k, radius, hurst, h, length, e_star, zeta,
+                                        exponent=exponent)
+    rough = theory.force_from_stiffness(k, math.inf, hurst, h, length, e_star, zeta)
+    body = theory.body_indentation(k / (2 * e_star), radius, e_star, exponent=exponent).force
+    assert np.allclose(total - rough, body, rtol=1e-10), f"body term at m = {exponent}"
+
+
+def test_eq16_default_is_paper():
+    """Eq. 16 with the defaults: E* [(k/E*)³/(6R) + L h (k/(ζ E* L))^(H+1)]."""
+    radius, hurst, h, length, e_star, zeta = 0.5, 0.7, 9e-3, 1.3, 2.0, 1.1
+    k = np.geomspace(1e-3, 1.0, 5)
+    expected = e_star * ((k / e_star) ** 3 / (6 * radius)
+                         + length * h * (k / (zeta * e_star * length)) ** (hurst + 1))
+    assert np.allclose(theory.force_from_stiffness(k, radius, hurst, h, length, e_star, zeta),
+                       expected, rtol=1e-14), "eq. 16"
+
+
+@pytest.mark.parametrize("exponent", EXPONENTS)
+def test_stiffness_from_force_inverts_generalised_eq16(exponent):
+    radius, hurst, h, length, e_star, zeta = 0.5, 0.7, 9e-3, 1.0, 1.0, 1.0
+    k = np.geomspace(1e-3, 1.0, 7)
+    forces = theory.force_from_stiffness(k, radius, hurst, h, length, e_star, zeta,
+                                         exponent=exponent)
+    assert np.allclose(theory.stiffness_from_force(forces, radius, hurst, h, length, e_star,
+                                                   zeta, exponent=exponent),
+                       k, rtol=1e-12), f"generalised eq. 16 not inverted at m = {exponent}"
+
+
+@pytest.mark.parametrize("hurst", HURSTS)
+def test_crossover_force_at_two_is_eq17(hurst):
+    """F_tr/E* = [ζ^(3H+3) h^(−3) L^(3H) (6R)^(−H−1)]^(1/(H−2)) (eq. 17), to round-off."""
+    radius, h, length, e_star, zeta = 0.37, 9e-3, 1.3, 2.0, 1.1
+    expected = e_star * (zeta ** (3 * hurst + 3) * h**-3 * length ** (3 * hurst)
+                         * (6 * radius) ** (-hurst - 1)) ** (1 / (hurst - 2))
+    assert theory.crossover_force(radius, hurst, h, length, e_star, zeta, exponent=2.0) == \
+        pytest.approx(expected, rel=1e-12), "eq. 17"
+
+
+@pytest.mark.parametrize("exponent, hurst",
+                         [(m, hurst) for m in (1.0, 3.0, 4.0) for hurst in HURSTS if hurst != m])
+def test_generalised_crossover(exponent, hurst):
+    """At F_tr the body's and the roughness asymptotes give the same k, and the
+    generalised eq. 16 there gives 2 F_tr."""
+    radius, h, length, e_star, zeta = 0.5, 9e-3, 1.0, 2.0, 1.1
+    f_tr = theory.crossover_force(radius, hurst, h, length, e_star, zeta, exponent=exponent)
+    k_body = theory.body_stiffness(f_tr, radius, e_star, exponent=exponent)
+    k_rough = theory.fractal_stiffness(f_tr, hurst, h, length, e_star, zeta)
+    assert k_body == pytest.approx(k_rough, rel=1e-10), "asymptotes do not meet at F_tr"
+    assert theory.force_from_stiffness(k_body, radius, hurst, h, length, e_star, zeta,
+                                       exponent=exponent) == pytest.approx(2 * f_tr, rel=1e-10), \
+        "generalised eq. 16 at the crossover"
+
+
+def test_crossover_needs_distinct_exponents():
+    with pytest.raises(ValueError, match="exponent must differ from hurst"):
+        theory.crossover_force(0.5, 1.0, 9e-3, 1.0, 1.0, 1.0, exponent=1.0)
+
+
+@pytest.mark.parametrize("exponent", [1.0, 4.0])
+def test_generalised_crossover_slope(exponent):
+    """d ln k/d ln F of the generalised eq. 16 at F = 2 F_tr is 2/(H+m+2)
+    (central difference, step 1e-5: error O(1e-10))."""
+    radius, hurst, h, length, e_star, zeta = 0.5, 0.7, 9e-3, 1.0, 1.0, 1.0
+    f_tr = theory.crossover_force(radius, hurst, h, length, e_star, zeta, exponent=exponent)
+    f = 2 * f_tr * np.exp([-1e-5, 1e-5])
+    k = theory.stiffness_from_force(f, radius, hurst, h, length, e_star, zeta, exponent=exponent)
+    slope = np.diff(np.log(k))[0] / 2e-5
+    assert slope == pytest.approx(2 / (hurst + exponent + 2), rel=1e-6), "slope at 2 F_tr"
+    assert theory.crossover_slope(hurst, exponent=exponent) == \
+        pytest.approx(2 / (hurst + exponent + 2), rel=1e-15), "crossover_slope"
