@@ -23,6 +23,12 @@ _FLAGS = {
     "'forces.sphere.to'": "--force-to", "'forces.flat.to'": "--force-to",
     "'forces.sphere.count'": "--force-count", "'forces.flat.count'": "--force-count",
 }
+#: number flags -> their config key; each must be finite (--radius may be inf: a flat surface)
+_NUMBER_FLAGS = {
+    "hurst": ("hurst", 0), "radius": ("radius", 0), "h_rms": ("h_rms", 0), "length": ("grid", "length"),
+    "e_star": ("e_star",), "force_from": ("forces", "{kind}", "from"), "force_to": ("forces", "{kind}", "to"),
+    "tol": ("solver", "tol"), "rel_step": ("solver", "rel_step"),
+}
 DEFAULT_FORCES = {"sphere": (1e-7, 1e-2, 21), "flat": (1e-6, 3e-3, 13)}
 _FIT = {"zeta": {"min_cells": 1, "max_area_fraction": 1.0}, "slopes": {"low_max_ratio": 1.0, "high_min_ratio": 1.0}}
 
@@ -68,22 +74,47 @@ def _schema_or_none(start):
         return None
 
 
+def _check_numbers(args, schema) -> None:
+    """Every number flag finite (``--radius`` may be inf), by the rule of the
+    config (:func:`roughcontact.config.finite_error`); raises ConfigError."""
+    loaded = config._load_schema(schema) if schema is not None else None
+    kind = "sphere" if math.isfinite(args.radius) else "flat"
+    for name, path in _NUMBER_FLAGS.items():
+        value = getattr(args, name)
+        if value is None:
+            continue
+        path = [part.format(kind=kind) if isinstance(part, str) else part for part in path]
+        err = config.finite_error(path, value, loaded, allow_inf=name == "radius")
+        if err is not None:
+            raise err
+
+
+def _mapping(value, path):
+    """*value* if it is a mapping, else the ConfigError of --config's key *path*."""
+    if not isinstance(value, dict):
+        raise config.ConfigError(f"config key '{config._key(path)}' = {config._short(value)} is not allowed; "
+                                 "allowed: a mapping")
+    return value
+
+
 def settings_from_args(args) -> dict:
     """Resolved job settings for ``roughcontact indent`` (raises ConfigError)."""
+    schema = _schema_or_none(args.config)
+    _check_numbers(args, schema)
     kind = "sphere" if math.isfinite(args.radius) else "flat"
-    base = config.load_config(args.config) if args.config else {}
-    grid = dict(base.get("grid", {}))
+    base = _mapping(config.load_config(args.config) if args.config else {}, [])
+    grid = dict(_mapping(base.get("grid", {}), ["grid"]))
     grid.setdefault("n", 257)
     grid.setdefault("length", 1.0)
     if args.n is not None:
         grid["n"] = args.n
     if args.length is not None:
         grid["length"] = args.length
-    forces = dict(base.get("forces", {}).get(kind, {}))
+    forces = dict(_mapping(_mapping(base.get("forces", {}), ["forces"]).get(kind, {}), ["forces", kind]))
     for key, value, default in zip(("from", "to", "count"), (args.force_from, args.force_to, args.force_count),
                                    DEFAULT_FORCES[kind]):
         forces[key] = value if value is not None else forces.get(key, default)
-    solver = dict(base.get("solver", {}))
+    solver = dict(_mapping(base.get("solver", {}), ["solver"]))
     solver.setdefault("tol", 1e-8)
     solver.setdefault("stiffness", "punch")
     for key, value in (("tol", args.tol), ("stiffness", args.stiffness), ("rel_step", args.rel_step),
@@ -95,9 +126,12 @@ def settings_from_args(args) -> dict:
         "hurst": [args.hurst], "radius": [args.radius], "h_rms": [args.h_rms], "seeds": [args.seed],
         "forces": {kind: forces}, "solver": solver, "fit": base.get("fit", _FIT),
     }
-    schema = _schema_or_none(args.config)
     if schema is None:  # installed without the workflow: the core checks its own arguments
         resolved = config._coerce(cfg)
+        for path, value in config._leaves(resolved):  # numbers from --config, too
+            err = config.finite_error(path, value, allow_inf=path[0] == "radius")
+            if err is not None:
+                raise err
         resolved["seeds"] = [int(args.seed)]
     else:
         resolved = config.resolve_config(cfg, schema=schema)
@@ -116,8 +150,11 @@ def main(argv=None) -> int:
         try:
             cfg = config.resolve_config(config.load_config(args.config),
                                        schema=args.schema or config.find_schema(args.config))
-        except (config.ConfigError, FileNotFoundError) as err:
-            print(f"{args.config}: invalid configuration: {err}", file=sys.stderr)
+        except config.ConfigError as err:
+            print(config.error_line(err), file=sys.stderr)
+            return 2
+        except FileNotFoundError as err:  # no schema found
+            print(f"roughcontact check-config: {err}", file=sys.stderr)
             return 2
         runs = study.runs(cfg)
         print(f"{args.config}: valid; {len(runs)} indent jobs "
