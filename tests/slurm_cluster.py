@@ -165,7 +165,12 @@ SlurmctldDebug=info
 SlurmdDebug=info
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
-JobAcctGatherType=jobacct_gather/none
+# Memory limits are enforced by polling (no cgroups in a container): every
+# second each step's RSS is summed and a step above its --mem is killed
+# (job state OUT_OF_MEMORY).
+JobAcctGatherType=jobacct_gather/linux
+JobAcctGatherFrequency=task=1
+JobAcctGatherParams=OverMemoryKill
 AccountingStorageType=accounting_storage/none
 JobCompType=jobcomp/none
 MpiDefault=none
@@ -285,6 +290,20 @@ PartitionName={PARTITION} Nodes={NODE_NAME} Default=YES MaxTime=INFINITE State=U
             jid, name, state = line.strip().split("|")
             out[int(jid.split("_")[0])] = (name, state)
         return out
+
+    def job_table(self) -> dict[int, dict[str, str]]:
+        """``{job id: {name, state, comment}}`` of every job slurmctld still remembers
+        (the Snakemake executor plugin puts ``rule_<rule>_wildcards_<...>`` in the comment)."""
+        r = self._run("squeue", "--states=all", "--noheader", "--format=%i|%j|%T|%k", check=True)
+        out = {}
+        for line in r.stdout.splitlines():
+            jid, name, state, comment = line.strip().split("|", 3)
+            out[int(jid.split("_")[0])] = {"name": name, "state": state, "comment": comment}
+        return out
+
+    def scancel(self, job_id: int) -> None:
+        """Cancel one job, as a user (or an administrator) would."""
+        self._run("scancel", str(job_id), check=True)
 
     def wait_job(self, job_id: int, timeout: float = 60) -> str:
         end = time.monotonic() + timeout
