@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from roughcontact import contact, operators, surfaces
+from roughcontact import contact, operators, solver, surfaces
 
 E_STAR = 1.0
 
@@ -230,8 +230,8 @@ def test_flat_cold_solve_enlarges_the_candidates(monkeypatch):
     solution on the whole grid."""
     z = surfaces.self_affine(129, hurst=0.7, h_rms=9e-3, length=1.0, seed=3)
     used = []
-    solve_candidates = contact._solve_candidates
-    monkeypatch.setattr(contact, "_solve_candidates",
+    solve_candidates = solver.solve_candidates
+    monkeypatch.setattr(solver, "solve_candidates",
                         lambda *args: used.append(solve_candidates(*args)) or used[-1])
     state = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True)
     full = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True, windowed=False)
@@ -246,7 +246,7 @@ def test_dense_punch_stiffness_equals_matrix_free(flat_path, rough, monkeypatch,
     """The punch stiffness with a dense influence matrix equals the FFT-based one."""
     states = flat_path[2] if periodic else [rough[1]]
     dense = [contact.stiffness(s) for s in states]
-    monkeypatch.setattr(contact, "DENSE_CELLS", 0)
+    monkeypatch.setattr(solver, "DENSE_CELLS", 0)
     for state, k in zip(states, dense):
         assert k == pytest.approx(contact.stiffness(state), rel=1e-7), \
             f"dense punch stiffness differs ({int(state.contact.sum())} cells)"

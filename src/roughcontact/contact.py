@@ -10,44 +10,38 @@ Conventions (units are the caller's; nothing assumes ``L = 1`` or ``E* = 1``):
   gap ``g = (z − min z) − d + u`` is 0 wherever the pressure is positive and
   ``≥ 0`` elsewhere; pressure ``p ≥ 0`` everywhere.
 * ``force = Σ p Δ²``.
+* With a ``hardness`` ``H`` (penetration-hardness plasticity, module
+  :mod:`roughcontact.plastic`) the pressure is capped at ``H``, cells at the
+  cap may have ``g < 0`` and flow by ``−g``, and the accumulated plastic
+  displacement ``δ ≥ 0`` enters the gap as ``g = (z − min z) + δ − d + u``.
 
 For the periodic half-space the mean displacement is undefined; ``u`` has zero
 mean and ``depth`` is the approach of the indenter to the mean plane of the
 deformed surface, counted from first touch.
 
-Algorithms: force-controlled constrained conjugate gradients of Polonsky &
-Keer, Wear 231, 206 (1999); the exact tangent stiffness as the force of a
-rigid flat punch with the current contact set as footprint (the incremental
-analogy of Barber, Proc. R. Soc. A 459, 53 (2003)), solved by conjugate
-gradients (Hestenes & Stiefel 1952, ``scipy.sparse.linalg.cg``).
-
-Windowing (non-periodic only): a compressive load pushes the surface away
-(``u > 0``), so a cell can only be in contact where ``z − min z ≤ d``. The
-solver bounds ``d`` from above, solves on the bounding box of that region,
-and accepts the result only if every cell outside the box has
-``z − min z > d``, in which case it is the solution on the whole grid;
-otherwise it enlarges the box and solves again.
-
-Candidate cells (periodic): the periodic displacement can be negative but not
-below ``G_min Σp`` (``G_min`` the kernel's minimum), so a contact cell has
-``z − min z ≤ d + |G_min| Σp``. While those cells number at most
-:data:`DENSE_CELLS` (small loads on a nominally flat surface), the solver works
-on them alone with a dense influence matrix, accepts the result when its depth
-is within the bound, and otherwise solves again with the larger bound. The punch
-stiffness on at most :data:`DENSE_CELLS` cells uses the dense matrix too.
+Algorithms (module :mod:`roughcontact.solver`, which also describes the
+windows of non-periodic solves and the candidate cells of periodic ones):
+force-controlled constrained conjugate gradients of Polonsky & Keer, Wear 231,
+206 (1999), with the box ``0 ≤ p ≤ H`` when a hardness is given; the exact
+unloading stiffness as the force of a rigid flat punch with the current
+contact set as footprint (the incremental analogy of Barber, Proc. R. Soc. A
+459, 53 (2003)), solved by conjugate gradients (Hestenes & Stiefel 1952,
+``scipy.sparse.linalg.cg``).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Iterator
 
 import numpy as np
-from scipy.sparse.linalg import LinearOperator, cg
 
 from ._validate import check_finite_positive, check_grid_size
-from .operators import DenseOperator, operator_for
+from .operators import operator_for
+from .plastic import plastic_flow
+from .solver import capped_kernel, equilibrium, polonsky_keer, punch_stiffness
 
 __all__ = [
     "ContactState",
@@ -61,12 +55,6 @@ __all__ = [
 
 #: Default maximum number of conjugate-gradient iterations per solve.
 DEFAULT_MAXITER = 10_000
-#: Incremental displacement updates between two exact (FFT) recomputations.
-_REFRESH = 50
-#: Periodic contacts whose cells that can touch are at most this many, and punch
-#: stiffness solves on at most this many cells, use a dense influence matrix
-#: (2000² doubles = 32 MB; a product costs ≈ 0.4 ms against ≈ 4 ms per FFT at 513²).
-DENSE_CELLS = 2000
 
 
 class DomainTooSmallError(RuntimeError):
@@ -95,9 +83,21 @@ class ContactState:
         Final ``max(max_c |g|, max_(not c) (−g)) / d``: the relative violation
         of complementarity that the stopping test bounds by ``tol``.
     heights, length, e_star, periodic, tol, edge_contact :
-        The problem that was solved (``heights`` is the caller's array, not a copy).
+        The problem that was solved (``heights`` is the caller's array, not a copy,
+        without plastic flattening).
     window : tuple of slice
         Rows and columns of the grid on which the last solve ran.
+    hardness : float or None
+        Penetration hardness ``H`` that capped the pressure (pressure unit, like
+        ``e_star``); ``None`` for an elastic half-space.
+    plastic : numpy.ndarray
+        ``(n, n)`` bool, cells that flowed in this solve: at ``p = H`` with a
+        negative gap before the flow. All ``False`` when ``hardness`` is ``None``.
+    plastic_displacement : numpy.ndarray
+        ``(n, n)`` permanent depression of the half-space (length unit, ``≥ 0``),
+        cumulative over the load history up to and including this state: the
+        indenter acts as if its heights were ``heights + plastic_displacement``.
+        Read-only; all zero (a broadcast view, no memory) when nothing flowed.
     """
 
     force: float
@@ -114,6 +114,16 @@ class ContactState:
     tol: float
     window: tuple[slice, slice]
     edge_contact: bool = False
+    hardness: float | None = None
+    plastic: np.ndarray | None = None
+    plastic_displacement: np.ndarray | None = None
+
+    def __post_init__(self):
+        shape = self.heights.shape
+        if self.plastic is None:
+            object.__setattr__(self, "plastic", np.broadcast_to(False, shape))
+        if self.plastic_displacement is None:
+            object.__setattr__(self, "plastic_displacement", np.broadcast_to(0.0, shape))
 
     @property
     def cell_area(self) -> float:
@@ -126,10 +136,14 @@ class ContactState:
         return float(np.count_nonzero(self.contact)) * self.cell_area
 
     def gap(self) -> np.ndarray:
-        """Gap ``(z − min z) − d + u`` on the whole grid (one full-grid convolution)."""
+        """Gap ``(z − min z) + δ − d + u`` on the whole grid (one full-grid convolution),
+        ``δ`` the plastic displacement (after this state's flow: 0 on the plastic cells)."""
         u = displacement(self.pressure, length=self.length, e_star=self.e_star,
                          periodic=self.periodic)
-        return (self.heights - self.heights.min()) - self.depth + u
+        lift = self.heights - self.heights.min()
+        if self.hardness is not None:
+            lift = lift + self.plastic_displacement
+        return lift - self.depth + u
 
 
 def _check_heights(heights) -> np.ndarray:
@@ -150,211 +164,65 @@ def displacement(pressure, *, length: float, e_star: float, periodic: bool = Fal
     return operator_for(pressure.shape[0], float(length), float(e_star), bool(periodic))(pressure)
 
 
-def _gap_state(gap, pressure, support):
-    """Depth, relative complementarity error and the penetrating free cells of a gap field.
-
-    ``gap`` and ``pressure`` are flat views of the window, ``support`` the flat
-    indices of the contact set ``c = {p > 0}``. The depth ``d`` is the mean gap
-    over ``c``; the error is ``max(max_c |g − d|, max_(not c) (d − g)) / d``;
-    the penetrating free cells are ``{p = 0, g < d}`` (flat indices).
-    """
-    depth = float(gap[support].mean())
-    inner = float(np.abs(gap[support] - depth).max())
-    candidates = np.flatnonzero(gap < depth)
-    below = candidates[pressure[candidates] == 0.0]
-    outer = depth - float(gap[below].min()) if below.size else 0.0
-    return depth, max(inner, outer) / abs(depth), below
-
-
-def _polonsky_keer(lift, operator, total, pressure, tol, maxiter):
-    """Polonsky & Keer (1999) CG on one window; returns (p, depth, iterations, converged, error).
-
-    ``lift`` are the heights above the lowest point, ``total`` the required
-    ``Σ p`` (force/Δ²). Stopping test, with ``g = lift + u(p)`` and ``ḡ`` its
-    mean over the contact set ``c = {p > 0}``:
-    ``max_c |g − ḡ| ≤ tol·ḡ`` and ``min_(not c) (g − ḡ) ≥ −tol·ḡ``.
-
-    The contact set is kept as an index array, so that besides the one
-    convolution an iteration makes only a few passes over the window (the
-    gap, the search for penetrating free cells, the update of ``u``).
-    One convolution instead of P&K's two: the new pressure is
-    ``s (p − τ t + Δp)`` where ``Δp`` (clipped and overlapping cells) is
-    usually a handful of cells, so ``u`` is updated as
-    ``s (u − τ K t + K Δp)`` with ``K Δp`` summed column by column. ``u`` is
-    recomputed by FFT when ``Δp`` is large, every ``_REFRESH`` updates, and
-    before convergence is accepted.
-    """
-    pressure = pressure * (total / pressure.sum())
-    flat_pressure = pressure.reshape(-1)
-    support = np.flatnonzero(flat_pressure)
-    displacement = operator(pressure)
-    exact, since_exact = True, 0
-    direction = np.zeros_like(pressure)
-    flat_direction = direction.reshape(-1)
-    direction_support = support
-    gap = np.empty_like(pressure)
-    flat_gap = gap.reshape(-1)
-    conjugate = False
-    norm_old = 1.0
-    error = math.inf
-    column_limit = operator.column_limit(pressure.shape)
-    for iteration in range(maxiter + 1):
-        np.add(displacement, lift, out=gap)
-        depth, error, below = _gap_state(flat_gap, flat_pressure, support)
-        if error <= tol and not exact:
-            displacement, exact, since_exact = operator(pressure), True, 0
-            np.add(displacement, lift, out=gap)
-            depth, error, below = _gap_state(flat_gap, flat_pressure, support)
-        if error <= tol:
-            return pressure, depth, iteration, True, error
-        if iteration == maxiter:
-            break
-        residual = flat_gap[support] - depth
-        norm = float(residual @ residual)
-        values = residual + (norm / norm_old) * flat_direction[support] if conjugate else residual
-        norm_old = norm
-        flat_direction[direction_support] = 0.0
-        flat_direction[support] = values
-        direction_support = support
-        response = operator(direction)
-        on_contact = response.reshape(-1)[support]
-        curvature = float((on_contact - on_contact.mean()) @ values)
-        step = norm / curvature if curvature > 0 else 1.0 / operator.self_coefficient
-        trial = flat_pressure[support] - step * values
-        clipped = trial <= 0.0
-        flat_pressure[support] = np.where(clipped, 0.0, trial)
-        # cells with zero pressure and a negative gap enter the contact set
-        overlap = np.concatenate([below, support[clipped & (residual < 0.0)]])
-        flat_pressure[overlap] = -step * (flat_gap[overlap] - depth)
-        conjugate = overlap.size == 0
-        # Δp = p − (p_old − τ t): nonzero on the clipped and the entering free cells
-        changed = np.concatenate([support[clipped], below])
-        delta = np.concatenate([flat_pressure[support[clipped]] - trial[clipped],
-                                flat_pressure[below]])
-        support = np.concatenate([support[~clipped], overlap])  # disjoint parts
-        scale = total / flat_pressure[support].sum()
-        flat_pressure[support] *= scale
-        if len(changed) <= column_limit and since_exact < _REFRESH:
-            response *= step
-            displacement -= response
-            operator.add_columns(displacement, delta, changed)
-            displacement *= scale
-            exact, since_exact = False, since_exact + 1
-        else:
-            displacement, exact, since_exact = operator(pressure), True, 0
-    return pressure, depth, maxiter, False, error
-
-
-def _box(mask: np.ndarray, operator) -> tuple[slice, slice]:
-    """Window covering ``mask``, grown to the largest size with the same FFT cost."""
-    n = mask.shape[0]
-    window = []
-    for axis in (1, 0):
-        lines = np.flatnonzero(mask.any(axis=axis))
-        lo, hi = int(lines[0]), int(lines[-1]) + 1
-        size = operator.window_size(hi - lo)
-        lo = max(0, min(lo - (size - (hi - lo)) // 2, n - size))
-        window.append(slice(lo, lo + size))
-    return tuple(window)
-
-
-def _start(previous, lift, depth_bound):
-    """Starting pressure on some cells: ``previous`` (a neighbouring solution on the
-    same cells, or ``None``) where it is positive anywhere, else unit pressure on the
-    cells with ``lift ≤ depth_bound``."""
-    if previous is not None and np.any(previous > 0):
-        return np.maximum(previous, 0.0)
-    return (lift <= depth_bound).astype(float)
-
-
-def _solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound):
-    """Periodic contact solved on the cells that can touch, with a dense influence matrix.
-
-    A periodic displacement satisfies ``u ≥ G_min Σp`` (``G_min < 0`` the most
-    negative kernel value), so a contact cell, where ``lift = d − u``, has
-    ``lift ≤ d + |G_min| Σp``. With ``d ≤ depth_bound`` every contact cell is among
-    the candidates ``lift ≤ depth_bound + |G_min| Σp``, and a solution on them whose
-    depth is ``≤ depth_bound`` leaves a positive gap everywhere else: it is the
-    solution on the whole grid. Restricting the cells that may touch makes the body
-    more compliant, so a larger depth from the candidates bounds the true one and a
-    second pass with it as the bound succeeds. Returns ``None`` (use the FFT
-    solver) when the candidates are more than :data:`DENSE_CELLS`.
-    """
-    n = lift.shape[0]
-    flat_lift = lift.reshape(-1)
-    reach = -operator.min_coefficient * total
-    iterations = 0
-    while True:
-        cells = np.flatnonzero(flat_lift <= depth_bound + reach)
-        if cells.size > DENSE_CELLS:
-            return None
-        dense = DenseOperator(operator.influence_matrix(*np.divmod(cells, n)))
-        start = _start(None if initial is None else initial.reshape(-1)[cells], flat_lift[cells],
-                       depth_bound)
-        p_cells, depth, spent, converged, error = _polonsky_keer(
-            flat_lift[cells], dense, total, start, tol, maxiter - iterations)
-        iterations += spent
-        if depth <= depth_bound or not converged or iterations >= maxiter:
-            break
-        depth_bound, initial = depth, np.zeros(n * n)
-        initial[cells] = p_cells
-    pressure = np.zeros(n * n)
-    pressure[cells] = p_cells
-    return pressure.reshape(n, n), depth, iterations, converged, error
-
-
 def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, depth_bound,
-           edge_contact):
+           edge_contact, hardness=None, prior_plastic=None):
     n = heights.shape[0]
     operator = operator_for(n, float(length), float(e_star), bool(periodic))
     lift = heights - heights.min()
+    if prior_plastic is not None:
+        lift = lift + prior_plastic
     total = force / (length / n) ** 2
-    full = (slice(0, n), slice(0, n))
-    if initial is None or not np.any(initial > 0):
-        initial = None
-    if depth_bound is None:  # cold start: the depth that touches the 64 lowest cells
-        depth_bound = np.quantile(lift, min(1.0, 64.0 / lift.size))
-    if periodic:
-        window = full
-        solution = None
-        if math.isfinite(depth_bound) and depth_bound > 0:
-            solution = _solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound)
-        if solution is None:  # from the neighbouring solution, or uniform pressure
-            start = _start(initial, lift, math.inf)
-            solution = _polonsky_keer(lift, operator, total, start, tol, maxiter)
-        p, depth, iterations, converged, error = solution
-    else:
-        iterations = 0
-        while True:
-            window = _box(lift <= depth_bound, operator)
-            local = lift[window]
-            start = _start(None if initial is None else initial[window], local, depth_bound)
-            p_window, depth, spent, converged, error = _polonsky_keer(
-                local, operator, total, start, tol, maxiter - iterations)
-            iterations += spent
-            outside = np.ones((n, n), dtype=bool)
-            outside[window] = False
-            lowest_outside = lift[outside].min(initial=math.inf)
-            if depth < lowest_outside or not converged or iterations >= maxiter:
-                break
-            # The box solution is an upper bound of the true depth: one more
-            # enlargement (at most 4× the bound) suffices or progresses.
-            depth_bound = min(depth, 4.0 * depth_bound) if depth_bound > 0 else depth
-            initial = np.zeros((n, n))
-            initial[window] = p_window
-        p = np.zeros((n, n))
-        p[window] = p_window
+    p = None
+    iterations = 0
+    # Elastic first, unless the warm start sits at the cap and the load grows: a hardness
+    # above the elastic peak pressure then returns the elastic solution itself, and
+    # unloading (elastic until the cap is reached again) starts from the elastic solution.
+    if (hardness is None or initial is None or not np.any(initial >= hardness)
+            or initial.sum() >= total):
+        p, depth, iterations, converged, error, window = equilibrium(
+            lift, operator, total, initial, depth_bound, tol, maxiter, periodic, polonsky_keer)
+        if hardness is not None and p.max() > hardness:
+            # the capped solution is softer: its depth exceeds the elastic one
+            depth_bound = depth if depth_bound is None else max(depth_bound, depth)
+            initial, p = p, None
+    if p is None:
+        # At most H per cell: at least total/H cells carry the load, and they all have
+        # lift ≤ d (u ≥ 0), so d is at least the bearing-area depth (the total/H-th
+        # lowest lift); a first window or candidate set below it could not carry the load.
+        cells = math.ceil(total / hardness)
+        if cells > lift.size:
+            raise ValueError(f"force {force:g} exceeds hardness × grid area "
+                             f"{hardness * length**2:g}: no state with p ≤ hardness exists")
+        bearing = float(np.partition(lift, cells - 1, axis=None)[cells - 1])
+        depth_bound = bearing if depth_bound is None else max(depth_bound, bearing)
+        kernel = functools.partial(capped_kernel, hardness=float(hardness))
+        p, depth, spent, converged, error, window = equilibrium(
+            lift, operator, total, initial, depth_bound, tol, max(maxiter - iterations, 1),
+            periodic, kernel)
+        iterations += spent
+    if not periodic:
         edge = np.concatenate([p[0], p[-1], p[:, 0], p[:, -1]])
         if not edge_contact and np.any(edge > 0):
             raise DomainTooSmallError(
                 f"the contact reached the edge of the {n}x{n} non-periodic grid at "
                 f"force {force:g}: enlarge the grid (length and n) or lower the load "
                 f"(a finite indenter whose face is the whole grid: edge_contact=True)")
+    flowed, plastic_displacement = None, prior_plastic
+    if hardness is not None:
+        flowed = np.zeros((n, n), dtype=bool)
+        flowed[window], increment = plastic_flow(lift[window], operator(p[window]), p[window],
+                                                 depth, hardness)
+        if flowed.any():
+            plastic_displacement = np.zeros((n, n)) if prior_plastic is None else prior_plastic.copy()
+            plastic_displacement[window] += increment
+            plastic_displacement.flags.writeable = False
     return ContactState(
         force=float(p.sum() * (length / n) ** 2), depth=float(depth), pressure=p,
         contact=p > 0, iterations=int(iterations), converged=bool(converged),
         gap_error=float(error), heights=heights, length=float(length), e_star=float(e_star),
-        periodic=bool(periodic), tol=float(tol), window=window, edge_contact=bool(edge_contact))
+        periodic=bool(periodic), tol=float(tol), window=window, edge_contact=bool(edge_contact),
+        hardness=None if hardness is None else float(hardness), plastic=flowed,
+        plastic_displacement=plastic_displacement)
 
 
 def _check_solver_args(length, e_star, tol, maxiter):
@@ -367,7 +235,8 @@ def _check_solver_args(length, e_star, tol, maxiter):
 
 def solve(heights, *, force: float, length: float, e_star: float, periodic: bool = False,
           tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, initial=None,
-          windowed: bool = True, edge_contact: bool = False) -> ContactState:
+          windowed: bool = True, edge_contact: bool = False, hardness: float | None = None,
+          plastic_displacement=None) -> ContactState:
     """Contact of a rigid indenter of shape ``heights`` pressed by a normal ``force``.
 
     Parameters
@@ -402,6 +271,18 @@ def solve(heights, *, force: float, length: float, e_star: float, periodic: bool
         finite indenter whose face is the whole grid (e.g. a nominally flat
         rough punch of side ``length``). By default such a contact means the
         grid is too small for the body and raises.
+    hardness : float, optional
+        Penetration hardness ``H`` (pressure unit, like ``e_star``): the
+        pressure is capped at ``H`` and cells at the cap flow (module
+        :mod:`roughcontact.plastic`). The stopping test then reads, with ``f``
+        the cells with ``0 < p < H``: ``max_f |g| ≤ tol·d``,
+        ``min_(p=0) g ≥ −tol·d`` and ``max_(p=H) g ≤ tol·d``. The elastic
+        solution is computed first and returned unchanged when its peak
+        pressure is ``≤ H``. ``None`` (default): elastic.
+    plastic_displacement : array_like, optional
+        Permanent depression from an earlier load history (length unit,
+        ``≥ 0``, e.g. ``state.plastic_displacement``), added to ``heights``;
+        ``depth`` stays counted from the first touch of ``heights``.
 
     Returns
     -------
@@ -421,13 +302,29 @@ def solve(heights, *, force: float, length: float, e_star: float, periodic: bool
         if initial.shape != heights.shape:
             raise ValueError(f"initial must have the shape of heights {heights.shape}, "
                              f"got {initial.shape}")
+    hardness, plastic_displacement = _check_plastic_args(heights, hardness, plastic_displacement)
     bound = None if windowed else math.inf
     return _solve(heights, float(force), length, e_star, periodic, tol, maxiter, initial, bound,
-                  edge_contact)
+                  edge_contact, hardness, plastic_displacement)
+
+
+def _check_plastic_args(heights, hardness, plastic_displacement):
+    if hardness is not None:
+        check_finite_positive("hardness", hardness)
+        hardness = float(hardness)
+    if plastic_displacement is not None:
+        plastic_displacement = np.asarray(plastic_displacement, dtype=float)
+        if plastic_displacement.shape != heights.shape:
+            raise ValueError(f"plastic_displacement must have the shape of heights "
+                             f"{heights.shape}, got {plastic_displacement.shape}")
+        if not np.all(np.isfinite(plastic_displacement)) or np.any(plastic_displacement < 0):
+            raise ValueError("plastic_displacement must be finite and >= 0")
+    return hardness, plastic_displacement
 
 
 def iter_load_path(heights, forces, *, length: float, e_star: float, periodic: bool = False,
                    tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, edge_contact: bool = False,
+                   hardness: float | None = None, plastic_displacement=None,
                    progress=None) -> Iterator[ContactState]:
     """Solve at each of ``forces`` in order, yielding each state as soon as it is solved.
 
@@ -437,6 +334,13 @@ def iter_load_path(heights, forces, *, length: float, e_star: float, periodic: b
     Non-periodic solves also inherit a depth bound: ``d(F)`` is concave with
     ``d(0) = 0`` (the contact set grows with the load, so ``dF/dd`` does not
     decrease), hence ``d(F) ≤ d(F₀)·max(1, F/F₀)`` with ``F₀`` the previous force.
+    (With a ``hardness`` the bound only sizes the first window: a window is
+    accepted by its own test, whatever the bound.)
+
+    With a ``hardness`` each solve starts from the plastic displacement of the
+    previous state (the first from ``plastic_displacement``, default none), so
+    the surface stays flattened along the path; a lower force than the
+    previous one unloads elastically until the cap is reached again.
 
     The arguments are checked when this function is called, not at the first
     ``next``. ``progress``, if given, is called as ``progress(i, len(forces),
@@ -452,17 +356,21 @@ def iter_load_path(heights, forces, *, length: float, e_star: float, periodic: b
     forces = [float(f) for f in np.atleast_1d(np.asarray(forces, dtype=float))]
     for f in forces:
         check_finite_positive("forces", f)
+    hardness, plastic_displacement = _check_plastic_args(heights, hardness, plastic_displacement)
     return _iter_states(heights, forces, length, e_star, periodic, tol, maxiter, edge_contact,
-                        progress)
+                        hardness, plastic_displacement, progress)
 
 
-def _iter_states(heights, forces, length, e_star, periodic, tol, maxiter, edge_contact, progress):
+def _iter_states(heights, forces, length, e_star, periodic, tol, maxiter, edge_contact, hardness,
+                 plastic_displacement, progress):
     previous = None
     for i, force in enumerate(forces):
         initial = None if previous is None else previous.pressure
         bound = None if previous is None else previous.depth * max(1.0, force / previous.force)
+        if previous is not None and hardness is not None:
+            plastic_displacement = previous.plastic_displacement
         state = _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, bound,
-                       edge_contact)
+                       edge_contact, hardness, plastic_displacement)
         if progress is not None:
             progress(i + 1, len(forces), state)
         previous = state
@@ -471,6 +379,7 @@ def _iter_states(heights, forces, length, e_star, periodic, tol, maxiter, edge_c
 
 def load_path(heights, forces, *, length: float, e_star: float, periodic: bool = False,
               tol: float = 1e-8, maxiter: int = DEFAULT_MAXITER, edge_contact: bool = False,
+              hardness: float | None = None, plastic_displacement=None,
               progress=None) -> list[ContactState]:
     """All states of :func:`iter_load_path` as a list (same parameters and states).
 
@@ -479,6 +388,7 @@ def load_path(heights, forces, *, length: float, e_star: float, periodic: bool =
     """
     return list(iter_load_path(heights, forces, length=length, e_star=e_star, periodic=periodic,
                                tol=tol, maxiter=maxiter, edge_contact=edge_contact,
+                               hardness=hardness, plastic_displacement=plastic_displacement,
                                progress=progress))
 
 
@@ -489,32 +399,54 @@ def stiffness(state: ContactState, *, method: str = "punch", tol: float | None =
     Parameters
     ----------
     state : ContactState
-    method : {"punch", "difference"}
-        ``"punch"`` (default): the exact tangent stiffness of the discrete
-        problem: the force of a rigid flat punch whose footprint is the contact
-        set, pressed by unit depth, i.e. ``Δ² Σ p`` with ``K_cc p = 1`` on the
-        contact set ``c`` (symmetric positive definite; conjugate gradients,
-        stopped when ``‖K_cc p − 1‖ ≤ tol ‖1‖``). Between changes of the
+    method : {"punch", "difference", "loading"}
+        ``"punch"`` (default): the **unloading** stiffness, exact for the
+        discrete problem: the force of a rigid flat punch whose footprint is
+        the contact set, pressed by unit depth, i.e. ``k = Δ² Σ p`` with
+        ``K_cc p = 1`` on the contact set ``c = {p > 0}`` (symmetric positive
+        definite; conjugate gradients, stopped when
+        ``‖K_cc p − 1‖ ≤ tol ‖1‖``). On unloading every contact cell, plastic
+        ones included, unloads elastically (the flattened surface fits the
+        indenter), so this is what an unloading experiment measures. For an
+        elastic state it is also the loading tangent: between changes of the
         contact set ``F(d)`` is linear with exactly this slope.
         ``"difference"``: the central difference quotient
         ``(F₊ − F₋)/(d₊ − d₋)`` of two extra solves at ``F(1 ± rel_step)``,
-        as in Pohrt & Popov (2013).
+        as in Pohrt & Popov (2013); elastic states only (with a hardness it
+        would average loading and unloading).
+        ``"loading"``: the **loading** tangent along the load history, the
+        forward quotient ``(F₊ − F)/(d₊ − d)`` of one extra solve at
+        ``F₊ = F(1 + rel_step)`` that starts from this state's plastic
+        displacement (so cells keep flowing). Its bias is ``O(rel_step)``:
+        for ``F ∝ d^(3/2)`` (Hertz) it is the tangent at ``F(1 + rel_step/2)``,
+        ``rel_step/6`` above the tangent at ``F``.
     tol : float, optional
-        Tolerance of the punch solve (default: ``state.tol``), keyword-only.
+        Tolerance of the punch solve or of the extra solves (default:
+        ``state.tol``), keyword-only.
     rel_step : float
-        Relative force step of the difference quotient.
+        Relative force step of the difference quotients, keyword-only.
 
     Returns
     -------
     float
-        Stiffness; ``inf`` for a periodic contact covering the whole grid.
+        Stiffness; ``inf`` for a periodic contact covering the whole grid
+        (``"punch"``).
     """
-    if method == "difference":
+    if method in ("difference", "loading"):
         check_finite_positive("rel_step", rel_step)
         if rel_step >= 1:
             raise ValueError(f"rel_step must be < 1, got {rel_step!r}")
         tol = state.tol if tol is None else tol
         check_finite_positive("tol", tol)
+        if method == "loading":
+            prior = None if state.hardness is None else state.plastic_displacement
+            upper = _solve(state.heights, state.force * (1 + rel_step), state.length,
+                           state.e_star, state.periodic, tol, DEFAULT_MAXITER, state.pressure,
+                           state.depth * (1 + rel_step), state.edge_contact, state.hardness, prior)
+            return (upper.force - state.force) / (upper.depth - state.depth)
+        if state.hardness is not None:
+            raise ValueError("method='difference' needs an elastic state; with a hardness use "
+                             "'punch' (unloading) or 'loading'")
         # d(F) is increasing and concave: d(F(1 ± ε)) ≤ d(F)·(1 + ε) bounds both windows.
         upper, lower = (
             _solve(state.heights, state.force * (1 + sign * rel_step), state.length, state.e_star,
@@ -523,28 +455,11 @@ def stiffness(state: ContactState, *, method: str = "punch", tol: float | None =
             for sign in (1, -1))
         return (upper.force - lower.force) / (upper.depth - lower.depth)
     if method != "punch":
-        raise ValueError(f"method must be 'punch' or 'difference', got {method!r}")
+        raise ValueError(f"method must be 'punch', 'difference' or 'loading', got {method!r}")
     tol = state.tol if tol is None else tol
     check_finite_positive("tol", tol)
     n = state.heights.shape[0]
     if state.periodic and np.all(state.contact):
         return math.inf
     operator = operator_for(n, state.length, state.e_star, state.periodic)
-    footprint = state.contact[state.window]
-    count = int(np.count_nonzero(footprint))
-    if count <= DENSE_CELLS:
-        system = operator.influence_matrix(*np.nonzero(footprint))
-    else:
-        field = np.zeros(footprint.shape)
-
-        def matvec(values):
-            field[footprint] = values.ravel()
-            return operator(field)[footprint]
-
-        system = LinearOperator((count, count), matvec=matvec, dtype=float)
-    unit_depth = np.ones(count)
-    start = unit_depth / operator.self_coefficient
-    punch, info = cg(system, unit_depth, x0=start, rtol=tol, atol=0.0, maxiter=10 * count + 100)
-    if info != 0:
-        raise RuntimeError(f"the flat-punch stiffness solve did not converge in {info} iterations")
-    return float(punch.sum() * state.cell_area)
+    return punch_stiffness(operator, state.contact[state.window], tol) * state.cell_area
