@@ -88,7 +88,8 @@ def claims_table(cross, reps, zeta_df, cfg: dict):
                 r[f"{name}_verdict"], sweep=sweep,
                 loads=(f"{int(r[f'n_loads_{window}'])} resolved loads with F {'<=' if window == 'low' else '>='} "
                        f"{ratio:g} F_tr"),
-                note=f"eq. 16 itself gives {r[f'{name}_eq16']:.3f} over the same loads", **where))
+                note=(f"eq. 16 itself gives {r[f'{name}_eq16']:.3f} over the same loads: "
+                      f"{verdict(r[f'{name}_eq16'], r[f'{name}_ci_low'], r[f'{name}_ci_high'])}"), **where))
         if "hertz_coefficient" in r and math.isfinite(r["hertz_coefficient"]):
             rows.append(_claim(
                 "e", "Hertz prefactor A of F = A k^3 + B k^(H+1) equals L/(6R) (eq. 10)", r["hertz_coefficient"],
@@ -106,7 +107,7 @@ def claims_table(cross, reps, zeta_df, cfg: dict):
             note="measured: max over those loads of k/k_Hertz(F)", **where))
     rows += _scaling_claims(cross, reps, cfg)
     rows += _lambda_claims(cross, cfg)
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows).sort_values("claim", kind="stable", ignore_index=True)
 
 
 def _scaling_claims(cross, reps, cfg):
