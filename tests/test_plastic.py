@@ -43,7 +43,7 @@ def sink_in_depth(force, hardness):
     """Depth of the fully plastic sphere with the elastic sink-in of its contact edge.
 
     The uniform pressure H on a disc of radius a = √(F/(πH)) displaces its edge by
-    4Ha/(πE*) (Johnson 1985, eq. 3.39), and the edge is where the sphere meets the
+    4Ha/(πE*) (Johnson, Contact Mechanics, 1985, ch. 3), and the edge is where the sphere meets the
     deformed surface: a²/(2R) = d − 4Ha/(πE*), i.e. d = F/(2πRH) + 4Ha/(πE*).
     """
     a = math.sqrt(force / (math.pi * hardness))

@@ -316,3 +316,6 @@ def crossover_slope(hurst, *, exponent=2.0):
     With ``exponent = m`` the body term is a k^(m+1) and the slope 2/(H+m+2).
     """
     return 2.0 / (np.asarray(hurst, dtype=float) + (exponent + 2.0))
+
+
+from .greenwood_tripp import greenwood_tripp  # noqa: F401  (GT 1967, re-exported)

@@ -1,0 +1,538 @@
+"""Greenwood & Tripp (1967): the elastic contact of a rough sphere.
+
+J. A. Greenwood, J. H. Tripp, "The elastic contact of rough spheres",
+J. Appl. Mech. 34, 153 (1967) (GT). A smooth elastic sphere of radius ``B``
+(GT's notation; ``B = R``, the radius of the paraboloid ``r²/(2R)`` of
+:func:`roughcontact.surfaces.paraboloid`) touches a Greenwood–Williamson rough
+surface: independent spherical summits of radius ``β``, areal density ``η`` and
+Gaussian heights of standard deviation ``σ`` (Greenwood & Williamson, Proc. R.
+Soc. A 295, 300 (1966)). The summits carry the local nominal pressure
+``p = (4/3) η E* β^(1/2) σ^(3/2) F_{3/2}(s/σ)`` at a local separation ``s``
+between the sphere and the mean summit plane, ``F_n(h) = ∫_h^∞ (x − h)^n φ(x) dx``
+with ``φ`` the standard normal density, and the nominal pressure deforms the
+half-space (modulus ``E*``) elastically.
+
+Dimensionless variables (GT): ``ρ = r/√(2Bσ)``, separations and
+displacements in units of ``σ``, pressure in units of ``E*√(σ/(8B))``, so
+that ``p = μ F_{3/2}(d* + ρ² + w(ρ) − w(0))`` with
+``μ = (8/3) η σ √(2Bβ)`` and ``d* = d/σ`` the separation at the centre
+(sphere apex to the deformed mean summit plane). The displacement of the
+half-space under an axisymmetric pressure is (Johnson, Contact Mechanics,
+1985, ch. 3, the ring-load Green's function after Landen's transformation)
+
+    w(ρ) = (2/π) [ ∫_0^ρ p(t) (t/ρ) K(t/ρ) dt + ∫_ρ^∞ p(t) K(ρ/t) dt ],
+
+``K`` the complete elliptic integral of the first kind (modulus argument),
+``w(0) = ∫ p dt``; forces are in units of ``E* σ^(3/2) √(B/2)``
+(``F = 2π ∫ ρ p dρ`` in those units) and stiffnesses in units of
+``E* √(σB/2)``.
+
+Limits (tested in ``tests/test_greenwood_tripp.py``):
+
+* Light load, ``d* → ∞``: the elastic displacement is negligible against the
+  separation, ``p → μ F_{3/2}(d* + ρ²)`` (a rigid sphere on the summits) and,
+  since ``∫_h^∞ F_n = F_{n+1}(h)/(n + 1)``, the force tends to
+  ``2π μ ∫_0^∞ ρ F_{3/2}(d* + ρ²) dρ = (2π/5) μ F_{5/2}(d*)``.
+* Hertz, large load (or ``σ → 0`` at fixed physical load): the summit layer
+  is compressed by ``|d*| σ``, and ``μ F_{3/2}(d*) ≈ |d*|^(3/2) μ`` only has to
+  match the central pressure ``∝ F^(1/3)``, so ``|d*|`` grows like ``F^(2/9)``
+  while the elastic approach ``2ρ_a²`` grows like ``F^(2/3)``: the pressure
+  tends to Hertz's ``p = (8/π)√(ρ_a² − ρ²)`` in these units and force and
+  stiffness to ``F = (16/3) ρ_a³``, ``k = 4 ρ_a``, i.e. ``F = k³/12``
+  (``k = 2E*a`` and ``F = 4E*a³/(3R)`` with ``a = ρ_a√(2Rσ)``).
+* Far from the apex the load vanishes: ``p(ρ) ≤ μ F_{3/2}(d* + ρ² − w(0))``
+  decays like ``exp(−ρ⁴/2)``, so the truncation at ``rho_max`` is checked
+  (``edge_pressure_tol``).
+* The force is a continuous, decreasing function of ``d*`` and an increasing
+  one of ``μ``; its derivative along the load curve is computed exactly
+  (``stiffness_star``).
+
+Summit statistics from the spectral moments ``m0, m2, m4`` of an isotropic
+Gaussian surface (profile moments: ``m0`` the height variance, ``m2`` the
+mean-square slope and ``m4`` the mean-square curvature of a profile) follow
+Nayak, J. Lubr. Technol. 93, 398 (1971), in the closed forms of McCool,
+Wear 107, 37 (1986):
+
+* summit density ``η = m4 / (6π√3 m2)``,
+* mean summit radius ``β = (3/8) √(π/m4)``,
+* standard deviation of the summit heights ``σ_s = √(1 − 0.8968/α) √m0``,
+  with the bandwidth parameter ``α = m0 m4 / m2²`` (``α ≥ 1.5``),
+* mean summit height ``4 √m0 / √(π α)`` above the mean plane.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+from scipy.integrate import quad
+from scipy.special import ellipk, gamma, pbdv
+
+from ._validate import check_finite_positive, check_grid_size, check_hurst
+
+__all__ = [
+    "AsperityParameters",
+    "GreenwoodTrippCurve",
+    "GreenwoodTrippSolution",
+    "SpectralMoments",
+    "asperity_parameters",
+    "greenwood_tripp",
+    "greenwood_tripp_curve",
+    "gt_function",
+    "influence_matrix",
+    "mu_parameter",
+    "self_affine_moments",
+    "spectral_moments",
+]
+
+#: Gauss–Legendre nodes per half of a hat function for the smooth influence integrals.
+_GAUSS_NODES = 20
+#: Below this separation (in σ) ``F_n`` is summed from its asymptotic series instead of
+#: the parabolic cylinder function (which overflows near −53 and loses accuracy before).
+_DEEP = -20.0
+
+
+def gt_function(h, n: float):
+    """``F_n(h) = ∫_h^∞ (x − h)^n φ(x) dx``, ``φ`` the standard normal density.
+
+    Closed form ``F_n(h) = Γ(n + 1)/√(2π) · exp(−h²/4) · D_{−n−1}(h)`` with
+    ``D_ν`` the parabolic cylinder function (from
+    ``F_n = e^(−h²/2)/√(2π) ∫_0^∞ t^n e^(−t²/2 − ht) dt`` and the integral
+    representation of ``U(a, h) = D_{−a−1/2}(h)``, DLMF §12.5;
+    ``scipy.special.pbdv``), relative accuracy ~1e-13 for
+    ``−20 ≤ h ≤ 10`` (beyond ``h = 10`` the value is below ``1e-22`` and only
+    its absolute accuracy matters); below ``h = −20`` the expansion
+    ``F_n = |h|^n Σ_m C(n, 2m) (2m − 1)!! |h|^(−2m)`` (moments of the normal
+    distribution), seven terms, relative accuracy ~1e-15.
+    """
+    h = np.asarray(h, dtype=float)
+    deep = h < _DEEP
+    shallow = np.where(deep, 0.0, h)
+    value = (gamma(n + 1.0) / math.sqrt(2.0 * math.pi) * np.exp(-shallow * shallow / 4.0)
+             * pbdv(-n - 1.0, shallow)[0])
+    if np.any(deep):
+        # F_n(h) = E[(a + X)^n] with a = −h (the part X < h weighs ~exp(−h²/2)):
+        # a^n Σ_m C(n, 2m) (2m − 1)!! a^(−2m), consecutive terms in the ratio
+        # (n − 2m + 2)(n − 2m + 1)/(2m a²).
+        a = np.where(deep, -h, 1.0)
+        term = np.ones_like(a)
+        series = np.ones_like(a)
+        for m in range(1, 8):
+            term = term * (n - 2 * m + 2) * (n - 2 * m + 1) / (2 * m * a * a)
+            series = series + term
+        value = np.where(deep, a**n * series, value)
+    return value
+
+
+def _kernel(xi):
+    """``g(ξ)`` of ``w(ρ) = (2/π) ∫ p(t) g(t/ρ) dt``: ``ξ K(ξ)`` below 1, ``K(1/ξ)`` above."""
+    xi = np.asarray(xi, dtype=float)
+    inside = xi < 1.0
+    safe = np.where(inside, xi, 1.0 / np.where(inside, 1.0, xi))
+    value = ellipk(safe * safe)
+    return np.where(inside, xi * value, value)
+
+
+def _hat_integrand(s: float, row: int, column: int) -> float:
+    """``(1 − |s|) g((column + s)/row)`` for ``quad`` (one number at a time)."""
+    xi = (column + s) / row
+    value = xi * float(ellipk(xi * xi)) if xi < 1.0 else float(ellipk(1.0 / (xi * xi)))
+    return (1.0 - abs(s)) * value
+
+
+def influence_matrix(rho_max: float, points: int) -> np.ndarray:
+    """``M`` with ``w(ρ_i) = Σ_j M_ij p_j`` (units ``σ`` and ``E*√(σ/(8B))``).
+
+    For a pressure piecewise linear between the nodes ``ρ_j = j·rho_max/(points − 1)``
+    and 0 beyond ``rho_max``, the displacement of the module docstring's kernel
+    at the nodes, integrated exactly over each hat function (read-only array).
+    """
+    check_finite_positive("rho_max", rho_max)
+    check_grid_size(points)
+    return (rho_max / (points - 1)) * _influence(points)
+
+
+@functools.lru_cache(maxsize=4)
+def _influence(points: int) -> np.ndarray:
+    """Dimensionless ``A`` with ``w_i = h Σ_j A_ij p_j`` on ``ρ_i = i h``, ``p`` piecewise linear.
+
+    ``A_ij = (2/π) ∫ (1 − |s|) g((j + s)/i) ds`` over the hat of node ``j``
+    (half hats at both ends), ``A_0j`` its plain integral (``g → π/2``).
+    Integrands with the logarithmic singularity of ``K`` (``|i − j| ≤ 1``, where
+    it sits at an end of a half hat) are integrated adaptively
+    (``scipy.integrate.quad``, relative accuracy 1e-11), the others by
+    Gauss–Legendre quadrature with :data:`_GAUSS_NODES` nodes on each half of
+    the hat (the nearest singularity lies a hat's width away: error far below 1e-12).
+    """
+    last = points - 1
+    nodes, weights = np.polynomial.legendre.leggauss(_GAUSS_NODES)
+    right = 0.5 * (nodes + 1.0)                       # on [0, 1]
+    half = 0.5 * weights
+    matrix = np.ones((points, points))
+    matrix[0, [0, last]] = 0.5
+    i = np.arange(1, points)[:, None, None]
+    j = np.arange(points)[None, :, None]
+    upper = half * (1.0 - right) * _kernel((j + right) / i)    # s in [0, 1]
+    lower = half * (1.0 - right) * _kernel((j - right) / i)    # s in [−1, 0]
+    upper_sum = upper.sum(axis=2)
+    lower_sum = lower.sum(axis=2)
+    upper_sum[:, last] = 0.0
+    lower_sum[:, 0] = 0.0
+    matrix[1:] = (2.0 / math.pi) * (upper_sum + lower_sum)
+    for row in range(1, points):
+        for column in range(max(0, row - 1), min(points, row + 2)):
+            total = 0.0
+            for low, high in ((-1.0, 0.0), (0.0, 1.0)):
+                if (column == 0 and low < 0) or (column == last and high > 0):
+                    continue
+                value, _ = quad(_hat_integrand, low, high, args=(row, column), limit=200,
+                                epsabs=0.0, epsrel=1e-11)
+                total += value
+            matrix[row, column] = (2.0 / math.pi) * total
+    matrix.flags.writeable = False
+    return matrix
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class GreenwoodTrippSolution:
+    """GT's rough-sphere contact at one central separation, in GT's units (module docstring).
+
+    Attributes
+    ----------
+    depth_star, mu : float
+        The input: ``d* = d/σ``, the separation of the sphere's apex from the
+        deformed mean summit plane, and ``μ = (8/3) η σ √(2Bβ)``.
+    rho : numpy.ndarray
+        Radial nodes ``ρ = r/√(2Bσ)`` on ``[0, rho_max]``.
+    pressure : numpy.ndarray
+        Nominal pressure at the nodes, units ``E*√(σ/(8B))`` (piecewise linear
+        between nodes, 0 beyond ``rho_max``).
+    displacement : numpy.ndarray
+        Elastic displacement ``w(ρ)`` of the half-space at the nodes, units
+        ``σ``; the separation is ``d* + ρ² + w(ρ) − w(0)``.
+    force_star : float
+        Total force ``2π ∫ ρ p dρ``, units ``E* σ^(3/2) √(B/2)``.
+    approach_star : float
+        Rigid-body approach ``w(0) − d*`` of the sphere, units ``σ``, counted
+        from the position where the apex touches the undeformed mean summit plane.
+    stiffness_star : float
+        ``dF/d(approach)`` along the load curve, units ``E* √(σB/2)``: the exact
+        derivative of the discrete solution (implicit differentiation of its
+        equations with respect to ``d*``).
+    residual : float
+        ``max_i |p_i − μ F_{3/2}(s_i)| / max_i p_i`` at the returned solution.
+    """
+
+    depth_star: float
+    mu: float
+    rho: np.ndarray
+    pressure: np.ndarray
+    displacement: np.ndarray
+    force_star: float
+    approach_star: float
+    stiffness_star: float
+    residual: float
+
+
+def _force_weights(rho_max: float, points: int) -> np.ndarray:
+    """``W`` with ``2π ∫ ρ p dρ = W · p`` exactly for piecewise linear ``p``."""
+    h = rho_max / (points - 1)
+    weights = np.arange(points) * h * h
+    weights[0] = h * h / 6.0
+    weights[-1] = rho_max * h / 2.0 - h * h / 6.0
+    return 2.0 * math.pi * weights
+
+
+def greenwood_tripp(depth_star: float, mu: float, *, rho_max: float = 5.0, points: int = 100,
+                    pressure_tol: float = 1e-12, edge_pressure_tol: float = 1e-6,
+                    max_newton: int = 100) -> GreenwoodTrippSolution:
+    """Solve GT's integral equation ``p = μ F_{3/2}(d* + ρ² + w(ρ) − w(0))``.
+
+    Parameters
+    ----------
+    depth_star : float
+        ``d* = d/σ``, central separation (any finite number; negative when
+        the apex is below the deformed mean summit plane).
+    mu : float
+        ``μ = (8/3) η σ √(2Bβ)`` (> 0), see :func:`mu_parameter`.
+    rho_max : float
+        Outer radius of the grid in units of ``√(2Bσ)``; the pressure is 0
+        beyond it. Keyword-only.
+    points : int
+        Nodes on ``[0, rho_max]`` (≥ 8). Keyword-only.
+    pressure_tol : float
+        Newton's method stops when ``max_i |p_i − μ F_{3/2}(s_i)| ≤
+        pressure_tol · max_i p_i`` (``s_i`` the separation at node ``i``).
+        Keyword-only.
+    edge_pressure_tol : float
+        The solution is rejected when ``p(rho_max) > edge_pressure_tol · max p``:
+        the load would not have vanished at the grid's edge. Keyword-only.
+    max_newton : int
+        Maximum Newton iterations. Keyword-only.
+
+    Returns
+    -------
+    GreenwoodTrippSolution
+
+    Raises
+    ------
+    ValueError
+        For bad arguments, or a pressure at ``rho_max`` above
+        ``edge_pressure_tol · max p`` (enlarge ``rho_max``).
+    RuntimeError
+        If Newton's method does not meet ``pressure_tol`` in ``max_newton`` steps.
+
+    Notes
+    -----
+    Collocation at the nodes with piecewise linear pressure: ``w = M p`` with
+    the influence matrix of the module docstring's kernel integrated exactly
+    over each hat (:func:`influence_matrix`), ``w(ρ) − w(0) = D p``,
+    ``D = M − 1 M_0``. Newton's method on ``R(p) = p − μ F_{3/2}(d* + ρ² + D p)``
+    with Jacobian ``J = I + (3/2) μ diag(F_{1/2}) D`` (``F'_n = −n F_{n−1}``),
+    halving the step until ``max |R|`` decreases, from the rigid-sphere
+    pressure ``μ F_{3/2}(d* + ρ²)``. Sensitivity: ``∂p/∂d* = −J⁻¹ (3/2) μ F_{1/2}``,
+    whence ``stiffness_star = (W ∂p/∂d*)/(M_0 ∂p/∂d* − 1)`` with ``W`` the
+    force weights.
+    """
+    if (isinstance(depth_star, bool) or not isinstance(depth_star, (int, float, np.floating))
+            or not math.isfinite(depth_star)):
+        raise ValueError(f"depth_star must be a finite number, got {depth_star!r}")
+    check_finite_positive("mu", mu)
+    check_finite_positive("rho_max", rho_max)
+    check_grid_size(points)
+    check_finite_positive("pressure_tol", pressure_tol)
+    check_finite_positive("edge_pressure_tol", edge_pressure_tol)
+    if isinstance(max_newton, bool) or not isinstance(max_newton, int) or max_newton < 1:
+        raise ValueError(f"max_newton must be a positive integer, got {max_newton!r}")
+    rho = np.linspace(0.0, rho_max, points)
+    influence = influence_matrix(rho_max, points)
+    relative = influence - influence[0]
+    rigid = depth_star + rho * rho
+
+    def residual_of(pressure):
+        separation = rigid + relative @ pressure
+        return pressure - mu * gt_function(separation, 1.5), separation
+
+    pressure = mu * gt_function(rigid, 1.5)
+    residual, separation = residual_of(pressure)
+    for _ in range(max_newton):
+        size = float(np.abs(residual).max())
+        if size <= pressure_tol * float(pressure.max()):
+            break
+        jacobian = np.eye(points) + (1.5 * mu * gt_function(separation, 0.5))[:, None] * relative
+        step = np.linalg.solve(jacobian, -residual)
+        scale = 1.0
+        while True:
+            trial = pressure + scale * step
+            trial_residual, trial_separation = residual_of(trial)
+            if float(np.abs(trial_residual).max()) < size or scale < 1e-10:
+                break
+            scale *= 0.5
+        pressure, residual, separation = trial, trial_residual, trial_separation
+    size = float(np.abs(residual).max()) / float(pressure.max())
+    if size > pressure_tol:
+        raise RuntimeError(f"Greenwood-Tripp Newton iteration did not converge "
+                           f"(residual {size:.2e} > {pressure_tol:g})")
+    if pressure[-1] > edge_pressure_tol * pressure.max():
+        raise ValueError(f"pressure at rho_max = {rho_max:g} is {pressure[-1] / pressure.max():.2e} "
+                         f"of its maximum (> edge_pressure_tol): enlarge rho_max")
+    jacobian = np.eye(points) + (1.5 * mu * gt_function(separation, 0.5))[:, None] * relative
+    sensitivity = np.linalg.solve(jacobian, -1.5 * mu * gt_function(separation, 0.5))
+    weights = _force_weights(rho_max, points)
+    displacement = influence @ pressure
+    stiffness = float(weights @ sensitivity) / (float(influence[0] @ sensitivity) - 1.0)
+    return GreenwoodTrippSolution(
+        depth_star=float(depth_star), mu=float(mu), rho=rho, pressure=pressure,
+        displacement=displacement, force_star=float(weights @ pressure),
+        approach_star=float(displacement[0] - depth_star), stiffness_star=stiffness,
+        residual=size)
+
+
+# --- summit statistics from spectral moments -------------------------------------------
+
+@dataclasses.dataclass(frozen=True)
+class SpectralMoments:
+    """Profile spectral moments of an isotropic surface (Nayak 1971).
+
+    Attributes
+    ----------
+    m0 : float
+        Height variance (length²).
+    m2 : float
+        Mean-square slope of a profile, ``⟨(∂z/∂x)²⟩ = ⟨|∇z|²⟩/2`` (dimensionless).
+    m4 : float
+        Mean-square curvature of a profile, ``⟨(∂²z/∂x²)²⟩ = (3/8)⟨(∇²z)²⟩``
+        (1/length²).
+    """
+
+    m0: float
+    m2: float
+    m4: float
+
+
+def _wavevectors(n: int, length: float) -> np.ndarray:
+    """:func:`roughcontact.surfaces.wavevectors`, imported here: :mod:`roughcontact.theory`
+    re-exports this module and :mod:`roughcontact.surfaces` imports theory."""
+    from .surfaces import wavevectors
+
+    return wavevectors(n, length)
+
+
+def _moments_from_spectrum(q: np.ndarray, power: np.ndarray) -> SpectralMoments:
+    """Moments of the discrete spectrum ``power`` (``Σ power`` = variance) on wavenumbers ``q``.
+
+    For an isotropic surface the directional moments are the angular averages
+    ``m2 = ½ Σ q² P`` and ``m4 = (3/8) Σ q⁴ P`` (``⟨cos²⟩ = 1/2``,
+    ``⟨cos⁴⟩ = 3/8``).
+    """
+    q2 = q * q
+    return SpectralMoments(m0=float(power.sum()), m2=float(0.5 * (q2 * power).sum()),
+                           m4=float(0.375 * (q2 * q2 * power).sum()))
+
+
+def spectral_moments(heights, *, length: float) -> SpectralMoments:
+    """Profile spectral moments of a periodic height map from its FFT on the grid in use.
+
+    ``P(q) = |ĥ(q)|²`` with ``ĥ = FFT(z − mean z)/n²`` (so ``Σ P`` is the
+    variance, Parseval), ``q`` the wavenumbers of
+    :func:`roughcontact.surfaces.wavevectors` (the Nyquist modes of an even
+    grid counted with ``|q| = π/Δ``), and the isotropic averages of
+    :func:`_moments_from_spectrum`. Pass the roughness, not a rough sphere:
+    the paraboloid is not periodic.
+    """
+    heights = np.asarray(heights, dtype=float)
+    if heights.ndim != 2 or heights.shape[0] != heights.shape[1]:
+        raise ValueError(f"heights must be a square 2-D array, got shape {heights.shape}")
+    check_grid_size(heights.shape[0])
+    check_finite_positive("length", length)
+    n = heights.shape[0]
+    spectrum = np.fft.fft2(heights - heights.mean()) / n**2
+    return _moments_from_spectrum(_wavevectors(n, length), np.abs(spectrum) ** 2)
+
+
+def self_affine_moments(hurst: float, h_rms: float, n: int, length: float) -> SpectralMoments:
+    """Profile spectral moments of :func:`roughcontact.surfaces.self_affine`, exactly.
+
+    That surface has ``|ĥ(q)|² ∝ q^(−2H−2)`` on every grid mode ``q ≠ 0``
+    (random phases only) scaled to the variance ``h_rms²``, so
+    ``m_k = c_k h_rms² Σ q^k q^(−2H−2) / Σ q^(−2H−2)`` over those modes,
+    ``c_0 = 1``, ``c_2 = 1/2``, ``c_4 = 3/8``: a finite sum, the same for
+    every seed.
+    """
+    check_hurst(hurst)
+    check_finite_positive("h_rms", h_rms)
+    check_grid_size(n)
+    check_finite_positive("length", length)
+    q = _wavevectors(n, length)
+    power = np.zeros_like(q)
+    nonzero = q > 0
+    power[nonzero] = q[nonzero] ** (-2.0 * hurst - 2.0)
+    return _moments_from_spectrum(q, power * (h_rms**2 / power.sum()))
+
+
+@dataclasses.dataclass(frozen=True)
+class AsperityParameters:
+    """Greenwood–Williamson summit statistics of an isotropic Gaussian surface (McCool 1986).
+
+    Attributes
+    ----------
+    density : float
+        Summit density ``η = m4/(6π√3 m2)`` (1/length²).
+    summit_radius : float
+        Mean summit radius of curvature ``β = (3/8)√(π/m4)`` (length).
+    summit_sigma : float
+        Standard deviation of the summit heights ``σ_s = √(1 − 0.8968/α) √m0``
+        (length): GT's ``σ``.
+    summit_mean_height : float
+        Mean summit height above the mean plane, ``4√m0/√(πα)`` (length).
+    bandwidth : float
+        Nayak's bandwidth parameter ``α = m0 m4/m2²`` (≥ 1.5).
+    """
+
+    density: float
+    summit_radius: float
+    summit_sigma: float
+    summit_mean_height: float
+    bandwidth: float
+
+
+def asperity_parameters(moments: SpectralMoments) -> AsperityParameters:
+    """Summit density, radius and height spread from the spectral moments (module docstring)."""
+    for name in ("m0", "m2", "m4"):
+        check_finite_positive(name, getattr(moments, name))
+    m0, m2, m4 = moments.m0, moments.m2, moments.m4
+    bandwidth = m0 * m4 / m2**2
+    if bandwidth < 1.5 * (1 - 1e-12):
+        raise ValueError(f"bandwidth m0 m4/m2^2 = {bandwidth:g} < 1.5: not the moments of "
+                         f"an isotropic surface")
+    return AsperityParameters(
+        density=m4 / (6.0 * math.pi * math.sqrt(3.0) * m2),
+        summit_radius=0.375 * math.sqrt(math.pi / m4),
+        summit_sigma=math.sqrt(1.0 - 0.8968 / bandwidth) * math.sqrt(m0),
+        summit_mean_height=4.0 * math.sqrt(m0) / math.sqrt(math.pi * bandwidth),
+        bandwidth=bandwidth)
+
+
+def mu_parameter(asperities: AsperityParameters, radius: float) -> float:
+    """GT's ``μ = (8/3) η σ √(2Bβ)`` for a sphere of radius ``B = radius``."""
+    check_finite_positive("radius", radius)
+    return (8.0 / 3.0 * asperities.density * asperities.summit_sigma
+            * math.sqrt(2.0 * radius * asperities.summit_radius))
+
+
+# --- the load curve in physical units --------------------------------------------------
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class GreenwoodTrippCurve:
+    """GT's load curve of a rough sphere in physical units.
+
+    Attributes
+    ----------
+    depth_star : numpy.ndarray
+        Central separations ``d*`` solved (units ``σ``).
+    force : numpy.ndarray
+        Normal force ``F = E* σ^(3/2) √(R/2) · force_star`` (force unit).
+    approach : numpy.ndarray
+        Rigid-body approach ``σ · approach_star`` (length unit), counted from
+        the apex touching the undeformed mean summit plane.
+    stiffness : numpy.ndarray
+        ``k = dF/d(approach) = E* √(σR/2) · stiffness_star`` (force/length).
+    mu : float
+        GT's ``μ`` of the surface and sphere.
+    sigma : float
+        GT's ``σ`` (the summit-height standard deviation, length unit).
+    """
+
+    depth_star: np.ndarray
+    force: np.ndarray
+    approach: np.ndarray
+    stiffness: np.ndarray
+    mu: float
+    sigma: float
+
+
+def greenwood_tripp_curve(depths_star, *, radius: float, e_star: float,
+                          asperities: AsperityParameters, rho_max: float = 5.0,
+                          points: int = 100) -> GreenwoodTrippCurve:
+    """Force against stiffness (and approach) of GT for a sphere of radius ``radius``.
+
+    Solves :func:`greenwood_tripp` at each ``d*`` with ``μ`` from
+    :func:`mu_parameter`, ``σ = asperities.summit_sigma`` and ``B = radius``,
+    and converts to physical units (:class:`GreenwoodTrippCurve`); ``F`` of
+    ``k`` is the curve ``(stiffness, force)``, to be set beside eq. 16 of
+    Pohrt & Popov (2013) or a BEM load path.
+    """
+    check_finite_positive("e_star", e_star)
+    mu = mu_parameter(asperities, radius)
+    sigma = asperities.summit_sigma
+    depths = np.atleast_1d(np.asarray(depths_star, dtype=float))
+    solutions = [greenwood_tripp(float(d), mu, rho_max=rho_max, points=points) for d in depths]
+    force_unit = e_star * sigma**1.5 * math.sqrt(radius / 2.0)
+    return GreenwoodTrippCurve(
+        depth_star=depths,
+        force=force_unit * np.array([s.force_star for s in solutions]),
+        approach=sigma * np.array([s.approach_star for s in solutions]),
+        stiffness=force_unit / sigma * np.array([s.stiffness_star for s in solutions]),
+        mu=mu, sigma=sigma)
