@@ -419,7 +419,10 @@ def stiffness(state: ContactState, *, method: str = "punch", tol: float | None =
         ``F₊ = F(1 + rel_step)`` that starts from this state's plastic
         displacement (so cells keep flowing). Its bias is ``O(rel_step)``:
         for ``F ∝ d^(3/2)`` (Hertz) it is the tangent at ``F(1 + rel_step/2)``,
-        ``rel_step/6`` above the tangent at ``F``.
+        ``rel_step/6`` above the tangent at ``F``. Near the fully plastic limit
+        the discrete ``F(d)`` is a staircase (rings of cells reaching the cap
+        at nearly one depth), so a small ``rel_step`` measures the lattice:
+        take a step that adds many cells to the contact.
     tol : float, optional
         Tolerance of the punch solve or of the extra solves (default:
         ``state.tol``), keyword-only.
