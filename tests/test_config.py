@@ -132,8 +132,9 @@ def test_paper_preset_plans_50_indent_jobs_per_combination(tmp_path):
     assert cfg["grid"]["n"] == 513 and cfg["hurst"] == [0.7] and 0.5 in cfg["radius"]
     assert cfg["h_rms"] == [9e-3] and len(cfg["seeds"]) == 50
     assert cfg["forces"]["sphere"]["from"] <= 1e-7 and cfg["forces"]["sphere"]["to"] >= 1e-2
-    for hurst, radius, h in study.combinations(cfg):
-        prefix = f"results/runs/H{study.format_value(hurst)}_R{study.format_value(radius)}_h{study.format_value(h)}/"
+    for combo in study.combinations(cfg):
+        prefix = f"results/runs/H{study.format_value(combo['hurst'])}_R{study.format_value(combo['radius'])}" \
+                 f"_h{study.format_value(combo['h_rms'])}/"
         planned = {line.split(prefix)[1].split()[0] for line in out.splitlines()
                    if "output:" in line and prefix in line}
         assert len(planned) == 50, (prefix, len(planned))

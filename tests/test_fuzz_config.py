@@ -4,7 +4,7 @@ from the schema (so keys added to the schema join in without edits here).
 Every mutated config is either
 
 * accepted: then ``study.runs``/``study.run_paths`` give one distinct run path
-  per run, and each path parses back (``study.parse_value``) to exactly the
+  per run, and each path parses back (``study.parse_run_path``) to exactly the
   run's configured values; or
 * rejected by ``roughcontact check-config`` (exit code 2) with one line that
   starts with ``Invalid configuration`` and names a key.
@@ -203,18 +203,6 @@ def _yaml_round_trip(cfg: dict) -> tuple[str, object]:
     return text, yaml.safe_load(text)
 
 
-def _run_fields() -> list[str]:
-    return re.findall(r"{(\w+)}", study.RUN_PATTERN)
-
-
-def _run_regex() -> re.Pattern:
-    pattern, last = "", 0
-    for match in re.finditer(r"{(\w+)}", study.RUN_PATTERN):
-        pattern += re.escape(study.RUN_PATTERN[last:match.start()]) + f"(?P<{match.group(1)}>[^_/]+?)"
-        last = match.end()
-    return re.compile(pattern + re.escape(study.RUN_PATTERN[last:]) + "$")
-
-
 def _same(a, b) -> bool:
     return a == b or (isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b))
 
@@ -225,14 +213,10 @@ def check_accepted(cfg: dict) -> int:
     paths = study.run_paths(cfg)
     assert len(paths) == len(runs), f"{len(paths)} paths for {len(runs)} runs"
     assert len(set(paths)) == len(paths), f"run paths collide: {len(paths) - len(set(paths))} duplicates"
-    regex = _run_regex()
     for run, path in zip(runs, paths):
-        match = regex.match(path)
-        assert match, f"run path {path!r} does not match {study.RUN_PATTERN}"
-        for field in _run_fields():
-            text = match.group(field)
-            parsed = int(text) if field == "seed" else study.parse_value(text)
-            assert _same(parsed, run[field]), f"{path}: {field} = {text!r} parses to {parsed!r}, not {run[field]!r}"
+        parsed = study.parse_run_path(path)
+        for field, value in parsed.items():
+            assert _same(value, run[field]), f"{path}: {field} parses to {value!r}, not {run[field]!r}"
     return len(runs)
 
 

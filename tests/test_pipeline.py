@@ -154,9 +154,9 @@ def test_report_and_figures(run):
 
 def test_logs_and_run_provenance(run):
     work, cfg = run
-    path = study.run_path(cfg["hurst"][0], cfg["radius"][0], cfg["h_rms"][0], cfg["seeds"][0])
-    log = (work / study.run_path(cfg["hurst"][0], cfg["radius"][0], cfg["h_rms"][0], cfg["seeds"][0],
-                                 pattern=study.LOG_PATTERN)).read_text()
+    first = study.runs(cfg)[0]
+    path = study.run_path(first)
+    log = (work / study.run_path(first, pattern=study.LOG_PATTERN)).read_text()
     n = cfg["forces"]["sphere"]["count"]
     assert f"load step {n}/{n}" in log and "iterations" in log and " s" in log
     with xr.open_dataset(work / path) as ds:
@@ -177,10 +177,11 @@ def test_cli_shares_code_with_the_rule(run, tmp_path):
     """`roughcontact indent` with the same settings writes the same numbers and hash."""
     work, cfg = run
     h, r, s, seed = cfg["hurst"][1], cfg["radius"][0], cfg["h_rms"][1], cfg["seeds"][1]
+    run_file = work / study.run_path({"hurst": h, "radius": r, "h_rms": s, "seed": seed})
     out = tmp_path / "run.nc"
     assert cli.main(["indent", "--config", str(TINY), "--hurst", str(h), "--radius", str(r), "--h-rms", str(s),
                      "--seed", str(seed), "-o", str(out), "-q"]) == 0
-    with xr.open_dataset(out) as a, xr.open_dataset(work / study.run_path(h, r, s, seed)) as b:
+    with xr.open_dataset(out) as a, xr.open_dataset(run_file) as b:
         assert a.attrs["config_hash"] == b.attrs["config_hash"]
         np.testing.assert_array_equal(a["stiffness"].values, b["stiffness"].values)
         np.testing.assert_array_equal(a["depth"].values, b["depth"].values)
@@ -189,8 +190,8 @@ def test_cli_shares_code_with_the_rule(run, tmp_path):
 def test_merge_names_a_truncated_or_foreign_file(run, tmp_path):
     work, cfg = run
     row = study.runs(cfg)[0]
-    good = work / study.run_path(row["hurst"], row["radius"], row["h_rms"], row["seed"])
-    expected = study.job_settings(cfg, row["hurst"], row["radius"], row["h_rms"], row["seed"])
+    good = work / study.run_path(row)
+    expected = study.job_settings(cfg, row)
     bad = tmp_path / "truncated.nc"
     bad.write_bytes(good.read_bytes()[:300])
     with pytest.raises(analysis.MergeError, match="truncated.nc"):

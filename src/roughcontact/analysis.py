@@ -86,11 +86,15 @@ def read_run(path, expected: dict | None = None):
 # --------------------------------------------------------------------------
 #: NetCDF types of the run variables in the merged file (counts stay integers)
 _DTYPES = {"depth": "f8", "stiffness": "f8", "contact_area": "f8", "contact_cells": "i8",
-           "iterations": "i8", "converged": "i1"}
+           "iterations": "i8", "converged": "i1", "loading_stiffness": "f8", "plastic_cells": "i8"}
 _AXIS_ATTRS = {
     "hurst": {"long_name": "Hurst exponent H", "units": "1"},
     "radius": {"long_name": "sphere radius R", "units": "length"},
+    "exponent": {"long_name": "exponent m of the body of revolution z = (R/m)(r/R)^m (2: paraboloid)", "units": "1"},
     "h_rms": {"long_name": "rms roughness height", "units": "length"},
+    "rolloff": {"long_name": "roll-off wavelength of the spectrum (grid.length: none)", "units": "length"},
+    "cutoff": {"long_name": "short-wavelength cutoff of the spectrum (0: none)", "units": "length"},
+    "hardness": {"long_name": "penetration hardness (inf: elastic)", "units": "e_star"},
     "seed": {"long_name": "random seed of the surface", "units": "1"},
 }
 
@@ -116,7 +120,7 @@ def merge_runs(cfg: dict, paths=None) -> dict:
 
     table = study.runs(cfg)
     if paths is None:
-        paths = [study.run_path(r["hurst"], r["radius"], r["h_rms"], r["seed"]) for r in table]
+        paths = [study.run_path(r) for r in table]
     if len(paths) != len(table):
         raise MergeError(f"merge got {len(paths)} run files for {len(table)} runs of the config")
     groups = {}
@@ -125,23 +129,29 @@ def merge_runs(cfg: dict, paths=None) -> dict:
         if not rows:
             continue
         axes = study.AXES[kind]
-        coords = {axis: sorted({row[axis] for row, _ in rows}) for axis in axes}
+        L = cfg["grid"]["length"]
+        at = {id(row): {axis: study.coordinate(axis, row[axis], L) for axis in axes} for row, _ in rows}
+        coords = {axis: sorted({at[id(row)][axis] for row, _ in rows}) for axis in axes}
         coords["seed"] = list(cfg["seeds"])
         count = cfg["forces"][kind]["count"]
         shape = tuple(len(v) for v in coords.values()) + (count,)
-        data = {name: np.zeros(shape, dtype=_DTYPES[name]) for name in study.RUN_VARIABLES}
+        plastic = any(row["hardness"] is not None for row, _ in rows)
+        names = study.RUN_VARIABLES + (study.PLASTIC_VARIABLES if plastic else ())
+        data = {name: np.zeros(shape, dtype=_DTYPES[name]) for name in names}
         attrs_of, commits = {}, set()
         for row, path in rows:
-            expected = study.job_settings(cfg, row["hurst"], row["radius"], row["h_rms"], row["seed"])
-            ds = read_run(path, expected)
-            idx = tuple(coords[axis].index(row[axis]) for axis in (*axes, "seed"))
-            for name in study.RUN_VARIABLES:
-                data[name][idx] = ds[name].values
-                attrs_of.setdefault(name, {k: v for k, v in ds[name].attrs.items() if k != "coordinates"})
+            ds = read_run(path, study.job_settings(cfg, row))
+            idx = tuple(coords[axis].index(at[id(row)][axis]) for axis in axes) + (coords["seed"].index(row["seed"]),)
+            for name in names:
+                # an elastic run's loading tangent is its stiffness, and nothing flows
+                values = ds[name] if name in ds else (ds["stiffness"] if name == "loading_stiffness" else 0)
+                data[name][idx] = getattr(values, "values", values)
+                if name in ds:
+                    attrs_of.setdefault(name, {k: v for k, v in ds[name].attrs.items() if k != "coordinates"})
             commits.add(ds.attrs.get("git_commit", "unknown"))
         dims = (*axes, "seed", "force")
         ds = xr.Dataset(
-            {name: (dims, data[name], attrs_of[name]) for name in study.RUN_VARIABLES},
+            {name: (dims, data[name], attrs_of.get(name, {})) for name in names},
             coords={**{axis: (axis, coords[axis], _AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
                     **_force_coords(cfg, kind)},
             attrs={"surface_kind": kind, "half_space": "periodic" if kind == "flat" else "free (non-periodic)",
@@ -165,6 +175,11 @@ def ensemble(ds):
         "contact_area_mean": (ds["contact_area"].mean("seed"), {"long_name": "mean contact area", "units": "length**2"}),
         "contact_cells_mean": (ds["contact_cells"].mean("seed"), {"long_name": "mean contact cells", "units": "1"}),
     }
+    if "loading_stiffness" in ds:
+        per_load["loading_k_mean"] = (ds["loading_stiffness"].mean("seed"), {
+            "long_name": "ensemble mean loading tangent along the plastic path", "units": "e_star * length"})
+        per_load["plastic_cells_mean"] = (ds["plastic_cells"].mean("seed"), {"long_name": "mean plastic cells",
+                                                                                "units": "1"})
     import xarray as xr
 
     return xr.Dataset({name: value.assign_attrs(attrs) for name, (value, attrs) in per_load.items()},
@@ -192,6 +207,23 @@ def read_groups(path) -> dict:
 # --------------------------------------------------------------------------
 # ζ(H)
 # --------------------------------------------------------------------------
+def paper_setting(ds, length: float):
+    """*ds* at the paper's setting of the optional axes (paraboloid, no roll-off,
+    no cutoff, elastic: :data:`study.DEFAULTS`), those dimensions dropped; where the
+    sweep lacks the paper's value, its first value is taken. Returns the selection
+    and a note naming such substitutions ("" if none)."""
+    pick, notes = {}, []
+    for axis, default in study.DEFAULTS.items():
+        if axis not in ds.dims:
+            continue
+        value = study.coordinate(axis, default, length)
+        if value not in ds[axis].values:
+            value = float(ds[axis].values[0])
+            notes.append(f"{axis} = {value:g}")
+        pick[axis] = value
+    return ds.sel(pick), ("with " + ", ".join(notes)) if notes else ""
+
+
 def _zeta_points(groups, cfg, hurst):
     """Per seed: arrays x = ln(F_r/(E h L)), y = ln(k/(E L)) inside the fit window,
     and the source label.  F_r is F for flat runs and F minus the Hertz force
@@ -199,13 +231,16 @@ def _zeta_points(groups, cfg, hurst):
     L, E = cfg["grid"]["length"], cfg["e_star"]
     zc = cfg["fit"]["zeta"]
     if "flat" in groups:
-        ds, source = groups["flat"], "flat"
+        ds, note = paper_setting(groups["flat"], L)
+        source = "flat"
         radii = [math.inf]
     else:
-        ds = groups["sphere"]
+        ds, note = paper_setting(groups["sphere"], L)
         radii = ds["radius"].values.tolist()
         source = ("sphere small-force branch (no flat runs): eq. 16 minus its Hertz term; "
                   "no free exponent (the window is too narrow)")
+    if note:
+        source += f" ({note})"
     points = []
     for seed in cfg["seeds"]:
         xs, ys, fs = [], [], []
@@ -261,7 +296,7 @@ def fit_zeta(groups, cfg):
     for hurst in cfg["hurst"]:
         points, source = _zeta_points(groups, cfg, hurst)
         zeta, slope = _zeta_stats(points, hurst)
-        flat = source == "flat"
+        flat = source.startswith("flat")
         rng = np.random.default_rng(20130702)  # fixed: identical numbers on every run
         boots = []
         if len(points) > 1 and math.isfinite(zeta):
@@ -291,7 +326,7 @@ def fit_zeta(groups, cfg):
             "confidence": level,
             "source": source if f_all.size else f"no loads in the fit window ({source})",
             "window": (f"contact cells >= {zc['min_cells']}, "
-                       + (f"A/L^2 <= {zc['max_area_fraction']}" if source == "flat"
+                       + (f"A/L^2 <= {zc['max_area_fraction']}" if flat
                           else f"F <= {zc.get('sphere_max_force_ratio', 0.3)} F_tr(eq. 17, zeta = 1.7/(H+1))")),
         })
     df = pd.DataFrame(rows)

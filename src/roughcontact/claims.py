@@ -8,7 +8,11 @@ crossover force of eq. 17; (c) ζ(H) ≈ 1.7/(H+1) (eq. 13); (d) the low-force
 slope 1/(H+1) and (e) the high-force slope 1/3 (with the Hertz prefactor);
 (f) below F_tr roughness lowers k against the smooth sphere (Conclusions);
 (g) the scaling of F_tr with R and h_rms implied by eq. 17; (h) eq. 18's λ
-for H → 0.
+for H → 0. Beyond the paraboloid (Conclusions): (a), (b), (d)–(f) per body of
+revolution and for 1 < H < 2; (i) a short-wavelength cutoff leaves k unchanged
+where the contact is larger than the cutoff; (j) a roll-off's effect on the
+low-force slope; (k) elasticity on all scales is not crucial (a hardness cap
+leaves the unloading and the loading stiffness unchanged).
 """
 from __future__ import annotations
 
@@ -18,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import study
 from .verdicts import interval, verdict, verdict_bound
 
 __all__ = ["claims_table", "run_claims", "EQ16_TOLERANCE"]
@@ -31,20 +36,48 @@ EQ16_TOLERANCE = 0.10
 LAMBDA_EQ17, LAMBDA_GT = math.sqrt(6.0) * 1.7**-1.5, 1.41
 
 
+#: columns naming the combination a row rests on
+AXIS_COLUMNS = ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness")
+
+
 def _claim(claim, statement, measured, low, high, paper, verdict_text, *, sweep="", loads="", note="", **where):
-    return {"claim": claim, "statement": statement, **{k: where.get(k, math.nan) for k in ("hurst", "radius", "h_rms")},
+    return {"claim": claim, "statement": statement, **{k: where.get(k, math.nan) for k in AXIS_COLUMNS},
             "measured": measured, "ci_low": low, "ci_high": high, "paper_value": paper,
             "verdict": verdict_text.split(":")[0], "reason": verdict_text.partition(": ")[2],
             "sweep": sweep, "loads": loads, "note": note}
 
 
-def claims_table(cross, reps, zeta_df, cfg: dict):
+def _paper_values(length: float) -> dict:
+    """The paper's setting of the optional axes as merged-file coordinates."""
+    return {axis: study.coordinate(axis, default, length) for axis, default in study.DEFAULTS.items()}
+
+
+def _describe(r, length: float, n: int, seeds: int) -> str:
+    """The sweep a row rests on: the combination (optional axes off the paper's setting), seeds, grid."""
+    text = f"sphere H = {r['hurst']:g}, R = {r['radius']:g}, h_rms = {r['h_rms']:g}"
+    for axis, value in _paper_values(length).items():
+        if axis in r and r[axis] != value:
+            text += f", {axis} = {r[axis]:g}"
+    return f"{text}, {seeds} seeds, n = {n}"
+
+
+def _is_paper_setting(frame, length):
+    """Rows of *frame* at the paper's setting of the optional axes (or all rows if it has no such columns)."""
+    keep = np.ones(len(frame), dtype=bool)
+    for axis, value in _paper_values(length).items():
+        if axis in frame:
+            keep &= frame[axis].to_numpy(float) == value
+    return frame[keep]
+
+
+def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None):
     """``claims.csv``: one row per quantitative claim of the paper (and per
     combination it is tested on), with the measured value, its 95 % interval,
     the paper's value, the verdict and the sweep and loads it rests on."""
     import pandas as pd
 
     n, seeds = cfg["grid"]["n"], len(cfg["seeds"])
+    L = cfg["grid"]["length"]
     rows = []
     for _, z in zeta_df.iterrows():
         rows.append(_claim(
@@ -53,13 +86,15 @@ def claims_table(cross, reps, zeta_df, cfg: dict):
             sweep=f"{z['source'].split(' (')[0]}, {int(z['n_seeds'])} seeds, n = {n}",
             loads=f"{int(z['n_points'])} loads, F/(E*L^2) = {z['force_min']:.2g}...{z['force_max']:.2g}"))
     for _, r in cross.iterrows():
-        where = {"hurst": r["hurst"], "radius": r["radius"], "h_rms": r["h_rms"]}
-        sweep = f"sphere H = {r['hurst']:g}, R = {r['radius']:g}, h_rms = {r['h_rms']:g}, {seeds} seeds, n = {n}"
+        where = {k: r[k] for k in AXIS_COLUMNS if k in r}
+        sweep = _describe(r, L, n, seeds)
+        body = f" (body m = {r['exponent']:g})" if r.get("exponent", 2.0) != 2.0 else ""
+        body += " (1 < H < 2)" if r["hurst"] > 1 else ""
         loads = (f"{int(r['n_loads_resolved'])} resolved loads, F/(E*L^2) = "
                  f"{r['force_min_resolved']:.2g}...{r['force_max']:.2g}")
         get = r.get
         rows.append(_claim(
-            "a", f"eq. 16 (fitted zeta) within {EQ16_TOLERANCE:.0%} of the BEM ensemble at every resolved load",
+            "a", f"eq. 16 (fitted zeta) within {EQ16_TOLERANCE:.0%} of the BEM ensemble at every resolved load{body}",
             get("eq16_max_rel_dev", math.nan), get("eq16_max_rel_dev_ci_low", math.nan),
             get("eq16_max_rel_dev_ci_high", math.nan), EQ16_TOLERANCE,
             verdict_bound(EQ16_TOLERANCE, get("eq16_max_rel_dev_ci_low", math.nan),
@@ -69,7 +104,7 @@ def claims_table(cross, reps, zeta_df, cfg: dict):
         if cross_verdict == "unresolved":
             cross_verdict = "untested: " + r["note"].split("unresolved: ")[-1].split(";")[0]
         rows.append(_claim(
-            "b", "crossover force F_tr of eq. 17 (zeta = 1.7/(H+1); Fig. 3: 8e-5 E* L^2)",
+            "b", f"crossover force F_tr of eq. 17 (zeta = 1.7/(H+1); Fig. 3: 8e-5 E* L^2){body}",
             r["Ftr_measured"], r["Ftr_ci_low"], r["Ftr_ci_high"], r["Ftr_pred_estimate"], cross_verdict,
             sweep=sweep, loads=loads, note=(f"measured: eq. 16 with free prefactors, F/(E*L^2); eq. 17 with the "
                                             f"fitted zeta = {r['Ftr_pred_fit']:.3g}: {r['verdict_fit']}"), **where))
@@ -80,7 +115,7 @@ def claims_table(cross, reps, zeta_df, cfg: dict):
                 verdict(r["zeta_estimate"], r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"]),
                 sweep=sweep, loads=loads, **where))
         for claim, name, text in (("d", "slope_low", "low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)"),
-                                  ("e", "slope_high", "high-force slope = 1/3 (Hertz, eq. 9)")):
+                                  ("e", "slope_high", "high-force slope = 1/(m+1) (1/3: Hertz, eq. 9)")):
             window = "low" if name == "slope_low" else "high"
             ratio = cfg["fit"]["slopes"][f"{window}_max_ratio" if window == "low" else "high_min_ratio"]
             rows.append(_claim(
@@ -92,21 +127,27 @@ def claims_table(cross, reps, zeta_df, cfg: dict):
                       f"{verdict(r[f'{name}_eq16'], r[f'{name}_ci_low'], r[f'{name}_ci_high'])}"), **where))
         if "hertz_coefficient" in r and math.isfinite(r["hertz_coefficient"]):
             rows.append(_claim(
-                "e", "Hertz prefactor A of F = A k^3 + B k^(H+1) equals L/(6R) (eq. 10)", r["hertz_coefficient"],
+                "e", f"body prefactor A of F = A k^(m+1) + B k^(H+1) equals eq. 7 (L/(6R): Hertz, eq. 10){body}",
+                r["hertz_coefficient"],
                 r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"], r["hertz_coefficient_theory"],
                 verdict(r["hertz_coefficient_theory"], r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"]),
                 sweep=sweep, loads=loads, note="normalised units F/(E*L^2), k/(E*L)", **where))
         rows.append(_claim(
-            "f", "below F_tr roughness lowers k against the smooth sphere (Conclusions)",
+            "f", f"below F_tr roughness lowers k against the smooth body (Conclusions){body}",
             get("k_over_hertz_below_Ftr", math.nan), get("k_over_hertz_below_Ftr_ci_low", math.nan),
             get("k_over_hertz_below_Ftr_ci_high", math.nan), 1.0,
             verdict_bound(1.0, get("k_over_hertz_below_Ftr_ci_low", math.nan),
                           get("k_over_hertz_below_Ftr_ci_high", math.nan), side="below")
             if r["n_loads_below_Ftr"] else "untested: no resolved load below F_tr",
             sweep=sweep, loads=f"{int(r['n_loads_below_Ftr'])} resolved loads below F_tr",
-            note="measured: max over those loads of k/k_Hertz(F)", **where))
-    rows += _scaling_claims(cross, reps, cfg)
-    rows += _lambda_claims(cross, cfg)
+            note="measured: max over those loads of k/k_body(F) (eq. 9 for m = 2)", **where))
+    paper = _is_paper_setting(cross, L) if len(cross) else cross
+    rows += _scaling_claims(paper, reps, cfg)
+    rows += _lambda_claims(paper, cfg)
+    if groups is not None and "sphere" in groups:
+        from .effects import effect_claims
+
+        rows += [_claim(**row) for row in effect_claims(groups["sphere"], cross, cfg)]
     return pd.DataFrame(rows).sort_values("claim", kind="stable", ignore_index=True)
 
 
@@ -130,8 +171,9 @@ def _scaling_claims(cross, reps, cfg):
             design = np.column_stack([np.ones(len(sub)), np.log(sub[axis].to_numpy(float)),
                                       *[np.log(sub[a].to_numpy(float)) for a in others]])
             point = np.linalg.lstsq(design, np.log(sub["Ftr_measured"].to_numpy(float)), rcond=None)[0][1]
-            boot = np.array([reps["Ftr_replicates"].sel(hurst=hurst, radius=ra, h_rms=hr).values
-                             for ra, hr in zip(sub["radius"], sub["h_rms"])])      # (combos, replicates)
+            boot = np.array([reps["Ftr_replicates"].sel(
+                {a: row[a] for a in reps["Ftr_replicates"].dims if a != "replicate"}).values
+                for _, row in sub.iterrows()])                                     # (combos, replicates)
             exponents = np.linalg.pinv(design)[1] @ np.log(boot)
             lo, hi = interval(exponents, level)
             rows.append(_claim("g", statement, float(point), lo, hi, theory_value, verdict(theory_value, lo, hi),
@@ -160,8 +202,8 @@ def _lambda_claims(cross, cfg):
     return rows
 
 
-def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, out_csv):
-    """``claims`` rule: crossover.csv, its replicates and zeta.csv -> claims.csv."""
+def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, stiffness_nc, out_csv):
+    """``claims`` rule: crossover.csv, its replicates, zeta.csv and the runs -> claims.csv."""
     import pandas as pd
     import xarray as xr
 
@@ -169,6 +211,6 @@ def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, out_csv):
 
     cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
     with xr.open_dataset(crossover_nc, engine="netcdf4") as reps:
-        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg)
+        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, analysis.read_groups(stiffness_nc))
     analysis.write_csv(table, out_csv)
     log.info("claims:\n%s", table.to_string())

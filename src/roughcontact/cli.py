@@ -22,12 +22,15 @@ _FLAGS = {
     "'forces.sphere.from'": "--force-from", "'forces.flat.from'": "--force-from",
     "'forces.sphere.to'": "--force-to", "'forces.flat.to'": "--force-to",
     "'forces.sphere.count'": "--force-count", "'forces.flat.count'": "--force-count",
+    "'exponent[0]'": "--exponent", "'rolloff[0]'": "--rolloff", "'cutoff[0]'": "--cutoff",
+    "'hardness[0]'": "--hardness",
 }
 #: number flags -> their config key; each must be finite (--radius may be inf: a flat surface)
 _NUMBER_FLAGS = {
     "hurst": ("hurst", 0), "radius": ("radius", 0), "h_rms": ("h_rms", 0), "length": ("grid", "length"),
     "e_star": ("e_star",), "force_from": ("forces", "{kind}", "from"), "force_to": ("forces", "{kind}", "to"),
     "tol": ("solver", "tol"), "rel_step": ("solver", "rel_step"),
+    "exponent": ("exponent", 0), "rolloff": ("rolloff", 0), "cutoff": ("cutoff", 0), "hardness": ("hardness", 0),
 }
 DEFAULT_FORCES = {"sphere": (1e-7, 1e-2, 21), "flat": (1e-6, 3e-3, 13)}
 _FIT = {"zeta": {"min_cells": 1, "max_area_fraction": 1.0}, "slopes": {"low_max_ratio": 1.0, "high_min_ratio": 1.0}}
@@ -46,6 +49,12 @@ def _parser() -> argparse.ArgumentParser:
     ind.add_argument("--radius", type=float, required=True, help="sphere radius R; inf = nominally flat")
     ind.add_argument("--h-rms", type=float, required=True, help="rms roughness height")
     ind.add_argument("--seed", type=int, default=0, help="random seed of the surface (default 0)")
+    ind.add_argument("--exponent", type=float, default=None,
+                     help="body of revolution z = (R/m)(r/R)^m of the sphere (default 2: the paraboloid)")
+    ind.add_argument("--rolloff", type=float, default=None, help="roll-off wavelength of the spectrum (default: L)")
+    ind.add_argument("--cutoff", type=float, default=None, help="short-wavelength cutoff (default: none)")
+    ind.add_argument("--hardness", type=float, default=None,
+                     help="penetration hardness in units of E* (default: elastic)")
     ind.add_argument("--n", type=int, default=None, help="grid points per side (default: config or 257)")
     ind.add_argument("--length", type=float, default=None, help="side length L (default: config or 1)")
     ind.add_argument("--e-star", type=float, default=None, help="effective modulus E* (default: config or 1)")
@@ -125,6 +134,7 @@ def settings_from_args(args) -> dict:
         "grid": grid, "e_star": args.e_star if args.e_star is not None else base.get("e_star", 1.0),
         "hurst": [args.hurst], "radius": [args.radius], "h_rms": [args.h_rms], "seeds": [args.seed],
         "forces": {kind: forces}, "solver": solver, "fit": base.get("fit", _FIT),
+        **{axis: [getattr(args, axis)] for axis in study.DEFAULTS if getattr(args, axis) is not None},
     }
     if schema is None:  # installed without the workflow: the core checks its own arguments
         resolved = config._coerce(cfg)
@@ -135,7 +145,9 @@ def settings_from_args(args) -> dict:
         resolved["seeds"] = [int(args.seed)]
     else:
         resolved = config.resolve_config(cfg, schema=schema)
-    return study.job_settings(resolved, args.hurst, args.radius, args.h_rms, args.seed)
+    run = {"hurst": args.hurst, "radius": args.radius, "h_rms": args.h_rms, "seed": args.seed,
+           **{axis: getattr(args, axis) for axis in study.DEFAULTS if getattr(args, axis) is not None}}
+    return study.job_settings(resolved, run)
 
 
 def _flagged(message: str) -> str:

@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import _validate
+from . import _validate, theory
 
 __all__ = [
     "ConfigError",
@@ -384,18 +384,22 @@ def _fill_defaults(instance, node, root):
                 _fill_defaults(instance[name], sub, root)
 
 
-def full_contact_slope(hurst: float, n: int, length: float) -> float:
+def full_contact_slope(hurst: float, n: int, length: float, *, rolloff: float | None = None,
+                       cutoff: float | None = None) -> float:
     """Estimated rms slope / h_rms of a self-affine surface with C(q) ~ q^(-2H-2)
-    between q0 = 2 pi / L and the Nyquist wave number q1 = pi n / L."""
+    between q0 = 2 pi / L and the Nyquist wave number q1 = pi n / L (or the
+    cutoff 2 pi/cutoff), constant below the roll-off 2 pi/rolloff."""
     with np.errstate(all="ignore"):  # extreme (but finite) L or H: the estimate is then inf or nan
-        q = np.geomspace(2 * np.pi / length, np.pi * n / length, 4001)
+        q_top = np.pi * n / length if cutoff is None else min(np.pi * n / length, 2 * np.pi / cutoff)
+        q = np.geomspace(2 * np.pi / length, q_top, 4001)
         lnq = np.log(q)
+        psd = np.maximum(q, 2 * np.pi / (length if rolloff is None else rolloff)) ** (-2 * hurst - 2)
 
         def trap(y):
             return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(lnq)))
 
-        num = trap(q ** (2 - 2 * hurst))  # int q^3 C(q) dq = int q^4 C dlnq
-        den = trap(q ** (-2 * hurst))     # int q C(q) dq = int q^2 C dlnq
+        num = trap(q**4 * psd)  # int q^3 C(q) dq = int q^4 C dlnq
+        den = trap(q**2 * psd)  # int q C(q) dq = int q^2 C dlnq
         return float(np.sqrt(num / den))
 
 
@@ -426,8 +430,10 @@ def resolve_config(raw: dict, schema=None) -> dict:
     cfg["grid"]["n"] = int(cfg["grid"]["n"])
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
     cfg["e_star"] = float(cfg["e_star"])
-    for axis in ("hurst", "radius", "h_rms"):
+    for axis in ("hurst", "radius", "h_rms", "exponent"):
         cfg[axis] = sorted(float(v) for v in cfg[axis])
+    for axis in ("rolloff", "cutoff", "hardness"):  # null (the paper's setting) first
+        cfg[axis] = sorted((None if v is None else float(v) for v in cfg[axis]), key=lambda v: (v is not None, v))
     seeds = cfg["seeds"]
     cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)
     for rng in cfg.get("forces", {}).values():
@@ -469,13 +475,55 @@ def resolve_config(raw: dict, schema=None) -> dict:
                 f"n = {n}); allowed: to < {limit:.3g}"
             )
     if "sphere" in kinds and "sphere" in cfg["forces"]:
-        rmax = max(r for r in cfg["radius"] if math.isfinite(r))
         to = cfg["forces"]["sphere"]["to"]
-        a_over_l = (3 * to * rmax / (4 * length)) ** (1 / 3)  # Hertz: a^3 = 3 F R / (4 E*)
-        if a_over_l > 0.25:
-            limit = 4 * length * 0.25**3 / (3 * rmax)
-            raise ConfigError(
-                f"config key 'forces.sphere.to' = {to:g} gives a Hertz contact radius of {a_over_l:.2f} L for "
-                f"R = {rmax:g}, too close to the edge of the free-space grid; allowed: to <= {limit:.3g} for this radius"
-            )
+        for exponent in cfg["exponent"]:
+            rmax = max(r for r in cfg["radius"] if math.isfinite(r))
+            # smooth body (eq. 7 with H -> m): F = c a^(m+1), for m = 2 Hertz a^3 = 3 F R / (4 E*)
+            c = float(theory.body_indentation(length, rmax, 1.0, exponent=exponent).force) / length ** (exponent + 1)
+            a_over_l = (to * length**2 / c) ** (1 / (exponent + 1)) / length
+            if a_over_l > 0.25:
+                limit = c * (0.25 * length) ** (exponent + 1) / length**2
+                body = "Hertz" if exponent == 2 else f"smooth-body (m = {exponent:g})"
+                raise ConfigError(
+                    f"config key 'forces.sphere.to' = {to:g} gives a {body} contact radius of {a_over_l:.2f} L for "
+                    f"R = {rmax:g}, too close to the edge of the free-space grid; allowed: to <= {limit:.3g} for this radius"
+                )
+    _check_spectrum_and_hardness(cfg, kinds)
     return cfg
+
+
+def _check_spectrum_and_hardness(cfg: dict, kinds: set) -> None:
+    """The checks of the optional axes that a JSON schema cannot express."""
+    n, length = cfg["grid"]["n"], cfg["grid"]["length"]
+    rolloffs = [length if r is None else r for r in cfg["rolloff"]]
+    cutoffs = [0.0 if c is None else c for c in cfg["cutoff"]]
+    for i, rolloff in enumerate(cfg["rolloff"]):
+        if rolloff is not None and rolloff > length:
+            raise ConfigError(f"config key 'rolloff[{i}]' = {rolloff:g} is not allowed; allowed: null or a wavelength "
+                              f"<= grid.length = {length:g} (the longest wavelength of the surface)")
+    for i, cutoff in enumerate(cfg["cutoff"]):
+        if cutoff is not None and cutoff < 2 * length / n:
+            raise ConfigError(f"config key 'cutoff[{i}]' = {cutoff:g} is not allowed; allowed: null or a wavelength "
+                              f">= 2 cells = 2 grid.length/grid.n = {2 * length / n:.3g}")
+        if cutoff is not None and cutoff >= min(rolloffs):
+            raise ConfigError(f"config key 'cutoff[{i}]' = {cutoff:g} is not allowed; allowed: a wavelength below every "
+                              f"roll-off ({min(rolloffs):g}), else no self-affine band is left")
+    for i, hardness in enumerate(cfg["hardness"]):
+        if hardness is None:
+            continue
+        for kind in sorted(kinds):
+            to = cfg["forces"][kind]["to"]
+            # fully plastic: F = hardness * area; a sphere's contact must stay within L/4 of its apex
+            limit = hardness if kind == "flat" else math.pi * hardness / 16
+            if to >= limit:
+                raise ConfigError(
+                    f"config key 'hardness[{i}]' = {hardness:g} (units of E*) is too soft for forces.{kind}.to = "
+                    f"{to:g}: a fully plastic contact would cover {'the whole grid' if kind == 'flat' else 'more than L/4'}"
+                    f"; allowed: hardness > {to / (limit / hardness):.3g} or a smaller forces.{kind}.to")
+    if max(cutoffs) > 0 and "flat" in kinds and cfg["forces"].get("flat"):
+        slope = min(full_contact_slope(h, n, length, rolloff=r, cutoff=c or None)
+                    for h in cfg["hurst"] for r in rolloffs for c in cutoffs) * min(cfg["h_rms"])
+        if cfg["forces"]["flat"]["to"] >= 0.5 * slope:
+            raise ConfigError(
+                f"config key 'forces.flat.to' = {cfg['forces']['flat']['to']:g} would press the flat surfaces with "
+                f"a cutoff close to full contact (rms slope ~ {slope:.3g}); allowed: to < {0.5 * slope:.3g}")

@@ -1,14 +1,15 @@
-"""Figures of the parameter study (the paper's Figs. 1-4, ζ(H), a collapse plot).
+"""Figures of the parameter study: the paper's Figs. 1-4, ζ(H) and a collapse plot.
 
 :func:`figure_specs` (no heavy imports) tells the workflow which files the
-``figures`` rule writes; :func:`make_figures` draws them (matplotlib, xarray
-and pandas are imported there).
+``figures`` rule writes; :func:`make_figures` draws them, one function per
+figure (:data:`DRAW`), from a :class:`Inputs` bundle (matplotlib, xarray and
+pandas are imported there). Forces are F/(E* L²), stiffnesses k/(E* L).
 """
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
-from pathlib import Path
 
 from . import study
 
@@ -18,34 +19,36 @@ FIG_DIR = "results/figures"
 CAPTIONS = "../report"  # relative to workflow/rules/
 
 
-def _tag(hurst, radius, h_rms) -> str:
-    return f"H{study.format_value(hurst)}_R{study.format_value(radius)}_h{study.format_value(h_rms)}"
+def _sphere_combos(cfg: dict) -> list[dict]:
+    """Sphere combinations as merged-file coordinates (optional axes as numbers)."""
+    L = cfg["grid"]["length"]
+    return [{**{a: study.coordinate(a, c[a], L) if a in study.DEFAULTS else c[a] for a in study.AXES["sphere"]},
+             "name": study.combo_name(c)} for c in study.combinations(cfg) if c["kind"] == "sphere"]
 
 
 def figure_specs(cfg: dict) -> list[dict]:
-    """One dict per figure: path, caption (relative to workflow/rules), category, labels."""
+    """One dict per figure: key, path, caption (relative to workflow/rules), category, labels."""
     specs = [
-        {"key": "fig1", "path": f"{FIG_DIR}/fig1_surface.png", "caption": "fig1.rst",
+        {"key": ("fig1",), "path": f"{FIG_DIR}/fig1_surface.png", "caption": "fig1.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 1 self-affine surface"}},
-        {"key": "fig2", "path": f"{FIG_DIR}/fig2_rough_sphere.png", "caption": "fig2.rst",
+        {"key": ("fig2",), "path": f"{FIG_DIR}/fig2_rough_sphere.png", "caption": "fig2.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 2 rough sphere"}},
     ]
-    for hurst, radius, h in study.combinations(cfg):
-        if math.isfinite(radius):
-            specs.append({
-                "key": ("fig3", hurst, radius, h),
-                "path": f"{FIG_DIR}/fig3_{_tag(hurst, radius, h)}.png", "caption": "fig3.rst",
-                "category": "Fig. 3 stiffness vs force",
-                "labels": {"figure": "Fig. 3", "H": f"{hurst:g}", "R": f"{radius:g}", "h_rms": f"{h:g}"},
-            })
+    for combo in _sphere_combos(cfg):
+        labels = {"figure": "Fig. 3", "H": f"{combo['hurst']:g}", "R": f"{combo['radius']:g}",
+                  "h_rms": f"{combo['h_rms']:g}"}
+        if combo["name"].count("_") > 2:  # an optional axis off the paper's setting
+            labels["variant"] = combo["name"].split("_", 3)[3]
+        specs.append({"key": ("fig3", combo), "path": f"{FIG_DIR}/fig3_{combo['name']}.png", "caption": "fig3.rst",
+                      "category": "Fig. 3 stiffness vs force", "labels": labels})
     specs += [
-        {"key": "fig4", "path": f"{FIG_DIR}/fig4_profiles.png", "caption": "fig4.rst",
+        {"key": ("fig4",), "path": f"{FIG_DIR}/fig4_profiles.png", "caption": "fig4.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 4 equivalent profiles"}},
-        {"key": "zeta", "path": f"{FIG_DIR}/zeta.png", "caption": "zeta.rst",
+        {"key": ("zeta",), "path": f"{FIG_DIR}/zeta.png", "caption": "zeta.rst",
          "category": "zeta(H) and collapse", "labels": {"figure": "zeta(H)"}},
     ]
     if any(math.isfinite(r) for r in cfg["radius"]):
-        specs.append({"key": "collapse", "path": f"{FIG_DIR}/collapse.png", "caption": "collapse.rst",
+        specs.append({"key": ("collapse",), "path": f"{FIG_DIR}/collapse.png", "caption": "collapse.rst",
                       "category": "zeta(H) and collapse", "labels": {"figure": "collapse"}})
     for spec in specs:
         spec["caption"] = f"{CAPTIONS}/{spec['caption']}"
@@ -56,152 +59,226 @@ def _pick(values, preferred):
     return preferred if preferred in values else values[len(values) // 2]
 
 
+@dataclasses.dataclass(frozen=True)
+class Inputs:
+    """What the figures draw from: the resolved config, the sphere ensemble (or None),
+    the ζ and crossover tables, and the surface shown in Figs. 1, 2 and 4."""
+
+    cfg: dict
+    ensemble: object
+    zeta: object
+    crossover: object
+    hurst: float
+    h_rms: float
+    radius: float
+    seed: int
+
+    def zeta_used(self, hurst):
+        """Fitted ζ(H), or 1.7/(H+1) (eq. 13) where none was fitted."""
+        from . import theory
+
+        z = dict(zip(self.zeta["hurst"], self.zeta["zeta"])).get(hurst, math.nan)
+        return z if math.isfinite(z) else float(theory.zeta_estimate(hurst))
+
+
+def fig1(plt, inputs: Inputs, _key):
+    """Fig. 1: (a) a self-affine surface, (b) a cut through it."""
+    import numpy as np
+
+    from . import surfaces
+
+    cfg, H0, h0, seed = inputs.cfg, inputs.hurst, inputs.h_rms, inputs.seed
+    L, n = cfg["grid"]["length"], cfg["grid"]["n"]
+    z = surfaces.self_affine(n, hurst=H0, h_rms=h0, length=L, seed=seed)
+    fig, (a, b) = plt.subplots(1, 2, figsize=(9, 4), gridspec_kw={"width_ratios": [1, 1.4]})
+    im = a.imshow(z.T, cmap="gray", origin="lower", extent=(0, L, 0, L))
+    fig.colorbar(im, ax=a, label="z")
+    a.set(title=f"(a) H = {H0:g}, h_rms = {h0:g}, seed {seed}", xlabel="x", ylabel="y")
+    b.plot((np.arange(n) + 0.5) * L / n, z[:, n // 2], lw=0.8)
+    b.set(title="(b) cut at y = L/2", xlabel="x", ylabel="z")
+    fig.tight_layout()
+    return fig
+
+
+def fig2(plt, inputs: Inputs, _key):
+    """Fig. 2: the rough sphere, central half of the grid."""
+    import numpy as np
+
+    from . import surfaces
+
+    cfg, H0, h0, R0 = inputs.cfg, inputs.hurst, inputs.h_rms, inputs.radius
+    L, n = cfg["grid"]["length"], cfg["grid"]["n"]
+    z = surfaces.rough_sphere(n, radius=R0, hurst=H0, h_rms=h0, length=L, seed=inputs.seed)
+    x = (np.arange(n) - n // 2) * L / n
+    c = slice(n // 4, n - n // 4)  # central half: the roughness stays visible
+    X, Y = np.meshgrid(x[c], x[c], indexing="ij")
+    step = max(1, X.shape[0] // 96)
+    fig = plt.figure(figsize=(6, 5))
+    ax = fig.add_subplot(projection="3d")
+    ax.plot_surface(X[::step, ::step], Y[::step, ::step], z[c, c][::step, ::step], cmap="viridis",
+                    linewidth=0, antialiased=False)
+    ax.set(title=f"rough sphere R = {R0:g}, H = {H0:g}, h_rms = {h0:g} (central half)",
+           xlabel="x", ylabel="y", zlabel="z")
+    return fig
+
+
+def fig3(plt, inputs: Inputs, key):
+    """Fig. 3 for one sphere combination: the BEM ensemble, eq. 16 (any body),
+    both asymptotes and the crossover force predicted and measured (95 % interval)."""
+    import numpy as np
+
+    from . import theory
+
+    combo = key[1]
+    cfg = inputs.cfg
+    L, E, n = cfg["grid"]["length"], cfg["e_star"], cfg["grid"]["n"]
+    hurst, radius, h, m = combo["hurst"], combo["radius"], combo["h_rms"], combo["exponent"]
+    sub = inputs.ensemble.sel({a: combo[a] for a in study.AXES["sphere"]})
+    F = sub["force"].values / (E * L**2)
+    k = sub["k_mean"].values / (E * L)
+    err = np.nan_to_num(sub["k_sem"].values / (E * L))
+    res = sub["contact_cells_mean"].values >= cfg["fit"]["zeta"]["min_cells"]
+    zf = inputs.zeta_used(hurst)
+    fig, ax = plt.subplots(figsize=(6, 4.6))
+    ax.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
+                label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
+    if (~res).any():
+        ax.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
+                    label=f"< {cfg['fit']['zeta']['min_cells']} contact cells (unresolved)")
+    if "loading_k_mean" in sub and math.isfinite(combo["hardness"]):
+        ax.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
+                label="loading tangent (plastic path)")
+    Fg = np.geomspace(F.min() / 3, F.max() * 3, 200)
+    body = "Hertz, eq. 9" if m == 2 else f"smooth body m = {m:g}, eq. 7"
+    for zeta, style, text in ((zf, "k-", f"eq. 16, fitted zeta = {zf:.3g}"),
+                              (float(theory.zeta_estimate(hurst)), "k:", "eq. 16, zeta = 1.7/(H+1)")):
+        ax.plot(Fg, theory.stiffness_from_force(Fg * E * L**2, radius, hurst, h, L, E, zeta, exponent=m) / (E * L),
+                style, lw=1.5 if style == "k-" else 1, label=text)
+    ax.plot(Fg, theory.body_stiffness(Fg * E * L**2, radius, E, exponent=m) / (E * L), "--", color="C0",
+            label=f"{body} (slope {1 / (m + 1):.3g})")
+    ax.plot(Fg, theory.fractal_stiffness(Fg * E * L**2, hurst, h, L, E, zf) / (E * L), "--", color="C2",
+            label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
+    cross = inputs.crossover
+    if len(cross):
+        row = cross
+        for a in study.AXES["sphere"]:
+            if a in row:
+                row = row[np.isclose(row[a], combo[a]) | (np.isinf(row[a]) & np.isinf(combo[a]))]
+        if len(row):
+            r = row.iloc[0]
+            fp = float(r["Ftr_pred_fit"]) if math.isfinite(r["Ftr_pred_fit"]) else float(r["Ftr_pred_estimate"])
+            ax.axvline(fp, color="0.4", ls="-.", lw=1, label=f"F_tr predicted (eq. 17) = {fp:.2g}")
+            if math.isfinite(r["Ftr_ci_low"]):
+                ax.axvspan(r["Ftr_ci_low"], r["Ftr_ci_high"], color="C3", alpha=0.15, lw=0,
+                           label=f"F_tr measured = {r['Ftr_measured']:.2g} "
+                                 f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
+                ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
+    variant = combo["name"].split("_", 3)[3] if combo["name"].count("_") > 2 else ""
+    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
+           title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {variant}".strip())
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    return fig
+
+
+def fig4(plt, inputs: Inputs, _key):
+    """Fig. 4: the parabola, the equivalent profile of the roughness (eqs. 6, 14) and their sum (eq. 15)."""
+    import numpy as np
+
+    from . import theory
+
+    H0, h0, R0, L = inputs.hurst, inputs.h_rms, inputs.radius, inputs.cfg["grid"]["length"]
+    r = np.linspace(-0.2 * L, 0.2 * L, 801)  # where z_p and z_s are of similar size
+    zp = r**2 / (2 * R0)
+    zs = theory.profile_prefactor(H0, h0, L, inputs.zeta_used(H0)) * np.abs(r) ** H0
+    fig, axes = plt.subplots(1, 3, figsize=(10, 3.2))
+    for ax, zz, title in zip(axes, (zp, zs, zp + zs),
+                             ("(a) z_p = r²/(2R)", "(b) z_s = Q3D |r|^H (eq. 6, 14)", "(c) z_c = z_p + z_s (eq. 15)")):
+        ax.plot(r, zz)
+        ax.set(title=title, xlabel="r")
+    axes[0].set_ylabel("z")
+    fig.suptitle(f"R = {R0:g}, H = {H0:g}, h_rms = {h0:g}, zeta = {inputs.zeta_used(H0):.3g}", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+def zeta(plt, inputs: Inputs, _key):
+    """ζ(H) with its bootstrap interval against 1.7/(H+1) (eq. 13)."""
+    import numpy as np
+
+    from . import theory
+
+    d = inputs.zeta.sort_values("hurst")
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    yerr = np.array([d["zeta"] - d["zeta_ci_low"], d["zeta_ci_high"] - d["zeta"]])
+    ax.errorbar(d["hurst"], d["zeta"], yerr=np.nan_to_num(np.abs(yerr)), fmt="o", capsize=3, color="C3",
+                label=f"fit ({d['source'].iloc[0]}), {100 * d['confidence'].iloc[0]:.0f}% bootstrap CI")
+    hg = np.linspace(0.05, 1.95, 200)
+    ax.plot(hg, theory.zeta_estimate(hg), "k-", label="1.7/(H+1), eq. 13")
+    ax.set(xlabel="H", ylabel="zeta(H)", xlim=(0, 2) if d["hurst"].max() > 1 else (0, 1))
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+def collapse(plt, inputs: Inputs, _key):
+    """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16."""
+    import numpy as np
+
+    from . import theory
+
+    cfg = inputs.cfg
+    L, E = cfg["grid"]["length"], cfg["e_star"]
+    fig, ax = plt.subplots(figsize=(6, 4.6))
+    y = np.geomspace(0.05, 30, 300)
+    curves = set()
+    for combo in _sphere_combos(cfg):
+        hurst, m = combo["hurst"], combo["exponent"]
+        j = cfg["hurst"].index(hurst)
+        if (hurst, m) not in curves:
+            curves.add((hurst, m))
+            ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "-" if m == 2 else "--", color=f"C{j}", lw=1,
+                    label=f"eq. 16, H = {hurst:g}, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
+        zf = inputs.zeta_used(hurst)
+        ftr = theory.crossover_force(combo["radius"], hurst, combo["h_rms"], L, E, zf, exponent=m)
+        ktr = theory.body_stiffness(ftr, combo["radius"], E, exponent=m)
+        sub = inputs.ensemble.sel({a: combo[a] for a in study.AXES["sphere"]})
+        ok = sub["contact_cells_mean"].values >= cfg["fit"]["zeta"]["min_cells"]
+        ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{j}", alpha=0.7)
+    ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
+           title="all sphere runs (ensemble means, >= min_cells) over eq. 16")
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    return fig
+
+
+#: figure key -> the function that draws it
+DRAW = {"fig1": fig1, "fig2": fig2, "fig3": fig3, "fig4": fig4, "zeta": zeta, "collapse": collapse}
+
+
 def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs=None):
     """Draw every figure of :func:`figure_specs` (to *outputs*, same order, if given)."""
+    from pathlib import Path
+
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import numpy as np
     import pandas as pd
 
-    from . import analysis, provenance, surfaces, theory
+    from . import analysis, provenance
 
     specs = figure_specs(cfg)
     paths = list(outputs) if outputs is not None else [s["path"] for s in specs]
-    L, E, n = cfg["grid"]["length"], cfg["e_star"], cfg["grid"]["n"]
-    zeta_df = pd.read_csv(zeta_csv)
-    cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
-    zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"]))
-    ens = analysis.read_groups(ensemble_nc).get("sphere")
-    min_cells = cfg["fit"]["zeta"]["min_cells"]
-    H0 = _pick(cfg["hurst"], 0.7)
-    h0 = _pick(cfg["h_rms"], 9e-3)
     finite = [r for r in cfg["radius"] if math.isfinite(r)]
-    R0 = _pick(finite, 0.5) if finite else 0.5
-    seed0 = cfg["seeds"][0]
-
-    def save(fig, path):
+    inputs = Inputs(
+        cfg=cfg, ensemble=analysis.read_groups(ensemble_nc).get("sphere"), zeta=pd.read_csv(zeta_csv),
+        crossover=pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame(),
+        hurst=_pick(cfg["hurst"], 0.7), h_rms=_pick(cfg["h_rms"], 9e-3),
+        radius=_pick(finite, 0.5) if finite else 0.5, seed=cfg["seeds"][0])
+    for spec, path in zip(specs, paths):
+        fig = DRAW[spec["key"][0]](plt, inputs, spec["key"])
         with provenance.atomic_path(path) as tmp:
             fig.savefig(tmp, dpi=110, format="png")
         plt.close(fig)
-
-    def zeta_used(hurst):
-        z = zeta_of.get(hurst, math.nan)
-        return z if math.isfinite(z) else float(theory.zeta_estimate(hurst))
-
-    for spec, path in zip(specs, paths):
-        key = spec["key"]
-        if key == "fig1":
-            z = surfaces.self_affine(n, hurst=H0, h_rms=h0, length=L, seed=seed0)
-            fig, (a, b) = plt.subplots(1, 2, figsize=(9, 4), gridspec_kw={"width_ratios": [1, 1.4]})
-            im = a.imshow(z.T, cmap="gray", origin="lower", extent=(0, L, 0, L))
-            fig.colorbar(im, ax=a, label="z")
-            a.set(title=f"(a) H = {H0:g}, h_rms = {h0:g}, seed {seed0}", xlabel="x", ylabel="y")
-            x = (np.arange(n) + 0.5) * L / n
-            b.plot(x, z[:, n // 2], lw=0.8)
-            b.set(title="(b) cut at y = L/2", xlabel="x", ylabel="z")
-            fig.tight_layout()
-            save(fig, path)
-        elif key == "fig2":
-            z = surfaces.rough_sphere(n, radius=R0, hurst=H0, h_rms=h0, length=L, seed=seed0)
-            x = (np.arange(n) - n // 2) * L / n
-            c = slice(n // 4, n - n // 4)  # central half: the roughness stays visible
-            X, Y = np.meshgrid(x[c], x[c], indexing="ij")
-            zc = z[c, c]
-            step = max(1, zc.shape[0] // 96)
-            fig = plt.figure(figsize=(6, 5))
-            ax = fig.add_subplot(projection="3d")
-            ax.plot_surface(X[::step, ::step], Y[::step, ::step], zc[::step, ::step], cmap="viridis",
-                            linewidth=0, antialiased=False)
-            ax.set(title=f"rough sphere R = {R0:g}, H = {H0:g}, h_rms = {h0:g} (central half)",
-                   xlabel="x", ylabel="y", zlabel="z")
-            save(fig, path)
-        elif key[0] == "fig3":
-            _, hurst, radius, h = key
-            sub = ens.sel(hurst=hurst, radius=radius, h_rms=h)
-            F = sub["force"].values / (E * L**2)
-            k = sub["k_mean"].values / (E * L)
-            err = np.nan_to_num(sub["k_sem"].values / (E * L))
-            cells = sub["contact_cells_mean"].values
-            res = cells >= min_cells
-            zf = zeta_used(hurst)
-            fig, ax = plt.subplots(figsize=(6, 4.6))
-            ax.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
-                        label=f"BEM mean of {ens.attrs['n_seeds']} seeds")
-            if (~res).any():
-                ax.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
-                            label=f"< {min_cells} contact cells (unresolved)")
-            Fg = np.geomspace(F.min() / 3, F.max() * 3, 200)
-            ax.plot(Fg, theory.stiffness_from_force(Fg * E * L**2, radius, hurst, h, L, E, zf) / (E * L), "k-",
-                    label=f"eq. 16, fitted zeta = {zf:.3g}")
-            ze = float(theory.zeta_estimate(hurst))
-            ax.plot(Fg, theory.stiffness_from_force(Fg * E * L**2, radius, hurst, h, L, E, ze) / (E * L), "k:",
-                    lw=1, label=f"eq. 16, zeta = 1.7/(H+1) = {ze:.3g}")
-            ax.plot(Fg, theory.hertz_stiffness(Fg * E * L**2, radius, E) / (E * L), "--", color="C0",
-                    label="Hertz, eq. 9 (slope 1/3)")
-            ax.plot(Fg, theory.fractal_stiffness(Fg * E * L**2, hurst, h, L, E, zf) / (E * L), "--", color="C2",
-                    label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
-            row = cross[(np.isclose(cross["hurst"], hurst)) & (np.isclose(cross["radius"], radius))
-                        & (np.isclose(cross["h_rms"], h))] if len(cross) else cross
-            if len(row):
-                r = row.iloc[0]
-                fp = float(r["Ftr_pred_fit"]) if math.isfinite(r["Ftr_pred_fit"]) else float(r["Ftr_pred_estimate"])
-                ax.axvline(fp, color="0.4", ls="-.", lw=1, label=f"F_tr predicted (eq. 17) = {fp:.2g}")
-                if math.isfinite(r["Ftr_ci_low"]):
-                    ax.axvspan(r["Ftr_ci_low"], r["Ftr_ci_high"], color="C3", alpha=0.15, lw=0,
-                               label=f"F_tr measured = {r['Ftr_measured']:.2g} "
-                                     f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
-                    ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
-            ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
-                   title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n}")
-            ax.legend(fontsize=7, loc="lower right")
-            fig.tight_layout()
-            save(fig, path)
-        elif key == "fig4":
-            r = np.linspace(-0.2 * L, 0.2 * L, 801)  # where z_p and z_s are of similar size
-            zp = r**2 / (2 * R0)
-            q3d = theory.profile_prefactor(H0, h0, L, zeta_used(H0))
-            zs = q3d * np.abs(r) ** H0
-            fig, axes = plt.subplots(1, 3, figsize=(10, 3.2))
-            for ax, zz, title in zip(axes, (zp, zs, zp + zs),
-                                     ("(a) z_p = r²/(2R)", "(b) z_s = Q3D |r|^H (eq. 6, 14)", "(c) z_c = z_p + z_s (eq. 15)")):
-                ax.plot(r, zz)
-                ax.set(title=title, xlabel="r")
-            axes[0].set_ylabel("z")
-            fig.suptitle(f"R = {R0:g}, H = {H0:g}, h_rms = {h0:g}, zeta = {zeta_used(H0):.3g}", fontsize=9)
-            fig.tight_layout()
-            save(fig, path)
-        elif key == "zeta":
-            fig, ax = plt.subplots(figsize=(5.5, 4))
-            d = zeta_df.sort_values("hurst")
-            yerr = np.array([d["zeta"] - d["zeta_ci_low"], d["zeta_ci_high"] - d["zeta"]])
-            ax.errorbar(d["hurst"], d["zeta"], yerr=np.nan_to_num(np.abs(yerr)), fmt="o", capsize=3, color="C3",
-                        label=f"fit ({d['source'].iloc[0]}), {100 * d['confidence'].iloc[0]:.0f}% bootstrap CI")
-            hg = np.linspace(0.05, 1.95, 200)
-            ax.plot(hg, theory.zeta_estimate(hg), "k-", label="1.7/(H+1), eq. 13")
-            ax.set(xlabel="H", ylabel="zeta(H)", xlim=(0, 2) if d["hurst"].max() > 1 else (0, 1))
-            ax.legend(fontsize=7)
-            fig.tight_layout()
-            save(fig, path)
-        elif key == "collapse":
-            fig, ax = plt.subplots(figsize=(6, 4.6))
-            y = np.geomspace(0.05, 30, 300)
-            for j, hurst in enumerate(cfg["hurst"]):
-                ax.plot(y**3 + y ** (hurst + 1), y, "-", color=f"C{j}", lw=1,
-                        label=f"eq. 16, H = {hurst:g}: F/F_tr = y³ + y^(H+1)")
-                for radius in finite:
-                    for h in cfg["h_rms"]:
-                        zf = zeta_used(hurst)
-                        ftr = theory.crossover_force(radius, hurst, h, L, E, zf)
-                        ktr = theory.hertz_stiffness(ftr, radius, E)
-                        sub = ens.sel(hurst=hurst, radius=radius, h_rms=h)
-                        ok = sub["contact_cells_mean"].values >= min_cells
-                        ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3,
-                                color=f"C{j}", alpha=0.7)
-            ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
-                   title="all sphere runs (ensemble means, >= min_cells) over eq. 16")
-            ax.legend(fontsize=7)
-            fig.tight_layout()
-            save(fig, path)
     log.info("wrote %s", ", ".join(paths))

@@ -87,10 +87,10 @@ class Eq16Fit:
     normalised units F/(E* L²) and k/(E* L))
     ----------
     hertz_coefficient : A; Hertz (eq. 10) gives ``A = L/(6R)``, i.e. ``1/(6 R E*²)``
-        in physical units.
+        in physical units (a body ``z ∝ r^m``: eq. 7 with H → m).
     rough_coefficient : B; eq. 12 gives ``B = (h/L) ζ^−(H+1)``.
-    crossover_stiffness : ``k_tr = (B/A)^(1/(2−H))``, where the two terms are equal.
-    crossover_force : ``F_tr = A k_tr³``, the force where the asymptotes
+    crossover_stiffness : ``k_tr = (B/A)^(1/(m−H))``, where the two terms are equal.
+    crossover_force : ``F_tr = A k_tr^(m+1)``, the force where the asymptotes
         (eqs. 10 and 12) intersect: eq. 17's quantity. The fitted curve itself
         passes ``k_tr`` at ``2 F_tr``.
     """
@@ -101,9 +101,11 @@ class Eq16Fit:
     crossover_force: np.ndarray
 
 
-def fit_eq16(force, stiffness, hurst: float, *, iterations: int = 40) -> Eq16Fit:
+def fit_eq16(force, stiffness, hurst: float, *, exponent: float = 2.0, iterations: int = 40) -> Eq16Fit:
     """Fit eq. 16 with both prefactors free in log space: minimise
-    ``Σ_i [ln(A k_i³ + B k_i^(H+1)) − ln F_i]²`` over ``ln A`` and ``ln B``.
+    ``Σ_i [ln(A k_i^(m+1) + B k_i^(H+1)) − ln F_i]²`` over ``ln A`` and ``ln B``
+    (m = 2, the paraboloid: ``A k³``; a body of revolution ``z ∝ r^m`` has
+    ``F ∝ k^(m+1)``, eq. 7 with H → m).
 
     Parameters
     ----------
@@ -113,7 +115,9 @@ def fit_eq16(force, stiffness, hurst: float, *, iterations: int = 40) -> Eq16Fit
         Stiffnesses k/(E* L) at those loads; leading dimensions (e.g. bootstrap
         replicates) are fitted independently, vectorised.
     hurst : float
-        Hurst exponent H (the exponents 3 and H + 1 are fixed).
+        Hurst exponent H (the exponents m + 1 and H + 1 are fixed).
+    exponent : float
+        Exponent m of the body of revolution (keyword-only; 2: the paraboloid).
     iterations : int
         Damped Gauss–Newton steps (keyword-only); 40 reach round-off on
         every curve tried, from the start below.
@@ -130,7 +134,7 @@ def fit_eq16(force, stiffness, hurst: float, *, iterations: int = 40) -> Eq16Fit
     F = np.asarray(force, dtype=float)
     k = np.asarray(stiffness, dtype=float)
     log_f = np.log(F)
-    u = 3.0 * np.log(k)                # ln k³
+    u = (exponent + 1.0) * np.log(k)   # ln k^(m+1)
     v = (hurst + 1.0) * np.log(k)      # ln k^(H+1)
     x, y = np.exp(u - log_f), np.exp(v - log_f)
     sxx, syy, sxy = (x * x).sum(-1), (y * y).sum(-1), (x * y).sum(-1)
@@ -157,9 +161,9 @@ def fit_eq16(force, stiffness, hurst: float, *, iterations: int = 40) -> Eq16Fit
         d2 = -((j11 + damp) * g2 - j12 * g1) / det
         ln_a = ln_a + np.clip(d1, -2.0, 2.0)
         ln_b = ln_b + np.clip(d2, -2.0, 2.0)
-    ln_k_tr = (ln_b - ln_a) / (2.0 - hurst)
+    ln_k_tr = (ln_b - ln_a) / (exponent - hurst)
     return Eq16Fit(hertz_coefficient=np.exp(ln_a), rough_coefficient=np.exp(ln_b),
-                   crossover_stiffness=np.exp(ln_k_tr), crossover_force=np.exp(ln_a + 3.0 * ln_k_tr))
+                   crossover_stiffness=np.exp(ln_k_tr), crossover_force=np.exp(ln_a + (exponent + 1.0) * ln_k_tr))
 
 
 def _slopes(log_f: np.ndarray, log_k: np.ndarray) -> np.ndarray:
@@ -187,7 +191,8 @@ class SphereVerdicts:
 
 def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: float, h_rms: float,
                     length: float, zeta_fit: float, indices: np.ndarray, min_cells: int,
-                    low_max_ratio: float, high_min_ratio: float, level: float = 0.95) -> SphereVerdicts:
+                    low_max_ratio: float, high_min_ratio: float, exponent: float = 2.0,
+                    level: float = 0.95) -> SphereVerdicts:
     """Crossover force, slopes and eq. 16 checks of one sphere combination.
 
     Parameters
@@ -207,6 +212,9 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
     low_max_ratio, high_min_ratio : float
         Slope windows ``F ≤ low_max_ratio·F_tr`` (resolved loads) and
         ``F ≥ high_min_ratio·F_tr``, F_tr of eq. 17 with the fitted ζ.
+    exponent : float
+        Body of revolution ``z = (R/m)(r/R)^m`` (2: the paper's paraboloid):
+        eqs. 16 and 17 with the smooth body's eq. 7 in place of Hertz.
     level : float
         Confidence level of the intervals.
     """
@@ -219,21 +227,22 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
     z_used = zeta_fit if math.isfinite(zeta_fit) else z_est
     if not math.isfinite(zeta_fit):
         notes.append("no fitted zeta: 1.7/(H+1) used for eq. 16 and the slope windows")
-    f_pred_fit = theory.crossover_force(radius, hurst, h_rms, L, 1.0, zeta_fit) / L**2
-    f_pred_est = theory.crossover_force(radius, hurst, h_rms, L, 1.0, z_est) / L**2
+    m = exponent
+    f_pred_fit = theory.crossover_force(radius, hurst, h_rms, L, 1.0, zeta_fit, exponent=m) / L**2
+    f_pred_est = theory.crossover_force(radius, hurst, h_rms, L, 1.0, z_est, exponent=m) / L**2
     f_window = f_pred_fit if math.isfinite(f_pred_fit) else f_pred_est
     resolved = cells >= min_cells
     k_mean = k_seeds.mean(0)
     k_boot = k_seeds[indices].mean(1)          # (resamples, m): ensemble means of resampled seeds
-    row = {"hurst": hurst, "radius": radius, "h_rms": h_rms, "zeta_fit": zeta_fit, "zeta_estimate": z_est,
+    row = {"hurst": hurst, "radius": radius, "exponent": m, "h_rms": h_rms, "zeta_fit": zeta_fit, "zeta_estimate": z_est,
            "Ftr_pred_fit": f_pred_fit, "Ftr_pred_estimate": f_pred_est}
 
     # crossover: eq. 16 with free prefactors over every resolved load
     Fr = F[resolved]
     replicates = np.full(indices.shape[0], np.nan)
     if resolved.sum() >= 4:
-        fit = fit_eq16(Fr, k_mean[resolved], hurst)
-        boot = fit_eq16(Fr, k_boot[:, resolved], hurst)
+        fit = fit_eq16(Fr, k_mean[resolved], hurst, exponent=m)
+        boot = fit_eq16(Fr, k_boot[:, resolved], hurst, exponent=m)
         f_tr = float(fit.crossover_force)
         replicates = np.where(np.isfinite(boot.crossover_force), boot.crossover_force, np.nan)
         below, above = int((Fr < f_tr).sum()), int((Fr > f_tr).sum())
@@ -251,7 +260,10 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
         zs_lo, zs_hi = interval(z_sphere, level)
         row.update({"Ftr_measured": f_tr, "Ftr_ci_low": lo, "Ftr_ci_high": hi,
                     "hertz_coefficient": float(fit.hertz_coefficient), "hertz_coefficient_ci_low": a_lo,
-                    "hertz_coefficient_ci_high": a_hi, "hertz_coefficient_theory": L / (6 * radius),
+                    "hertz_coefficient_ci_high": a_hi,
+                    # k/(E* L) = 1 is the contact radius a = L/2 (k = 2 E* a)
+                    "hertz_coefficient_theory": float(theory.body_indentation(L / 2, radius, 1.0, exponent=m).force)
+                    / L**2,
                     "rough_coefficient": float(fit.rough_coefficient), "rough_coefficient_ci_low": b_lo,
                     "rough_coefficient_ci_high": b_hi,
                     "rough_coefficient_eq12": h_rms / L * z_used ** -(hurst + 1),
@@ -269,7 +281,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
     # asymptotic slopes
     for name, mask, theory_value in (
         ("slope_low", resolved & (F <= low_max_ratio * f_window), 1 / (hurst + 1)),
-        ("slope_high", resolved & (F >= high_min_ratio * f_window), 1 / 3),
+        ("slope_high", resolved & (F >= high_min_ratio * f_window), 1 / (m + 1)),
     ):
         row[f"{name}_theory"] = theory_value
         row[f"n_loads_{name.split('_')[1]}"] = int(mask.sum())
@@ -277,7 +289,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
             log_f = np.log(F[mask])
             value = float(_slopes(log_f, np.log(k_mean[mask])))
             s_lo, s_hi = interval(_slopes(log_f, np.log(k_boot[:, mask])), level)
-            k16 = theory.stiffness_from_force(F[mask] * L**2, radius, hurst, h_rms, L, 1.0, z_used) / L
+            k16 = theory.stiffness_from_force(F[mask] * L**2, radius, hurst, h_rms, L, 1.0, z_used, exponent=m) / L
             row.update({name: value, f"{name}_ci_low": s_lo, f"{name}_ci_high": s_hi,
                         f"{name}_eq16": float(_slopes(log_f, np.log(k16))),
                         f"{name}_verdict": verdict(theory_value, s_lo, s_hi)})
@@ -288,7 +300,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
 
     # eq. 16 (fitted zeta, no free parameter) against the ensemble, and k against Hertz below F_tr
     if resolved.any():
-        k16 = theory.stiffness_from_force(Fr * L**2, radius, hurst, h_rms, L, 1.0, z_used) / L
+        k16 = theory.stiffness_from_force(Fr * L**2, radius, hurst, h_rms, L, 1.0, z_used, exponent=m) / L
         dev = np.abs(k_boot[:, resolved] / k16 - 1).max(-1)
         d_lo, d_hi = interval(dev, level)
         log_dev = np.abs(np.log10(k_mean[resolved] / k16))
@@ -300,7 +312,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
     soft = resolved & (F < f_split)
     row["n_loads_below_Ftr"] = int(soft.sum())
     if soft.any():
-        k_h = theory.hertz_stiffness(F[soft] * L**2, radius, 1.0) / L
+        k_h = theory.body_stiffness(F[soft] * L**2, radius, 1.0, exponent=m) / L
         ratio = (k_boot[:, soft] / k_h).max(-1)
         r_lo, r_hi = interval(ratio, level)
         row.update({"k_over_hertz_below_Ftr": float((k_mean[soft] / k_h).max()),
@@ -315,9 +327,11 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
 # tables
 # --------------------------------------------------------------------------
 def crossover_table(groups: dict, zeta_df, cfg: dict):
-    """``crossover.csv`` (one row per sphere combination, :func:`sphere_verdicts`)
-    and a Dataset of the bootstrap replicates of the measured F_tr, dims
-    (hurst, radius, h_rms, replicate)."""
+    """``crossover.csv`` (one row per sphere combination of every sweep axis,
+    :func:`sphere_verdicts`) and a Dataset of the bootstrap replicates of the
+    measured F_tr over those axes and ``replicate``."""
+    import itertools
+
     import pandas as pd
     import xarray as xr
 
@@ -329,28 +343,26 @@ def crossover_table(groups: dict, zeta_df, cfg: dict):
     resamples = int(fit["zeta"].get("bootstrap", 1000))
     indices = bootstrap_indices(ds.sizes["seed"], resamples)
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
-    rows = []
-    replicates = np.full((ds.sizes["hurst"], ds.sizes["radius"], ds.sizes["h_rms"], resamples), np.nan)
+    axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
+    replicates = np.full([ds.sizes[a] for a in axes] + [resamples], np.nan)
     force = ds["force"].values / (E * L**2)
-    for i, hurst in enumerate(ds["hurst"].values.tolist()):
-        for j, radius in enumerate(ds["radius"].values.tolist()):
-            for m, h_rms in enumerate(ds["h_rms"].values.tolist()):
-                sub = ds.sel(hurst=hurst, radius=radius, h_rms=h_rms).transpose("seed", "force")
-                result = sphere_verdicts(
-                    force, sub["stiffness"].values / (E * L), sub["contact_cells"].values,
-                    hurst=hurst, radius=radius, h_rms=h_rms, length=L,
-                    zeta_fit=float(zeta_of.get(hurst, math.nan)), indices=indices,
-                    min_cells=fit["zeta"]["min_cells"], low_max_ratio=fit["slopes"]["low_max_ratio"],
-                    high_min_ratio=fit["slopes"]["high_min_ratio"],
-                    level=float(fit["zeta"].get("confidence", 0.95)))
-                rows.append(result.row)
-                replicates[i, j, m] = result.crossover_replicates
+    rows = []
+    for position in itertools.product(*(range(ds.sizes[a]) for a in axes)):
+        combo = {a: float(ds[a].values[i]) for a, i in zip(axes, position)}
+        sub = ds.isel(dict(zip(axes, position))).transpose("seed", "force")
+        result = sphere_verdicts(
+            force, sub["stiffness"].values / (E * L), sub["contact_cells"].values,
+            hurst=combo["hurst"], radius=combo["radius"], h_rms=combo["h_rms"], length=L,
+            exponent=combo.get("exponent", 2.0), zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)),
+            indices=indices, min_cells=fit["zeta"]["min_cells"], low_max_ratio=fit["slopes"]["low_max_ratio"],
+            high_min_ratio=fit["slopes"]["high_min_ratio"], level=float(fit["zeta"].get("confidence", 0.95)))
+        rows.append({**combo, **result.row})
+        replicates[position] = result.crossover_replicates
     reps = xr.Dataset(
-        {"Ftr_replicates": (("hurst", "radius", "h_rms", "replicate"), replicates,
+        {"Ftr_replicates": ((*axes, "replicate"), replicates,
                             {"long_name": "bootstrap replicates of the measured crossover force F_tr/(E* L^2)",
                              "units": "1"})},
-        coords={"hurst": ds["hurst"], "radius": ds["radius"], "h_rms": ds["h_rms"],
-                "replicate": np.arange(resamples)},
+        coords={**{a: ds[a] for a in axes}, "replicate": np.arange(resamples)},
         attrs={"bootstrap_over": "seeds (the same resampled indices for every combination)",
                "bootstrap_seed": BOOTSTRAP_SEED})
     return pd.DataFrame(rows), reps

@@ -63,6 +63,7 @@ rule claims:
         crossover=rules.crossover.output.csv,
         replicates=rules.crossover.output.nc,
         zeta=rules.fit_zeta.output.csv,
+        stiffness=rules.merge.output.stiffness,
     output:
         csv=report(
             "results/claims.csv",

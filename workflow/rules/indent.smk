@@ -1,4 +1,4 @@
-# One job per (H, R, h_rms, seed): surface, warm-started load path, stiffness.
+# One job per run (H, R, h_rms, optional axes, seed): surface, warm-started load path, stiffness.
 rule indent:
     output:
         run=study.RUN_PATTERN,
@@ -7,15 +7,15 @@ rule indent:
     benchmark:
         study.BENCHMARK_PATTERN
     wildcard_constraints:
-        hurst=r"[0-9.e+-]+",
-        radius=r"[0-9.e+-]+|inf",
-        h_rms=r"[0-9.e+-]+",
+        combo=r"H[^/]+",
         seed=r"\d+",
     conda:
         "../../envs/roughcontact.yaml"
     threads: 1
     resources:
-        **study.indent_resources(config),  # mem_mb, runtime (minutes): for cluster executors
+        # mem_mb grows with the attempt: a job killed over its limit is retried with more
+        mem_mb=lambda wc, attempt: study.indent_resources(config)["mem_mb"] * attempt,
+        runtime=study.indent_resources(config)["runtime"],  # minutes, for cluster executors
     params:
         settings=lambda wc: study.settings_from_wildcards(config, wc),
     script:

@@ -5,4 +5,4 @@ from roughcontact.logs import log_to
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
     run_claims(snakemake.params.cfg, snakemake.input.crossover, snakemake.input.replicates, snakemake.input.zeta,
-               snakemake.output.csv)
+               snakemake.input.stiffness, snakemake.output.csv)

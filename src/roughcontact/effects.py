@@ -1,0 +1,132 @@
+"""Paired effects of the optional sweep axes on the stiffness (claims (i)–(k)).
+
+A run with a short-wavelength cutoff, a roll-off or a hardness is compared with
+the run of the same seed without it (equal seeds give the same random phases,
+so the pair differs only by the axis); intervals resample the seeds of both
+sides together (:func:`roughcontact.verdicts.bootstrap_indices`).
+
+(i) "the contact stiffness ... is determined by the large wavelength in the
+    power spectrum" (Conclusions): a cutoff changes k by less than
+    :data:`INSENSITIVE_TOLERANCE` at every resolved load whose contact radius
+    exceeds the cutoff wavelength.
+(j) a roll-off's effect on the low-force slope (the paper expects none for
+    "arbitrary power spectrum"; Pastewka et al., Phys. Rev. E 87, 062809
+    (2013) find a linear k(F) for a flat surface with a roll-off at small loads).
+(k) "the assumption of elasticity on all scales does not play a crucial role":
+    a hardness cap changes the unloading and the loading stiffness by less than
+    :data:`INSENSITIVE_TOLERANCE` at every resolved load.
+
+Forces F/(E* L²), stiffnesses k/(E* L).
+"""
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from . import study
+from .verdicts import bootstrap_indices, interval, verdict, verdict_bound
+
+__all__ = ["effect_claims", "INSENSITIVE_TOLERANCE"]
+
+#: k is "unchanged" by a cutoff or a hardness if no resolved load moves by more than this (relative)
+INSENSITIVE_TOLERANCE = 0.10
+
+_STATEMENTS = {
+    "cutoff": ("i", f"a short-wavelength cutoff changes k by < {INSENSITIVE_TOLERANCE:.0%} where the contact "
+                    "radius exceeds the cutoff (Conclusions)"),
+    "rolloff": ("j", "a roll-off leaves the low-force slope unchanged (arbitrary spectrum, Conclusions)"),
+    "hardness": ("k", f"a hardness cap changes k by < {INSENSITIVE_TOLERANCE:.0%} (elasticity on all scales "
+                      "is not crucial, Conclusions)"),
+}
+
+
+def _untested(axis, why, paper):
+    claim, statement = _STATEMENTS[axis]
+    return {"claim": claim, "statement": statement, "measured": math.nan, "low": math.nan, "high": math.nan,
+            "paper": paper, "verdict_text": f"untested: {why}"}
+
+
+def effect_claims(ds, cross, cfg: dict) -> list[dict]:
+    """Rows of claims (i)–(k) from the sphere Dataset *ds* (merged runs) and the
+    crossover table *cross* (for the low-force window); keyword dicts of
+    :func:`roughcontact.claims._claim`."""
+    L, E = cfg["grid"]["length"], cfg["e_star"]
+    fit = cfg["fit"]
+    level = float(fit["zeta"].get("confidence", 0.95))
+    indices = bootstrap_indices(ds.sizes["seed"], int(fit["zeta"].get("bootstrap", 1000)))
+    force = ds["force"].values / (E * L**2)
+    rows = []
+    for axis in ("cutoff", "rolloff", "hardness"):
+        paper = 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
+        baseline = study.coordinate(axis, None, L)
+        values = ds[axis].values.tolist()
+        if baseline not in values or len(values) < 2:
+            rows.append(_untested(axis, f"no {axis} swept" if values == [baseline]
+                                  else f"no run without a {axis} to compare with", paper))
+            continue
+        others = [d for d in ds["stiffness"].dims if d not in ("seed", "force", axis)]
+        for value in values:
+            if value == baseline:
+                continue
+            for position in itertools.product(*(ds[d].values.tolist() for d in others)):
+                pick = dict(zip(others, position))
+                rows += _pair(axis, value, baseline, ds.sel(pick), pick, force, cross, cfg, indices, level, paper)
+    return rows
+
+
+def _pair(axis, value, baseline, ds, pick, force, cross, cfg, indices, level, paper):
+    """The rows of one (axis value, combination) against the baseline."""
+    claim, statement = _STATEMENTS[axis]
+    with_, without = ds.sel({axis: value}), ds.sel({axis: baseline})
+    resolved = ((with_["contact_cells"].mean("seed") >= cfg["fit"]["zeta"]["min_cells"])
+                & (without["contact_cells"].mean("seed") >= cfg["fit"]["zeta"]["min_cells"])).values
+    where = {**pick, axis: value}
+    sweep = (f"sphere H = {pick['hurst']:g}, R = {pick['radius']:g}, h_rms = {pick['h_rms']:g}, {axis} = {value:g} "
+             f"against {axis} = {baseline:g}, {ds.sizes['seed']} paired seeds, n = {cfg['grid']['n']}")
+    if axis == "cutoff":
+        radius = np.sqrt(with_["contact_area"].mean("seed").values / math.pi)
+        mask = resolved & (radius > value)
+        names = [("stiffness", "")]
+        loads = f"{int(mask.sum())} resolved loads with contact radius > cutoff {value:g}"
+    elif axis == "hardness":
+        mask = resolved
+        names = [("stiffness", " (unloading stiffness)"), ("loading_stiffness", " (loading tangent)")]
+        loads = f"{int(mask.sum())} resolved loads"
+    else:
+        match = cross
+        for name, coordinate in {**pick, axis: baseline}.items():
+            match = match[match[name] == coordinate]
+        f_tr = match["Ftr_pred_fit"].iloc[0] if len(match) else math.nan
+        if not math.isfinite(f_tr) and len(match):
+            f_tr = match["Ftr_pred_estimate"].iloc[0]
+        mask = resolved & (force <= cfg["fit"]["slopes"]["low_max_ratio"] * f_tr)
+        names = [("stiffness", "")]
+        loads = f"{int(mask.sum())} resolved loads with F <= {cfg['fit']['slopes']['low_max_ratio']:g} F_tr"
+    rows = []
+    for name, what in names:
+        if mask.sum() < (2 if axis == "rolloff" else 1):
+            rows.append({**_untested(axis, f"{int(mask.sum())} loads qualify", paper), **where,
+                         "sweep": sweep, "loads": loads})
+            continue
+        k_with = with_[name].transpose("seed", "force").values[:, mask]
+        k_without = without[name].transpose("seed", "force").values[:, mask]
+        if axis == "rolloff":
+            log_f = np.log(force[mask])
+            xm = log_f - log_f.mean()
+
+            def measure(a, b):
+                return ((np.log(a) - np.log(b)) * xm).sum(-1) / (xm @ xm)
+        else:
+            def measure(a, b):
+                return np.abs(a / b - 1).max(-1)
+        value_measured = float(measure(k_with.mean(0), k_without.mean(0)))
+        low, high = interval(measure(k_with[indices].mean(1), k_without[indices].mean(1)), level)
+        text = (verdict(0.0, low, high) if axis == "rolloff"
+                else verdict_bound(INSENSITIVE_TOLERANCE, low, high, side="below"))
+        rows.append({"claim": claim, "statement": statement + what, "measured": value_measured, "low": low,
+                     "high": high, "paper": paper, "verdict_text": text, "sweep": sweep, "loads": loads,
+                     "note": ("measured: change of the low-force slope d ln k/d ln F" if axis == "rolloff"
+                              else "measured: max |k_with/k_without - 1|"), **where})
+    return rows
