@@ -158,6 +158,13 @@ def fig3(plt, inputs: Inputs, key):
             label=f"{body} (slope {1 / (m + 1):.3g})")
     ax.plot(Fg, theory.fractal_stiffness(Fg * E * L**2, hurst, h, L, E, zf) / (E * L), "--", color="C2",
             label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
+    if m == 2 and combo["name"].count("_") == 2:  # the paper's setting: Greenwood-Tripp on the same spectrum
+        from .greenwood_tripp import self_affine_sphere_curve
+
+        gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
+        shown = (gt.force >= Fg[0] * E * L**2) & (gt.force <= Fg[-1] * E * L**2)
+        ax.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
+                label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
     cross = inputs.crossover
     if len(cross):
         row = cross

@@ -79,6 +79,7 @@ __all__ = [
     "asperity_parameters",
     "greenwood_tripp",
     "greenwood_tripp_curve",
+    "self_affine_sphere_curve",
     "gt_function",
     "influence_matrix",
     "mu_parameter",
@@ -393,9 +394,14 @@ def greenwood_tripp_curve(depths_star, *, radius: float, e_star: float,
     """
     check_finite_positive("e_star", e_star)
     mu = mu_parameter(asperities, radius)
-    sigma = asperities.summit_sigma
     depths = np.atleast_1d(np.asarray(depths_star, dtype=float))
     solutions = [greenwood_tripp(float(d), mu, rho_max=rho_max, points=points) for d in depths]
+    return _curve(depths, solutions, radius=radius, e_star=e_star, asperities=asperities)
+
+
+def _curve(depths, solutions, *, radius, e_star, asperities) -> GreenwoodTrippCurve:
+    """GT solutions at ``depths`` (d*) in physical units."""
+    mu, sigma = mu_parameter(asperities, radius), asperities.summit_sigma
     force_unit = e_star * sigma**1.5 * math.sqrt(radius / 2.0)
     return GreenwoodTrippCurve(
         depth_star=depths,
@@ -403,3 +409,35 @@ def greenwood_tripp_curve(depths_star, *, radius: float, e_star: float,
         approach=sigma * np.array([s.approach_star for s in solutions]),
         stiffness=force_unit / sigma * np.array([s.stiffness_star for s in solutions]),
         mu=mu, sigma=sigma)
+
+
+#: central separations d* = d/σ of :func:`self_affine_sphere_curve`: from light contact (3σ)
+#: to well past GT's transition to Hertz (−1.5σ)
+SPHERE_DEPTHS_STAR = np.linspace(3.0, -1.5, 10)
+
+
+def self_affine_sphere_curve(*, hurst: float, h_rms: float, n: int, length: float, radius: float,
+                             e_star: float, depths_star=SPHERE_DEPTHS_STAR, points_per_unit: int = 8,
+                             rho_limit: float = 80.0) -> GreenwoodTrippCurve:
+    """GT's load curve for the paper's rough sphere: the asperity parameters (η, β,
+    σ) from the spectral moments of the generated self-affine spectrum on an
+    ``n × n`` grid of side ``length`` (:func:`self_affine_moments`, Nayak/McCool),
+    ``B = radius``. Each ``d*`` is solved on ``rho_max = 5, 10, 20, ...`` (units
+    √(2Bσ), ``points_per_unit`` nodes per unit, keyword-only) until the pressure
+    has died out at ``rho_max``; separations whose load spreads beyond
+    ``rho_limit`` are left out of the curve."""
+    asperities = asperity_parameters(self_affine_moments(hurst, h_rms, n, length))
+    mu = mu_parameter(asperities, radius)
+    depths, solutions = [], []
+    for depth in np.atleast_1d(np.asarray(depths_star, dtype=float)):
+        rho_max = 5.0
+        while rho_max <= rho_limit:
+            try:
+                solutions.append(greenwood_tripp(float(depth), mu, rho_max=rho_max,
+                                                 points=int(points_per_unit * rho_max)))
+            except ValueError:
+                rho_max *= 2
+                continue
+            depths.append(depth)
+            break
+    return _curve(np.array(depths), solutions, radius=radius, e_star=e_star, asperities=asperities)

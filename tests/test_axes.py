@@ -1,0 +1,87 @@
+"""The optional sweep axes end to end: bodies of revolution, a spectral cutoff and a
+hardness through the real `snakemake` on a 65^2 grid (16 indent jobs), then the
+merged dimensions, the run names, the plastic variables and the claims rows."""
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from roughcontact import analysis, config, study
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = {
+    "grid": {"n": 65, "length": 1.0}, "e_star": 1.0, "hurst": [0.7], "radius": [0.5], "h_rms": [9.0e-3],
+    "exponent": [2.0, 4.0], "cutoff": [None, 0.05], "hardness": [None, 0.05], "seeds": 2,
+    "forces": {"sphere": {"from": 1.0e-4, "to": 5.0e-3, "count": 6}},
+    "solver": {"tol": 1.0e-8, "stiffness": "punch"},
+    "fit": {"zeta": {"min_cells": 10, "max_area_fraction": 0.1, "bootstrap": 100},
+            "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 3.0}},
+}
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    work = tmp_path_factory.mktemp("axes")
+    (work / "config.yaml").write_text(yaml.safe_dump(CONFIG))
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    proc = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--configfile",
+                           str(work / "config.yaml"), "--cores", "2"], cwd=work, capture_output=True, text=True,
+                          timeout=900, env=env)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    return work, config.resolve_config(CONFIG)
+
+
+def test_run_names_tag_only_the_axes_off_the_paper_setting(run):
+    work, cfg = run
+    names = sorted(p.name for p in (work / "results/runs").iterdir())
+    assert "H0.7_R0.5_h0.009" in names, names
+    assert "H0.7_R0.5_h0.009_m4.0_cutoff0.05_hardness0.05" in names, names
+    assert len(names) == 8, names
+
+
+def test_merged_dimensions_and_plastic_variables(run):
+    work, cfg = run
+    ds = analysis.read_groups(work / "results/stiffness.nc")["sphere"]
+    assert ds["stiffness"].dims == (*study.AXES["sphere"], "seed", "force"), ds["stiffness"].dims
+    assert ds["exponent"].values.tolist() == [2.0, 4.0], ds["exponent"].values
+    assert ds["cutoff"].values.tolist() == [0.0, 0.05], "cutoff null is the coordinate 0"
+    assert ds["rolloff"].values.tolist() == [1.0], "rolloff null is the coordinate L"
+    assert ds["hardness"].values[0] == 0.05 and math.isinf(ds["hardness"].values[1]), ds["hardness"].values
+    assert np.issubdtype(ds["plastic_cells"].dtype, np.integer), ds["plastic_cells"].dtype
+    elastic = ds.sel(hardness=math.inf)
+    assert int(elastic["plastic_cells"].max()) == 0, "an elastic run has no plastic cell"
+    np.testing.assert_array_equal(elastic["loading_stiffness"].values, elastic["stiffness"].values,
+                                  err_msg="an elastic run's loading tangent is its stiffness")
+    plastic = ds.sel(hardness=0.05)
+    assert int(plastic["plastic_cells"].isel(force=-1).min()) > 0, "hardness 0.05 E* flows at the largest load"
+    assert not ds["stiffness"].isnull().any(), "no NaN padding"
+
+
+def test_claims_rows_of_the_axes(run):
+    work, _ = run
+    claims = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
+    assert set(claims["verdict"]) <= {"consistent", "differs", "untested"}, set(claims["verdict"])
+    for claim in "ik":
+        rows = claims[claims["claim"] == claim]
+        assert len(rows) >= 2, f"claim ({claim}) has {len(rows)} rows"
+    unloading = claims[(claims["claim"] == "k") & claims["statement"].str.contains("unloading")]
+    assert (unloading["measured"] > 0).all(), unloading[["measured", "verdict"]]
+    rolloff = claims[claims["claim"] == "j"]
+    assert rolloff["reason"].tolist() == ["no rolloff swept"], rolloff["reason"]
+    body = claims[(claims["claim"] == "a") & (claims["exponent"] == 4.0)]
+    assert len(body) == 4 and body["statement"].str.contains("m = 4").all(), body["statement"]
+
+
+def test_a_figure_per_body_and_variant(run):
+    work, _ = run
+    names = {p.name for p in (work / "results/figures").glob("fig3_*.png")}
+    assert len(names) == 8, names
+    assert "fig3_H0.7_R0.5_h0.009_m4.0.png" in names, names
