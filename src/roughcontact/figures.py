@@ -183,7 +183,7 @@ def fig3(plt, inputs: Inputs, key):
     variant = combo["name"].split("_", 3)[3] if combo["name"].count("_") > 2 else ""
     ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
            title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {variant}".strip())
-    ax.legend(fontsize=7, loc="lower right")
+    ax.legend(fontsize=6.5, loc="upper left")
     fig.tight_layout()
     return fig
 
