@@ -254,20 +254,22 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
             reason = (f"unresolved: {below} resolved loads below and {above} above the fitted F_tr = {f_tr:.3g}; "
                       "eq. 16 needs at least 2 on each side")
             replicates = np.full(indices.shape[0], np.nan)
-        a_lo, a_hi = interval(boot.hertz_coefficient, level)
-        b_lo, b_hi = interval(boot.rough_coefficient, level)
-        z_sphere = (h_rms / L / boot.rough_coefficient) ** (1 / (hurst + 1))
-        zs_lo, zs_hi = interval(z_sphere, level)
-        row.update({"Ftr_measured": f_tr, "Ftr_ci_low": lo, "Ftr_ci_high": hi,
-                    "hertz_coefficient": float(fit.hertz_coefficient), "hertz_coefficient_ci_low": a_lo,
+        # the prefactors mean something only where both terms are seen: left NaN for an unresolved crossover
+        a, b = ((float(fit.hertz_coefficient), float(fit.rough_coefficient)) if not reason
+                else (math.nan, math.nan))
+        a_lo, a_hi = interval(boot.hertz_coefficient * a / a, level)
+        b_lo, b_hi = interval(boot.rough_coefficient * b / b, level)
+        zs_lo, zs_hi = interval((h_rms / L / boot.rough_coefficient) ** (1 / (hurst + 1)) * b / b, level)
+        row.update({"Ftr_measured": f_tr if not reason else math.nan, "Ftr_ci_low": lo, "Ftr_ci_high": hi,
+                    "hertz_coefficient": a, "hertz_coefficient_ci_low": a_lo,
                     "hertz_coefficient_ci_high": a_hi,
                     # k/(E* L) = 1 is the contact radius a = L/2 (k = 2 E* a)
                     "hertz_coefficient_theory": float(theory.body_indentation(L / 2, radius, 1.0, exponent=m).force)
                     / L**2,
-                    "rough_coefficient": float(fit.rough_coefficient), "rough_coefficient_ci_low": b_lo,
+                    "rough_coefficient": b, "rough_coefficient_ci_low": b_lo,
                     "rough_coefficient_ci_high": b_hi,
                     "rough_coefficient_eq12": h_rms / L * z_used ** -(hurst + 1),
-                    "zeta_sphere": (h_rms / L / float(fit.rough_coefficient)) ** (1 / (hurst + 1)),
+                    "zeta_sphere": (h_rms / L / b) ** (1 / (hurst + 1)),
                     "zeta_sphere_ci_low": zs_lo, "zeta_sphere_ci_high": zs_hi})
     else:
         reason = f"unresolved: only {int(resolved.sum())} resolved loads (eq. 16 has 2 free prefactors; need >= 4)"
