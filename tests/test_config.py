@@ -124,6 +124,14 @@ def test_lint_is_clean(tmp_path):
     assert "Lints for" not in proc.stdout + proc.stderr
 
 
+def test_snakefmt_is_clean():
+    """The workflow catalog's second check: every Snakemake file formatted by snakefmt."""
+    files = [ROOT / "Snakefile", *sorted((ROOT / "workflow/rules").glob("*.smk"))]
+    proc = subprocess.run([sys.executable, "-m", "snakefmt", "--check", *map(str, files)],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
 def test_paper_preset_plans_50_indent_jobs_per_combination(tmp_path):
     proc = _snakemake(["-n", "--configfile", str(ROOT / "presets/paper.yaml")], tmp_path)
     assert proc.returncode == 0, proc.stderr
