@@ -200,8 +200,13 @@ def _lambda_claims(cross, cfg):
         low, high = r["Ftr_ci_low"] / scale, r["Ftr_ci_high"] / scale
         where = {"hurst": hurst, "radius": r["radius"], "h_rms": r["h_rms"]}
         predicted = r["Ftr_pred_estimate"] / scale
+        unresolved = "untested: unresolved crossover, " + str(r["note"]).split("unresolved: ")[-1].split(";")[0]
+
+        def judge(value):
+            return verdict(value, low, high) if math.isfinite(low) else unresolved
+
         rows.append(_claim(
-            "h", statement, r["Ftr_measured"] / scale, low, high, predicted, verdict(predicted, low, high),
+            "h", statement, r["Ftr_measured"] / scale, low, high, predicted, judge(predicted),
             note=f"paper value: eq. 17 at H = {hurst:g} (tends to {LAMBDA_EQ17:.2f} as H -> 0; GT {LAMBDA_GT})",
             **where))
         # Greenwood-Tripp on the same spectrum and grid, its crossover by the same fit with H -> 0 (F ~ k)
@@ -210,7 +215,7 @@ def _lambda_claims(cross, cfg):
         rows.append(_claim(
             "h", f"eq. 18 with Greenwood-Tripp's lambda ({LAMBDA_GT} in the paper; the same fit of GT's curve on "
                  "these surfaces gives the paper value column)", r["Ftr_measured"] / scale, low, high, lam,
-            verdict(lam, low, high), note=f"GT mu = {gt.mu:.3g} (grows with the grid: no cutoff)", **where))
+            judge(lam), note=f"GT mu = {gt.mu:.3g} (grows with the grid: no cutoff)", **where))
     return rows
 
 
