@@ -50,6 +50,26 @@ def love_coefficients(n: int) -> np.ndarray:
             - corner(x - 0.5, y + 0.5) + corner(x - 0.5, y - 0.5))
 
 
+#: Rows of a dense influence matrix gathered at a time (bounds the index temporaries).
+_GATHER_ROWS = 256
+
+
+def _gather(table: np.ndarray, rows, cols, source_rows, source_cols, offset, out) -> np.ndarray:
+    """``A[a, b] = table.flat[offset(rows[a] − source_rows[b], cols[a] − source_cols[b])]``,
+    gathered a block of :data:`_GATHER_ROWS` rows at a time (into ``out`` if given)."""
+    rows, cols = np.asarray(rows, dtype=np.intp), np.asarray(cols, dtype=np.intp)
+    source_rows = rows if source_rows is None else np.asarray(source_rows, dtype=np.intp)
+    source_cols = cols if source_cols is None else np.asarray(source_cols, dtype=np.intp)
+    flat = table.reshape(-1)
+    matrix = np.empty((rows.size, source_rows.size)) if out is None else out
+    for start in range(0, rows.size, _GATHER_ROWS):
+        stop = min(start + _GATHER_ROWS, rows.size)
+        index = offset(np.subtract.outer(rows[start:stop], source_rows),
+                       np.subtract.outer(cols[start:stop], source_cols))
+        np.take(flat, index, out=matrix[start:stop])
+    return matrix
+
+
 class FreeSpaceOperator:
     """Non-periodic elastic half-space on an ``n × n`` grid (DC-FFT).
 
@@ -78,11 +98,28 @@ class FreeSpaceOperator:
         self.n = n
         self.spacing = length / n
         self.e_star = e_star
-        self.coefficients = love_coefficients(n) * (self.spacing / (np.pi * e_star))
-        self.self_coefficient = self.coefficients[0, 0]
+        self._table = np.empty((0, 0))
+        self.self_coefficient = self._coefficients(1)[0, 0]
         self._spectra: collections.OrderedDict[tuple[int, int], np.ndarray] = \
             collections.OrderedDict()
         self._symmetric: np.ndarray | None = None
+
+    def _coefficients(self, size: int) -> np.ndarray:
+        """Displacements under a unit cell pressure at offsets ``[0, size)²`` (at least).
+
+        The table grows on demand (by at least half its side, at most to ``n``), so
+        that a solve on a window of a large grid evaluates Love's formula on the
+        offsets the window needs, not on the whole grid.
+        """
+        if self._table.shape[0] < size:
+            side = min(self.n, max(size, (3 * self._table.shape[0]) // 2, 64))
+            self._table = love_coefficients(side) * (self.spacing / (np.pi * self.e_star))
+        return self._table
+
+    @property
+    def coefficients(self) -> np.ndarray:
+        """``(n, n)`` displacements under a unit cell pressure at offsets ``(i, j) ≥ 0``."""
+        return self._coefficients(self.n)
 
     def window_size(self, cells: int) -> int:
         """Largest window ≥ ``cells`` (≤ n) convolved with the same padded FFT size."""
@@ -98,7 +135,7 @@ class FreeSpaceOperator:
             used = [(idx < m) | (idx > size - m) for idx, m, size in zip(index, shape, padded)]
             offsets = [np.where(idx < m, idx, np.where(use, size - idx, 0))
                        for idx, m, size, use in zip(index, shape, padded, used)]
-            kernel = self.coefficients[offsets[0][:, None], offsets[1][None, :]]
+            kernel = self._coefficients(max(shape))[offsets[0][:, None], offsets[1][None, :]]
             kernel = kernel * (used[0][:, None] & used[1][None, :])
             spectrum = scipy.fft.rfft2(kernel)
             self._spectra[padded] = spectrum
@@ -117,7 +154,7 @@ class FreeSpaceOperator:
         """
         if self._symmetric is None or (self._symmetric.shape[0] + 1) // 2 < half:
             index = np.abs(np.arange(-(half - 1), half))
-            self._symmetric = self.coefficients[index[:, None], index[None, :]]
+            self._symmetric = self._coefficients(half)[index[:, None], index[None, :]]
         return self._symmetric
 
     def column_limit(self, shape: tuple[int, int]) -> int:
@@ -135,19 +172,39 @@ class FreeSpaceOperator:
         for value, (i, j) in zip(values, zip(*np.unravel_index(cells, field.shape))):
             field += value * kernel[origin - i: origin - i + m1, origin - j: origin - j + m2]
 
-    def influence_matrix(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    def influence_matrix(self, rows: np.ndarray, cols: np.ndarray,
+                         source_rows: np.ndarray | None = None,
+                         source_cols: np.ndarray | None = None,
+                         out: np.ndarray | None = None) -> np.ndarray:
         """Dense ``A[a, b]``: displacement at cell ``(rows[a], cols[a])`` under unit pressure
-        on cell ``(rows[b], cols[b])`` (grid or window indices: only offsets matter)."""
-        return self.coefficients[np.abs(rows[:, None] - rows[None, :]),
-                                 np.abs(cols[:, None] - cols[None, :])]
+        on cell ``(source_rows[b], source_cols[b])`` (default: the same cells; grid or
+        window indices: only offsets matter), written to ``out`` if given."""
+        source_rows = rows if source_rows is None else source_rows
+        source_cols = cols if source_cols is None else source_cols
+        reach = [np.concatenate([a, b]) for a, b in ((rows, source_rows), (cols, source_cols))]
+        table = self._coefficients(1 + max((int(a.max() - a.min()) for a in reach if a.size),
+                                           default=0))
+        side = table.shape[1]
+        return _gather(table, rows, cols, source_rows, source_cols,
+                       lambda di, dj: np.abs(di, out=di) * side + np.abs(dj, out=dj), out)
 
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
         """Displacement on the cells of ``pressure`` (any ``m1 × m2`` window, ``m ≤ n``),
-        for that pressure alone (zero outside the window)."""
-        shape = pressure.shape
-        padded, spectrum = self._spectrum(shape)
-        product = scipy.fft.rfft2(pressure, s=padded) * spectrum
-        return scipy.fft.irfft2(product, s=padded)[: shape[0], : shape[1]]
+        for that pressure alone (zero outside the window).
+
+        The 2-D transforms are done axis by axis and pruned: the forward transform
+        along the rows runs on the ``m1`` rows that hold the pressure (the padding
+        rows are zero), the inverse along the rows on the ``m1`` rows that are
+        returned. The same 1-D transforms as ``rfft2``/``irfft2`` on the padded
+        array, minus those whose input is zero or whose output is discarded.
+        """
+        m1, m2 = pressure.shape
+        padded, spectrum = self._spectrum(pressure.shape)
+        transform = scipy.fft.rfft(pressure, n=padded[1], axis=1)
+        transform = scipy.fft.fft(transform, n=padded[0], axis=0, overwrite_x=True)
+        transform *= spectrum
+        transform = scipy.fft.ifft(transform, axis=0, overwrite_x=True)
+        return scipy.fft.irfft(transform[:m1], n=padded[1], axis=1)[:, :m2]
 
 
 class PeriodicOperator:
@@ -195,16 +252,23 @@ class PeriodicOperator:
         """Most negative displacement under a unit cell pressure: ``u ≥ min_coefficient · Σ p``."""
         return float(self._kernel.min())
 
-    def influence_matrix(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    def influence_matrix(self, rows: np.ndarray, cols: np.ndarray,
+                         source_rows: np.ndarray | None = None,
+                         source_cols: np.ndarray | None = None,
+                         out: np.ndarray | None = None) -> np.ndarray:
         """Dense ``A[a, b]``: displacement at cell ``(rows[a], cols[a])`` under unit pressure
-        on cell ``(rows[b], cols[b])``, offsets taken modulo ``n``."""
+        on cell ``(source_rows[b], source_cols[b])`` (default: the same cells), offsets
+        taken modulo ``n``, written to ``out`` if given."""
         n = self.n
-        return self._kernel[(rows[:, None] - rows[None, :]) % n, (cols[:, None] - cols[None, :]) % n]
+        return _gather(self._kernel, rows, cols, source_rows, source_cols,
+                       lambda di, dj: np.remainder(di, n, out=di) * n + np.remainder(dj, n, out=dj),
+                       out)
 
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
         """Zero-mean displacement of the periodic half-space (full ``n × n`` grid)."""
-        n = self.n
-        return scipy.fft.irfft2(scipy.fft.rfft2(pressure) * self.spectrum, s=(n, n))
+        transform = scipy.fft.rfft2(pressure)
+        transform *= self.spectrum
+        return scipy.fft.irfft2(transform, s=(self.n, self.n), overwrite_x=True)
 
 
 class DenseOperator:
@@ -217,7 +281,8 @@ class DenseOperator:
     Parameters
     ----------
     matrix : numpy.ndarray, shape (m, m)
-        ``influence_matrix`` of a grid operator for the cells.
+        ``influence_matrix`` of a grid operator for the cells (symmetric, by
+        reciprocity; a view into a larger array is fine).
     """
 
     def __init__(self, matrix: np.ndarray):
@@ -230,7 +295,7 @@ class DenseOperator:
 
     def add_columns(self, field: np.ndarray, values: np.ndarray, cells: np.ndarray) -> None:
         """Add the displacement of pressures ``values`` on ``cells`` to ``field`` in place."""
-        field += self.matrix[:, cells] @ values
+        field += values @ self.matrix[cells]  # rows: the matrix is symmetric
 
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
         """Displacement on the cells under ``pressure`` on the cells."""

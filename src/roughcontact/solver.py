@@ -20,13 +20,20 @@ otherwise it enlarges the box and solves again.
 Candidate cells (periodic): the periodic displacement can be negative but not
 below ``G_min Σp`` (``G_min`` the kernel's minimum), so a contact cell has
 ``z − min z ≤ d + |G_min| Σp``. While those cells number at most
-:data:`DENSE_CELLS` (small loads on a nominally flat surface), the solver works
+:func:`dense_limit` (small loads on a nominally flat surface), the solver works
 on them alone with a dense influence matrix, accepts the result when its depth
-is within the bound, and otherwise solves again with the larger bound. The punch
-stiffness on at most :data:`DENSE_CELLS` cells uses the dense matrix too.
+is within the bound, and otherwise solves again with the larger bound.
 
-Both arguments hold with a hardness cap too: a cell with pressure still has
-``g ≤ 0``, and the acceptance tests are a posteriori.
+Working set (periodic, warm-started): when the candidates are too many, an
+active-set scheme solves on a working set ``W`` (the previous contact set and
+the cells that were closest to touching) with a dense matrix, computes the gap
+of that solution on the whole grid with one FFT convolution and accepts it when
+no cell outside ``W`` penetrates; otherwise the penetrating cells join ``W``
+(:func:`solve_working_set`). The punch stiffness on at most :func:`dense_limit`
+cells uses a dense matrix too.
+
+All these arguments hold with a hardness cap too: a cell with pressure still
+has ``g ≤ 0``, and the acceptance tests are a posteriori.
 
 :func:`punch_stiffness` is the flat-punch force on a footprint (the exact
 tangent stiffness, Barber, Proc. R. Soc. A 459, 53 (2003)), by conjugate
@@ -43,15 +50,34 @@ from scipy.sparse.linalg import LinearOperator, cg
 from .operators import DenseOperator
 from .plastic import bounded_polonsky_keer
 
-__all__ = ["DENSE_CELLS", "capped_kernel", "equilibrium", "polonsky_keer", "punch_stiffness",
-           "solve_candidates"]
+__all__ = ["DENSE_BYTES", "DENSE_CELLS", "WORKING_MARGIN", "capped_kernel", "dense_limit",
+           "equilibrium", "polonsky_keer", "punch_stiffness", "solve_candidates",
+           "solve_working_set"]
 
 #: Incremental displacement updates between two exact (FFT) recomputations.
 _REFRESH = 50
-#: Periodic contacts whose cells that can touch are at most this many, and punch
-#: stiffness solves on at most this many cells, use a dense influence matrix
-#: (2000² doubles = 32 MB; a product costs ≈ 0.4 ms against ≈ 4 ms per FFT at 513²).
+#: The conjugate direction survives cells entering the contact set while they are at
+#: most this fraction of it and hold at most :data:`_RESTART_SHARE` of ``‖r‖²``
+#: (Polonsky & Keer restart on any entering cell).
+_RESTART_FRACTION = 0.01
+_RESTART_SHARE = 0.1
+#: Iterations without a new smallest error after which every entering cell restarts
+#: the direction again (the original rule).
+_STALL = 30
+#: Dense influence matrices on at most this many cells on a grid (or padded window)
+#: of 513² (2000² doubles = 32 MB; a product costs about as much as an FFT
+#: convolution of 513²); :func:`dense_limit` scales it with the FFT cost.
 DENSE_CELLS = 2000
+#: Largest dense influence matrix on any grid, in bytes (4096² doubles).
+DENSE_BYTES = 128 * 2**20
+#: The first working set of a warm-started periodic solve adds to the previous contact
+#: set ``c₀`` the ``⌈WORKING_MARGIN |c₀| (F/F₀ − 1)⌉ + 16`` free cells with the
+#: smallest previous gap (see :func:`solve_working_set`).
+WORKING_MARGIN = 1.5
+#: Tolerance of the working-set solves until no cell outside penetrates (then ``tol``).
+_LOOSE_TOL = 1e-4
+#: At most ``|W|/_GROWTH + 16`` penetrating cells (the deepest) join ``W`` at a time.
+_GROWTH = 4
 
 
 def _gap_state(gap, pressure, support):
@@ -87,6 +113,18 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     ``s (u − τ K t + K Δp)`` with ``K Δp`` summed column by column. ``u`` is
     recomputed by FFT when ``Δp`` is large, every ``_REFRESH`` updates, and
     before convergence is accepted.
+
+    Restarts: Polonsky & Keer reset the direction ``t`` to the residual whenever
+    a cell enters the contact set. After a warm start at a larger load, cells
+    enter and leave at the rim of the contact spots for tens of iterations, and
+    the reset makes all of them steepest-descent steps. Here ``t`` stays
+    conjugate while the entering cells are at most :data:`_RESTART_FRACTION` of
+    the contact set and hold at most :data:`_RESTART_SHARE` of ``‖r‖²`` (their
+    ``t_old`` is 0, so a large share means a stale direction), with the step
+    ``τ = rᵀt / tᵀ(K t − mean_c K t)`` of P&K's eq. (5) and a reset when
+    ``rᵀt ≤ 0``; after :data:`_STALL` iterations without a new smallest error
+    every entering cell resets ``t`` again. On the 1025² flat load path this
+    halves the iterations of the largest loads.
     """
     pressure = pressure * (total / pressure.sum())
     flat_pressure = pressure.reshape(-1)
@@ -98,7 +136,8 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     direction_support = support
     gap = np.empty_like(pressure)
     flat_gap = gap.reshape(-1)
-    conjugate = False
+    conjugate, entered = False, 0
+    fraction, best_error, best_iteration = _RESTART_FRACTION, math.inf, 0
     norm_old = 1.0
     error = math.inf
     column_limit = operator.column_limit(pressure.shape)
@@ -115,7 +154,20 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
             break
         residual = flat_gap[support] - depth
         norm = float(residual @ residual)
-        values = residual + (norm / norm_old) * flat_direction[support] if conjugate else residual
+        values, slope = residual, norm
+        if error < best_error:
+            best_error, best_iteration = error, iteration
+        elif iteration - best_iteration >= _STALL:
+            fraction = 0.0  # no progress: restart on every entering cell from now on
+        if entered:
+            newcomers = residual[support.size - entered:]
+            conjugate = (conjugate and entered <= fraction * support.size
+                         and float(newcomers @ newcomers) <= _RESTART_SHARE * norm)
+        if conjugate:
+            candidate = residual + (norm / norm_old) * flat_direction[support]
+            candidate_slope = float(residual @ candidate)
+            if candidate_slope > 0.0:
+                values, slope = candidate, candidate_slope
         norm_old = norm
         flat_direction[direction_support] = 0.0
         flat_direction[support] = values
@@ -123,14 +175,15 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
         response = operator(direction)
         on_contact = response.reshape(-1)[support]
         curvature = float((on_contact - on_contact.mean()) @ values)
-        step = norm / curvature if curvature > 0 else 1.0 / operator.self_coefficient
+        step = slope / curvature if curvature > 0 else 1.0 / operator.self_coefficient
         trial = flat_pressure[support] - step * values
         clipped = trial <= 0.0
         flat_pressure[support] = np.where(clipped, 0.0, trial)
         # cells with zero pressure and a negative gap enter the contact set
         overlap = np.concatenate([below, support[clipped & (residual < 0.0)]])
         flat_pressure[overlap] = -step * (flat_gap[overlap] - depth)
-        conjugate = overlap.size == 0
+        entered = overlap.size
+        conjugate = True
         # Δp = p − (p_old − τ t): nonzero on the clipped and the entering free cells
         changed = np.concatenate([support[clipped], below])
         delta = np.concatenate([flat_pressure[support[clipped]] - trial[clipped],
@@ -181,8 +234,8 @@ def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, 
     depth is ``≤ depth_bound`` leaves a positive gap everywhere else: it is the
     solution on the whole grid. Restricting the cells that may touch makes the body
     more compliant, so a larger depth from the candidates bounds the true one and a
-    second pass with it as the bound succeeds. Returns ``None`` (use the FFT
-    solver) when the candidates are more than :data:`DENSE_CELLS`. ``kernel`` is
+    second pass with it as the bound succeeds. Returns ``None`` (use the working set
+    or the FFT solver) when the candidates are more than :func:`dense_limit`. ``kernel`` is
     :func:`polonsky_keer` or a :func:`capped_kernel` (the argument holds for it
     too: a contact cell still has ``g ≤ 0``).
     """
@@ -192,7 +245,7 @@ def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, 
     iterations = 0
     while True:
         cells = np.flatnonzero(flat_lift <= depth_bound + reach)
-        if cells.size > DENSE_CELLS:
+        if cells.size > dense_limit(operator):
             return None
         dense = DenseOperator(operator.influence_matrix(*np.divmod(cells, n)))
         start = _start_pressure(None if initial is None else initial.reshape(-1)[cells],
@@ -209,8 +262,119 @@ def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, 
     return pressure.reshape(n, n), depth, iterations, converged, error
 
 
+def dense_limit(operator) -> int:
+    """Most cells on which a dense influence matrix replaces FFT convolutions.
+
+    A dense product on ``m`` cells costs ``∝ m²`` (and building the matrix about 50
+    products), an FFT convolution of ``N`` cells ``∝ N log N``; :data:`DENSE_CELLS`
+    is the break-even on the periodic 513² grid. Periodic grids convolve all
+    ``N = n²`` cells whatever the contact, so there the limit is
+    ``DENSE_CELLS · max(1, (N log N / (513² log 513²))^(1/2))``, at most the cells of
+    a :data:`DENSE_BYTES` matrix (4096 from 1025² on). Free-space windows grow with
+    the contact, so their break-even stays at :data:`DENSE_CELLS`.
+    """
+    if not operator.periodic:
+        return DENSE_CELLS
+    cells = operator.n**2
+    scale = max(1.0, math.sqrt(cells * math.log2(max(cells, 2)) / (513**2 * math.log2(513**2))))
+    return min(int(DENSE_CELLS * scale), math.isqrt(DENSE_BYTES // 8))
+
+
+def _grown(storage: np.ndarray, used: int, size: int, limit: int) -> np.ndarray:
+    """``storage`` (its ``used × used`` block kept) with room for ``size × size``, grown
+    by half again beyond ``size`` (at most ``limit``) when it is too small."""
+    if storage.shape[0] >= size:
+        return storage
+    grown = np.empty((min(limit, size + size // 2),) * 2)
+    grown[:used, :used] = storage[:used, :used]
+    return grown
+
+
+def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
+    """Warm-started periodic contact solved on a working set of cells with a dense matrix.
+
+    An active-set scheme with an a posteriori test, like the windows: solve on a
+    working set ``W`` (the other cells held at ``p = 0``) with the dense influence
+    matrix ``K_WW``, compute the gap ``g = lift + K p`` of that solution on the
+    whole grid with one FFT convolution, and accept it when no cell outside ``W``
+    penetrates, ``min_(not W) g ≥ d``: the solution on ``W`` then meets the
+    stopping test of :func:`polonsky_keer` on the whole grid, so it is the
+    whole-grid solution. Otherwise the deepest penetrating cells (at most
+    ``|W|/4 + 16`` at a time) join ``W``, the matrix grows by their rows and
+    columns, and the solve continues from the current pressure. Until no cell
+    outside penetrates, the solves on ``W`` stop at the looser tolerance
+    :data:`_LOOSE_TOL`; the accepted one has met ``tol``.
+
+    The first working set is the contact set ``c₀`` of ``initial`` (the previous
+    load's solution, total ``F₀``) and the ``⌈WORKING_MARGIN |c₀| (F/F₀ − 1)⌉ + 16``
+    free cells with the smallest gap under ``initial``: the cells that come into
+    contact as the load grows are mostly those that were closest to it (on the
+    1025² flat path two or three FFTs in all, instead of 40–70).
+
+    Returns ``None`` (use the FFT solver) when the first working set exceeds
+    :func:`dense_limit` cells; when a later one would, the solve continues on
+    the whole grid by FFT from the last pressure. ``kernel`` is
+    :func:`polonsky_keer` or a :func:`capped_kernel` (the test holds for it too).
+    """
+    n = lift.shape[0]
+    limit = dense_limit(operator)
+    flat_lift = lift.reshape(-1)
+    previous = np.maximum(initial, 0.0).reshape(-1)
+    support = np.flatnonzero(previous)
+    if support.size > limit:
+        return None
+    gap = flat_lift + operator(previous.reshape(n, n)).reshape(-1)
+    gap[support] = -math.inf
+    extra = math.ceil(WORKING_MARGIN * support.size * max(total / previous.sum() - 1.0, 0.0)) + 16
+    extra = min(extra, n * n - support.size)
+    if support.size + extra > limit:
+        return None
+    cells = np.sort(np.argpartition(gap, support.size + extra - 1)[: support.size + extra])
+    rows, cols = np.divmod(cells, n)
+    storage = np.empty((0, 0))
+    storage = _grown(storage, 0, cells.size, limit)
+    matrix = operator.influence_matrix(rows, cols, out=storage[: cells.size, : cells.size])
+    start = previous[cells]
+    iterations = 0
+    round_tol = max(tol, _LOOSE_TOL)
+    while True:
+        p_cells, depth, spent, converged, error = kernel(
+            flat_lift[cells], DenseOperator(matrix), total, start, round_tol, maxiter - iterations)
+        iterations += spent
+        pressure = np.zeros(n * n)
+        pressure[cells] = p_cells
+        if not converged or iterations >= maxiter:
+            break
+        gap = flat_lift + operator(pressure.reshape(n, n)).reshape(-1)
+        gap[cells] = math.inf
+        entering = np.flatnonzero(gap < depth)
+        if entering.size == 0:
+            if round_tol == tol:
+                break
+            round_tol, start = tol, p_cells
+            continue
+        most = cells.size // _GROWTH + 16
+        if entering.size > most:  # the deepest first: the others may lift off
+            entering = np.sort(entering[np.argpartition(gap[entering], most - 1)[:most]])
+        if cells.size + entering.size > limit:  # continue on the whole grid
+            pressure, depth, spent, converged, error = kernel(
+                lift, operator, total, pressure.reshape(n, n), tol, maxiter - iterations)
+            return pressure, depth, iterations + spent, converged, error
+        old, size = cells.size, cells.size + entering.size
+        new_rows, new_cols = np.divmod(entering, n)
+        storage = _grown(storage, old, size, limit)
+        operator.influence_matrix(rows, cols, new_rows, new_cols, out=storage[:old, old:size])
+        storage[old:size, :old] = storage[:old, old:size].T
+        operator.influence_matrix(new_rows, new_cols, out=storage[old:size, old:size])
+        matrix = storage[:size, :size]
+        cells = np.concatenate([cells, entering])
+        rows, cols = np.concatenate([rows, new_rows]), np.concatenate([cols, new_cols])
+        start = np.concatenate([p_cells, np.zeros(entering.size)])
+    return pressure.reshape(n, n), depth, iterations, converged, error
+
+
 def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, periodic, kernel):
-    """Windowed (non-periodic) or candidate-cell (periodic) solve of one load with ``kernel``.
+    """Windowed (non-periodic) or candidate-cell / working-set (periodic) solve of one load.
 
     Parameters
     ----------
@@ -249,6 +413,9 @@ def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, perio
         if math.isfinite(depth_bound) and depth_bound > 0:
             solution = solve_candidates(lift, operator, total, initial, tol, maxiter,
                                         depth_bound, kernel)
+            if solution is None and initial is not None:
+                solution = solve_working_set(lift, operator, total, initial, tol, maxiter,
+                                             kernel)
         if solution is None:  # from the neighbouring solution, or uniform pressure
             start = _start_pressure(initial, lift, math.inf)
             solution = kernel(lift, operator, total, start, tol, maxiter)
@@ -287,11 +454,15 @@ def punch_stiffness(operator, footprint: np.ndarray, tol: float) -> float:
 
     Solves ``K_cc p = 1`` on the cells ``c`` of the bool window ``footprint``
     (symmetric positive definite) by conjugate gradients, stopped when
-    ``‖K_cc p − 1‖ ≤ tol ‖1‖``; a dense matrix on at most :data:`DENSE_CELLS`
-    cells, FFT products otherwise.
+    ``‖K_cc p − 1‖ ≤ tol ‖1‖``; a dense matrix on at most :func:`dense_limit`
+    cells, FFT products otherwise (for the free half-space on the bounding box
+    of the footprint, which is about half the window a load's solve needs).
     """
+    if not operator.periodic and footprint.any():  # the convolution on the box is the same
+        rows, cols = (np.flatnonzero(footprint.any(axis=axis)) for axis in (1, 0))
+        footprint = footprint[rows[0]: rows[-1] + 1, cols[0]: cols[-1] + 1]
     count = int(np.count_nonzero(footprint))
-    if count <= DENSE_CELLS:
+    if count <= dense_limit(operator):
         system = operator.influence_matrix(*np.nonzero(footprint))
     else:
         field = np.zeros(footprint.shape)
