@@ -318,7 +318,10 @@ PartitionName={PARTITION} Nodes={NODE_NAME} Default=YES MaxTime=INFINITE State=U
     def started_job_ids(self) -> set[int]:
         """Job ids slurmctld's log says it allocated resources to (independent of squeue)."""
         text = self.ctld_log.read_text(errors="replace") if self.ctld_log.exists() else ""
+        # the main scheduler logs "sched: Allocate JobId=N", the backfill scheduler (which starts
+        # jobs when the machine is busy) "sched/backfill: _start_job: Started JobId=N"
         return {int(m) for m in re.findall(r"sched: Allocate JobId=(\d+)", text)} | \
+               {int(m) for m in re.findall(r"Started JobId=(\d+)", text)} | \
                {int(m) for m in re.findall(r"JobId=(\d+) NodeList=\S+ #CPUs", text)}
 
     def diagnostics(self) -> str:

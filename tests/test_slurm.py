@@ -131,7 +131,7 @@ def test_pipeline_through_slurm_equals_local(slurm_cluster, local, tmp_path):  #
     assert len(ids) >= INDENT_JOBS, log[-4000:]  # each indent job is a SLURM job
     states = slurm_cluster.job_states()
     assert all(states[i][1] == "COMPLETED" for i in ids), states
-    assert ids <= slurm_cluster.started_job_ids()
+    assert ids <= slurm_cluster.started_job_ids(), slurm_cluster.diagnostics()
     _assert_same_results(local, remote)
 
 
