@@ -126,3 +126,21 @@ def test_pruned_convolution_equals_padded_fft():
     padded, spectrum = op._spectrum(pressure.shape)
     reference = scipy.fft.irfft2(scipy.fft.rfft2(pressure, s=padded) * spectrum, s=padded)[:45, :61]
     assert np.allclose(op(pressure), reference, rtol=0, atol=1e-14 * np.abs(reference).max())
+
+
+def test_single_precision_phase_gives_the_double_solution(flat_surface, monkeypatch):
+    """Periodic P&K iterations convolve in single precision while the error is large; the
+    accepted state is checked in double precision and equals the all-double solve."""
+    calls = []
+    single = operators.PeriodicOperator.single
+    monkeypatch.setattr(operators.PeriodicOperator, "single",
+                        lambda self, p: calls.append(1) or single(self, p))
+    state = contact.solve(flat_surface, force=3e-3, length=1.0, e_star=E_STAR, periodic=True,
+                          windowed=False)
+    assert calls, "no single-precision convolution"
+    monkeypatch.setattr(solver, "_SINGLE_ERROR", 0.0)
+    double = contact.solve(flat_surface, force=3e-3, length=1.0, e_star=E_STAR, periodic=True,
+                           windowed=False)
+    assert state.gap_error <= state.tol
+    assert state.depth == pytest.approx(double.depth, rel=1e-7)
+    assert np.array_equal(state.contact, double.contact)
