@@ -179,9 +179,10 @@ def test_cancelled_indent_job_is_retried(slurm_cluster, local, tmp_path):  # noq
 
 # The first attempt of one indent job gets 60 MB: its Python (Snakemake, numpy) needs more, so
 # SLURM kills it (slurmstepd: "exceeded memory limit"); the retry (attempt 2) gets 400 MB.
+# The job is a flat run (its run name, the `combo` wildcard, holds the tag R{OOM_RADIUS}).
 OOM_SEED, OOM_RADIUS = "1", "inf"
 OOM_LIMIT = (f"indent:mem_mb=60 if attempt == 1 and wildcards.seed == '{OOM_SEED}' "
-             f"and wildcards.radius == '{OOM_RADIUS}' else 400")
+             f"and '_R{OOM_RADIUS}_' in wildcards.combo else 400")
 
 
 def test_job_over_its_memory_limit_is_retried(slurm_cluster, local, tmp_path):  # noqa: F811
@@ -200,7 +201,7 @@ def test_job_over_its_memory_limit_is_retried(slurm_cluster, local, tmp_path):  
     assert len(failed) == 1, f"expected one failed indent job, got {len(failed)}: {table}"
     first = failed[0]
     values = table[first]["comment"].split("_wildcards_")[1].split("_")
-    assert OOM_RADIUS in values and values[-1] == OOM_SEED, f"the wrong job failed: {table[first]}"
+    assert f"R{OOM_RADIUS}" in values and values[-1] == OOM_SEED, f"the wrong job failed: {table[first]}"
     assert table[first]["state"] in ("FAILED", "OUT_OF_MEMORY"), f"first attempt ended {table[first]['state']}"
     again = [jid for jid, job in table.items() if jid > first and job["comment"] == table[first]["comment"]]
     assert len(again) == 1, f"{table[first]['comment']} was resubmitted {len(again)} times: {table}"
