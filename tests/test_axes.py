@@ -85,3 +85,19 @@ def test_a_figure_per_body_and_variant(run):
     names = {p.name for p in (work / "results/figures").glob("fig3_*.png")}
     assert len(names) == 8, names
     assert "fig3_H0.7_R0.5_h0.009_m4.0.png" in names, names
+
+
+@pytest.mark.parametrize("change, key", [
+    ({"hurst": [1.0], "exponent": [1.0, 2.0]}, "'exponent[0]'"),   # parallel asymptotes: no crossover
+    ({"rolloff": [None, 1.0]}, "'rolloff'"),                         # a roll-off at L is no roll-off
+    ({"rolloff": [2.0]}, "'rolloff[0]'"),                            # longer than the surface
+    ({"cutoff": [0.01]}, "'cutoff[0]'"),                             # below 2 cells of L/65
+    ({"cutoff": [0.3], "rolloff": [0.25]}, "'cutoff[0]'"),           # no self-affine band left
+    ({"hardness": [0.001]}, "'hardness[0]'"),                        # fully plastic beyond L/4
+])
+def test_optional_axes_reject_nonsense_in_one_line(change, key):
+    with pytest.raises(config.ConfigError) as info:
+        config.resolve_config({**CONFIG, **change})
+    line = config.error_line(info.value)
+    assert len(line.splitlines()) == 1 and line.startswith("Invalid configuration"), line
+    assert key in line, line

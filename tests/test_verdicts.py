@@ -120,3 +120,17 @@ def test_verdict_of_a_value(value, low, high, expected):
 def test_verdict_of_a_bound(low, high, expected):
     """A claim 'value < 1': the interval wholly below 1 supports it, wholly above rejects it."""
     assert verdicts.verdict_bound(1.0, low, high, side="below").split(":")[0] == expected
+
+
+def test_slopes_of_a_body_shallower_than_the_roughness():
+    """A cone (m = 1) with H = 1.4: the body's term k^2 dominates at small forces, so the low-force
+    slope tends to 1/(m+1) = 1/2 and the high-force one to 1/(H+1) = 0.417 (eq. 16 with m < H)."""
+    zeta = float(theory.zeta_estimate(1.4))
+    forces = np.geomspace(1e-5, 5e-3, 12)
+    k = theory.stiffness_from_force(forces, RADIUS, 1.4, H_RMS, LENGTH, 1.0, zeta, exponent=1.0)
+    row = verdicts.sphere_verdicts(
+        forces, np.tile(k, (4, 1)), np.full((4, forces.size), 100), hurst=1.4, radius=RADIUS, h_rms=H_RMS,
+        length=LENGTH, exponent=1.0, zeta_fit=zeta, indices=verdicts.bootstrap_indices(4, 50), min_cells=20,
+        low_max_ratio=0.3, high_min_ratio=5.0).row
+    assert row["slope_low_theory"] == pytest.approx(1 / 2), "low-force asymptote of m < H"
+    assert row["slope_high_theory"] == pytest.approx(1 / 2.4), "high-force asymptote of m < H"

@@ -37,7 +37,7 @@ def write_netcdf(ds, path) -> None:
 
 def write_csv(df, path) -> None:
     with provenance.atomic_path(path) as tmp:
-        df.to_csv(tmp, index=False, float_format="%.6g")
+        df.to_csv(tmp, index=False)  # shortest round-trip repr: values read back are the values written
 
 
 def read_run(path, expected: dict | None = None):
@@ -253,9 +253,11 @@ def _zeta_points(groups, cfg, hurst):
                 k = sub["stiffness"].values
                 ok = sub["contact_cells"].values >= zc["min_cells"]
                 if math.isfinite(radius):
-                    f_tr = theory.crossover_force(radius, hurst, h, L, E, theory.zeta_estimate(hurst))
+                    m = float(sub["exponent"]) if "exponent" in sub.coords else 2.0
+                    f_tr = theory.crossover_force(radius, hurst, h, L, E, theory.zeta_estimate(hurst), exponent=m)
                     ok &= F <= zc.get("sphere_max_force_ratio", 0.3) * f_tr
-                    Fr = F - E * (k / E) ** 3 / (6 * radius)
+                    # eq. 16: the roughness carries F minus the smooth body's force at the same k = 2 E* a
+                    Fr = F - theory.body_indentation(k / (2 * E), radius, E, exponent=m).force
                     ok &= Fr > 0.1 * F
                 else:
                     ok &= sub["contact_area"].values / L**2 <= zc["max_area_fraction"]

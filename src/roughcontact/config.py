@@ -495,6 +495,15 @@ def resolve_config(raw: dict, schema=None) -> dict:
 def _check_spectrum_and_hardness(cfg: dict, kinds: set) -> None:
     """The checks of the optional axes that a JSON schema cannot express."""
     n, length = cfg["grid"]["n"], cfg["grid"]["length"]
+    if "sphere" in kinds:
+        for i, exponent in enumerate(cfg["exponent"]):
+            if exponent in cfg["hurst"]:
+                raise ConfigError(
+                    f"config key 'exponent[{i}]' = {exponent:g} equals a Hurst exponent: the body and the roughness "
+                    "then have parallel asymptotes and eqs. 16-17 no crossover; allowed: exponents other than every H")
+    if None in cfg["rolloff"] and length in cfg["rolloff"]:
+        raise ConfigError(f"config key 'rolloff' lists both null and grid.length = {length:g}, the same spectrum (a "
+                          "roll-off at L is none); allowed: one of them")
     rolloffs = [length if r is None else r for r in cfg["rolloff"]]
     cutoffs = [0.0 if c is None else c for c in cfg["cutoff"]]
     for i, rolloff in enumerate(cfg["rolloff"]):

@@ -7,8 +7,8 @@ sides together (:func:`roughcontact.verdicts.bootstrap_indices`).
 
 (i) "the contact stiffness ... is determined by the large wavelength in the
     power spectrum" (Conclusions): a cutoff changes k by less than
-    :data:`INSENSITIVE_TOLERANCE` at every resolved load whose contact radius
-    exceeds the cutoff wavelength.
+    :data:`INSENSITIVE_TOLERANCE` at every resolved load whose apparent contact
+    radius ``a = k/(2E*)`` (without the cutoff) exceeds the cutoff wavelength.
 (j) a roll-off's effect on the low-force slope (the paper expects none for
     "arbitrary power spectrum"; Pastewka et al., Phys. Rev. E 87, 062809
     (2013) find a linear k(F) for a flat surface with a roll-off at small loads).
@@ -86,7 +86,8 @@ def _pair(axis, value, baseline, ds, pick, force, cross, cfg, indices, level, pa
     sweep = (f"sphere H = {pick['hurst']:g}, R = {pick['radius']:g}, h_rms = {pick['h_rms']:g}, {axis} = {value:g} "
              f"against {axis} = {baseline:g}, {ds.sizes['seed']} paired seeds, n = {cfg['grid']['n']}")
     if axis == "cutoff":
-        radius = np.sqrt(with_["contact_area"].mean("seed").values / math.pi)
+        # the apparent contact radius of the run without the cutoff, from k = 2 E* a (flat punch)
+        radius = without["stiffness"].mean("seed").values / (2 * cfg["e_star"])
         mask = resolved & (radius > value)
         names = [("stiffness", "")]
         loads = f"{int(mask.sum())} resolved loads with contact radius > cutoff {value:g}"

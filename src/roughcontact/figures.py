@@ -170,7 +170,7 @@ def fig3(plt, inputs: Inputs, key):
         row = cross
         for a in study.AXES["sphere"]:
             if a in row:
-                row = row[np.isclose(row[a], combo[a]) | (np.isinf(row[a]) & np.isinf(combo[a]))]
+                row = row[np.isclose(row[a], combo[a], rtol=1e-12, atol=0) | (np.isinf(row[a]) & np.isinf(combo[a]))]
         if len(row):
             r = row.iloc[0]
             fp = float(r["Ftr_pred_fit"]) if math.isfinite(r["Ftr_pred_fit"]) else float(r["Ftr_pred_estimate"])

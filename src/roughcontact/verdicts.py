@@ -282,8 +282,9 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
 
     # asymptotic slopes
     for name, mask, theory_value in (
-        ("slope_low", resolved & (F <= low_max_ratio * f_window), 1 / (hurst + 1)),
-        ("slope_high", resolved & (F >= high_min_ratio * f_window), 1 / (m + 1)),
+        # the term with the smaller exponent dominates at small forces: roughness if H < m, else the body
+        ("slope_low", resolved & (F <= low_max_ratio * f_window), 1 / (min(hurst, m) + 1)),
+        ("slope_high", resolved & (F >= high_min_ratio * f_window), 1 / (max(hurst, m) + 1)),
     ):
         row[f"{name}_theory"] = theory_value
         row[f"n_loads_{name.split('_')[1]}"] = int(mask.sum())

@@ -13,9 +13,9 @@ rule indent:
         "../../envs/roughcontact.yaml"
     threads: 1
     resources:
-        # mem_mb grows with the attempt: a job killed over its limit is retried with more
+        # both grow with the attempt: a job killed over a limit is retried with more
         mem_mb=lambda wc, attempt: study.indent_resources(config)["mem_mb"] * attempt,
-        runtime=study.indent_resources(config)["runtime"],  # minutes, for cluster executors
+        runtime=lambda wc, attempt: study.indent_resources(config)["runtime"] * attempt,  # minutes
     params:
         settings=lambda wc: study.settings_from_wildcards(config, wc),
     script:
