@@ -478,11 +478,14 @@ def resolve_config(raw: dict, schema=None) -> dict:
         to = cfg["forces"]["sphere"]["to"]
         for exponent in cfg["exponent"]:
             rmax = max(r for r in cfg["radius"] if math.isfinite(r))
-            # smooth body (eq. 7 with H -> m): F = c a^(m+1), for m = 2 Hertz a^3 = 3 F R / (4 E*)
-            c = float(theory.body_indentation(length, rmax, 1.0, exponent=exponent).force) / length ** (exponent + 1)
-            a_over_l = (to * length**2 / c) ** (1 / (exponent + 1)) / length
+            # smooth body (eq. 7 with H -> m): F ∝ a^(m+1), so a/L = (F/F(a = L))^(1/(m+1));
+            # for m = 2 Hertz, a^3 = 3 F R / (4 E*). numpy floats: extreme sizes give inf or 0, no exception
+            with np.errstate(all="ignore"):
+                force_at_l = np.float64(theory.body_indentation(length, rmax, 1.0, exponent=exponent).force)
+                force_to = np.float64(to) * np.float64(length) ** 2
+                a_over_l = float((force_to / force_at_l) ** (1 / (exponent + 1)))
+                limit = float(force_at_l * 0.25 ** (exponent + 1) / np.float64(length) ** 2)
             if a_over_l > 0.25:
-                limit = c * (0.25 * length) ** (exponent + 1) / length**2
                 body = "Hertz" if exponent == 2 else f"smooth-body (m = {exponent:g})"
                 raise ConfigError(
                     f"config key 'forces.sphere.to' = {to:g} gives a {body} contact radius of {a_over_l:.2f} L for "
