@@ -144,3 +144,17 @@ def test_single_precision_phase_gives_the_double_solution(flat_surface, monkeypa
     assert state.gap_error <= state.tol
     assert state.depth == pytest.approx(double.depth, rel=1e-7)
     assert np.array_equal(state.contact, double.contact)
+
+
+def test_working_set_out_of_iterations_is_not_converged(flat_surface, monkeypatch):
+    """A working-set solve stopped by maxiter reports converged=False, never a solution
+    checked only on the working set or only at the loose tolerance."""
+    lower = contact.solve(flat_surface, force=0.8 * FORCES[-1], length=1.0, e_star=E_STAR,
+                          periodic=True)
+    monkeypatch.setattr(solver, "solve_candidates", lambda *args: None)
+    results = _record_working_sets(monkeypatch)
+    for maxiter in (1, 5, 12):
+        state = contact.solve(flat_surface, force=FORCES[-1], length=1.0, e_star=E_STAR,
+                              periodic=True, initial=lower.pressure, maxiter=maxiter)
+        assert not state.converged, f"converged in {maxiter} iterations"
+    assert any(r is not None for r in results), "no working-set solve"

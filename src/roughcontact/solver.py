@@ -129,9 +129,9 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     every entering cell resets ``t`` again. On the 1025² flat load path this
     halves the iterations of the largest loads.
 
-    Precision: with an operator that offers ``single`` (the periodic one), the
-    convolutions run in single precision (relative error ≈ 10⁻⁶, a third
-    cheaper) while the error exceeds :data:`_SINGLE_ERROR`: mostly the first
+    Precision: with an operator that offers ``single`` (both grid operators, not
+    the dense one), the convolutions run in single precision (relative error
+    ≈ 10⁻⁶, a third cheaper) while the error exceeds :data:`_SINGLE_ERROR`: mostly the first
     iterations after a warm start, in which the contact set is found. Then ``u``
     is recomputed in double precision, ``t`` reset, and every later convolution,
     the one before acceptance included, is in double precision.
@@ -360,14 +360,17 @@ def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
         iterations += spent
         pressure = np.zeros(n * n)
         pressure[cells] = p_cells
-        if not converged or iterations >= maxiter:
+        if not converged:
             break
         gap = flat_lift + operator(pressure.reshape(n, n)).reshape(-1)
         gap[cells] = math.inf
         entering = np.flatnonzero(gap < depth)
+        if entering.size == 0 and round_tol == tol:
+            break
+        if iterations >= maxiter:  # a solution on W, not (yet) on the grid
+            converged = False
+            break
         if entering.size == 0:
-            if round_tol == tol:
-                break
             round_tol, start = tol, p_cells
             continue
         most = cells.size // _GROWTH + 16
