@@ -64,8 +64,8 @@ _RESTART_SHARE = 0.1
 #: Iterations without a new smallest error after which every entering cell restarts
 #: the direction again (the original rule).
 _STALL = 30
-#: Polonsky–Keer iterations convolve in single precision (operators with ``single``)
-#: while the error exceeds this.
+#: Polonsky–Keer recomputes ``u`` in single precision (operators with ``single``)
+#: while the error exceeds this (see :func:`polonsky_keer`, Precision).
 _SINGLE_ERROR = 1e-4
 #: Dense influence matrices on at most this many cells on a grid (or padded window)
 #: of 513² (2000² doubles = 32 MB; a product costs about as much as an FFT
@@ -130,17 +130,23 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     halves the iterations of the largest loads.
 
     Precision: with an operator that offers ``single`` (both grid operators, not
-    the dense one), the convolutions run in single precision (relative error
-    ≈ 10⁻⁶, a third cheaper) while the error exceeds :data:`_SINGLE_ERROR`: mostly the first
-    iterations after a warm start, in which the contact set is found. Then ``u``
-    is recomputed in double precision, ``t`` reset, and every later convolution,
-    the one before acceptance included, is in double precision.
+    the dense one) and ``tol <`` :data:`_SINGLE_ERROR`, the response ``K t`` of
+    every direction is convolved in single precision (relative error ≈ 10⁻⁶, a
+    third cheaper), and so are the recomputations of ``u`` while the error
+    exceeds :data:`_SINGLE_ERROR` (the first iterations after a warm start, in
+    which the contact set is found). Then ``u`` is recomputed in double precision
+    and ``t`` reset; later recomputations, the one before acceptance included,
+    are in double precision. The single-precision error of the updates
+    ``−τ K t`` shrinks with the residual, as in inexact Krylov methods whose
+    products may grow less accurate as they converge (Simoncini & Szyld, SIAM J.
+    Sci. Comput. 25, 454 (2003)); the accepted state meets the stopping test
+    in double precision.
     """
     pressure = pressure * (total / pressure.sum())
     flat_pressure = pressure.reshape(-1)
     support = np.flatnonzero(flat_pressure)
     single = tol < _SINGLE_ERROR and hasattr(operator, "single")
-    convolve = operator.single if single else operator
+    respond = convolve = operator.single if single else operator
     displacement = convolve(pressure)
     exact, since_exact = True, 0
     direction = np.zeros_like(pressure)
@@ -189,7 +195,7 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
         flat_direction[direction_support] = 0.0
         flat_direction[support] = values
         direction_support = support
-        response = convolve(direction)
+        response = respond(direction)
         on_contact = response.reshape(-1)[support]
         curvature = float((on_contact - on_contact.mean()) @ values)
         step = slope / curvature if curvature > 0 else 1.0 / operator.self_coefficient
