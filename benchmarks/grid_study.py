@@ -36,9 +36,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from run import machine_lines  # noqa: E402
+from run import machine_lines
 
-from roughcontact import contact, operators, surfaces  # noqa: E402
+from roughcontact import contact, operators, surfaces
 
 #: Counted calls, by phase ("solve" or "stiffness") and kind ("fft" or "dense").
 COUNTS: collections.Counter = collections.Counter()
@@ -104,11 +104,11 @@ def run_leg(heights, forces, periodic, tol, detail):
             stiffness = contact.stiffness(state)
         stiffness_seconds = time.perf_counter() - tick
         spent = COUNTS - before
-        row = dict(force=state.force, cells=int(state.contact.sum()), it=state.iterations,
-                   fft=spent[("solve", "fft")], fft32=spent[("solve", "fft32")],
-                   dense=spent[("solve", "dense")],
-                   k_fft=spent[("stiffness", "fft")], k_dense=spent[("stiffness", "dense")],
-                   solve=solve_seconds, stiff=stiffness_seconds, depth=state.depth, k=stiffness)
+        row = {"force": state.force, "cells": int(state.contact.sum()), "it": state.iterations,
+               "fft": spent[("solve", "fft")], "fft32": spent[("solve", "fft32")],
+               "dense": spent[("solve", "dense")], "k_fft": spent[("stiffness", "fft")],
+               "k_dense": spent[("stiffness", "dense")], "solve": solve_seconds,
+               "stiff": stiffness_seconds, "depth": state.depth, "k": stiffness}
         rows.append(row)
         totals.update({key: row[key] for key in ("it", "fft", "fft32", "dense", "k_fft", "k_dense", "solve",
                                                  "stiff")})
