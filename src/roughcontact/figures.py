@@ -22,8 +22,15 @@ CAPTIONS = "../report"  # relative to workflow/rules/
 def _sphere_combos(cfg: dict) -> list[dict]:
     """Sphere combinations as merged-file coordinates (optional axes as numbers)."""
     L = cfg["grid"]["length"]
-    return [{**{a: study.coordinate(a, c[a], L) if a in study.DEFAULTS else c[a] for a in study.AXES["sphere"]},
-             "name": study.combo_name(c)} for c in study.combinations(cfg) if c["kind"] == "sphere"]
+    out = []
+    for c in study.combinations(cfg):
+        if c["kind"] == "sphere":
+            name = study.combo_name(c)
+            out.append({**{a: study.coordinate(a, c[a], L) if a in study.DEFAULTS else c[a]
+                           for a in study.AXES["sphere"]},
+                        # the tags of the optional axes off the paper's setting ("" at the paper's setting)
+                        "name": name, "variant": name.split("_", 3)[3] if name.count("_") > 2 else ""})
+    return out
 
 
 def figure_specs(cfg: dict) -> list[dict]:
@@ -37,8 +44,8 @@ def figure_specs(cfg: dict) -> list[dict]:
     for combo in _sphere_combos(cfg):
         labels = {"figure": "Fig. 3", "H": f"{combo['hurst']:g}", "R": f"{combo['radius']:g}",
                   "h_rms": f"{combo['h_rms']:g}"}
-        if combo["name"].count("_") > 2:  # an optional axis off the paper's setting
-            labels["variant"] = combo["name"].split("_", 3)[3]
+        if combo["variant"]:
+            labels["variant"] = combo["variant"]
         specs.append({"key": ("fig3", combo), "path": f"{FIG_DIR}/fig3_{combo['name']}.png", "caption": "fig3.rst",
                       "category": "Fig. 3 stiffness vs force", "labels": labels})
     specs += [
@@ -158,7 +165,7 @@ def fig3(plt, inputs: Inputs, key):
             label=f"{body} (slope {1 / (m + 1):.3g})")
     ax.plot(Fg, theory.fractal_stiffness(Fg * E * L**2, hurst, h, L, E, zf) / (E * L), "--", color="C2",
             label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
-    if m == 2 and combo["name"].count("_") == 2:  # the paper's setting: Greenwood-Tripp on the same spectrum
+    if not combo["variant"]:  # the paper's setting: Greenwood-Tripp on the same spectrum
         from .greenwood_tripp import self_affine_sphere_curve
 
         gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
@@ -180,9 +187,8 @@ def fig3(plt, inputs: Inputs, key):
                            label=f"F_tr measured = {r['Ftr_measured']:.2g} "
                                  f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
                 ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
-    variant = combo["name"].split("_", 3)[3] if combo["name"].count("_") > 2 else ""
     ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
-           title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {variant}".strip())
+           title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {combo['variant']}".strip())
     ax.legend(fontsize=6.5, loc="upper left")
     fig.tight_layout()
     return fig

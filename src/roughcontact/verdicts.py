@@ -255,11 +255,13 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
                       "eq. 16 needs at least 2 on each side")
             replicates = np.full(indices.shape[0], np.nan)
         # the prefactors mean something only where both terms are seen: left NaN for an unresolved crossover
-        a, b = ((float(fit.hertz_coefficient), float(fit.rough_coefficient)) if not reason
-                else (math.nan, math.nan))
-        a_lo, a_hi = interval(boot.hertz_coefficient * a / a, level)
-        b_lo, b_hi = interval(boot.rough_coefficient * b / b, level)
-        zs_lo, zs_hi = interval((h_rms / L / boot.rough_coefficient) ** (1 / (hurst + 1)) * b / b, level)
+        if reason:
+            a = b = a_lo = a_hi = b_lo = b_hi = zs_lo = zs_hi = math.nan
+        else:
+            a, b = float(fit.hertz_coefficient), float(fit.rough_coefficient)
+            a_lo, a_hi = interval(boot.hertz_coefficient, level)
+            b_lo, b_hi = interval(boot.rough_coefficient, level)
+            zs_lo, zs_hi = interval((h_rms / L / boot.rough_coefficient) ** (1 / (hurst + 1)), level)
         row.update({"Ftr_measured": f_tr if not reason else math.nan, "Ftr_ci_low": lo, "Ftr_ci_high": hi,
                     "hertz_coefficient": a, "hertz_coefficient_ci_low": a_lo,
                     "hertz_coefficient_ci_high": a_hi,
