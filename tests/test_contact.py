@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from roughcontact import contact, operators, solver, surfaces
+from roughcontact import active_sets, contact, operators, surfaces
 
 E_STAR = 1.0
 
@@ -230,8 +230,8 @@ def test_flat_cold_solve_enlarges_the_candidates(monkeypatch):
     solution on the whole grid."""
     z = surfaces.self_affine(129, hurst=0.7, h_rms=9e-3, length=1.0, seed=3)
     used = []
-    solve_candidates = solver.solve_candidates
-    monkeypatch.setattr(solver, "solve_candidates",
+    solve_candidates = active_sets.solve_candidates
+    monkeypatch.setattr(active_sets, "solve_candidates",
                         lambda *args: used.append(solve_candidates(*args)) or used[-1])
     state = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True)
     full = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True, windowed=False)
@@ -246,10 +246,27 @@ def test_dense_punch_stiffness_equals_matrix_free(flat_path, rough, monkeypatch,
     """The punch stiffness with a dense influence matrix equals the FFT-based one."""
     states = flat_path[2] if periodic else [rough[1]]
     dense = [contact.stiffness(s) for s in states]
-    monkeypatch.setattr(solver, "DENSE_CELLS", 0)
+    monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
     for state, k in zip(states, dense):
         assert k == pytest.approx(contact.stiffness(state), rel=1e-7), \
             f"dense punch stiffness differs ({int(state.contact.sum())} cells)"
+
+
+@pytest.mark.parametrize("periodic", [True, False])
+def test_punch_refinement_survives_a_wrong_single_precision_product(flat_path, rough,
+                                                                     monkeypatch, periodic):
+    """The single-precision products only steer the refinement: with products off by a
+    factor 2 (each correction overshoots, the residual does not shrink) the solve falls
+    back to double precision and returns the same stiffness within 1e-7 (tol = 1e-8)."""
+    state = flat_path[2][-1] if periodic else rough[1]
+    monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
+    refined = contact.stiffness(state)
+    operator_type = type(operators.operator_for(state.heights.shape[0], state.length,
+                                                state.e_star, state.periodic))
+    exact_single = operator_type.single
+    monkeypatch.setattr(operator_type, "single", lambda self, p: 0.5 * exact_single(self, p))
+    assert contact.stiffness(state) == pytest.approx(refined, rel=1e-7), \
+        "a wrong single-precision product changed the punch stiffness"
 
 
 # --- rough sphere ----------------------------------------------------------------------

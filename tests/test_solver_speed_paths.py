@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 import scipy.fft
 
-from roughcontact import contact, operators, solver, surfaces
+from roughcontact import active_sets, contact, operators, solver, surfaces
 
 E_STAR = 1.0
 FORCES = np.geomspace(1e-5, 3e-3, 6)
@@ -17,10 +17,10 @@ def flat_surface():
 
 
 def _record_working_sets(monkeypatch):
-    """Wrap solver.solve_working_set; returns the list of its results."""
+    """Wrap active_sets.solve_working_set; returns the list of its results."""
     results = []
-    original = solver.solve_working_set
-    monkeypatch.setattr(solver, "solve_working_set",
+    original = active_sets.solve_working_set
+    monkeypatch.setattr(active_sets, "solve_working_set",
                         lambda *args: results.append(original(*args)) or results[-1])
     return results
 
@@ -37,7 +37,7 @@ def _assert_whole_grid(states, z, forces, hardness=None):
 def test_working_set_equals_whole_grid(flat_surface, monkeypatch):
     """Loads whose candidates exceed the dense limit are solved on a working set, and give
     the whole-grid FFT solution."""
-    monkeypatch.setattr(solver, "DENSE_CELLS", 600)
+    monkeypatch.setattr(active_sets, "DENSE_CELLS", 600)
     results = _record_working_sets(monkeypatch)
     states = contact.load_path(flat_surface, FORCES, length=1.0, e_star=E_STAR, periodic=True)
     assert any(r is not None for r in results), "no load was solved on a working set"
@@ -47,8 +47,8 @@ def test_working_set_equals_whole_grid(flat_surface, monkeypatch):
 def test_working_set_that_outgrows_the_limit_continues_on_the_grid(flat_surface, monkeypatch):
     """A working set that would exceed the dense limit hands its pressure to the FFT solver;
     the result is still the whole-grid solution."""
-    monkeypatch.setattr(solver, "DENSE_CELLS", 150)
-    monkeypatch.setattr(solver, "WORKING_MARGIN", 0.0)  # a first set too small: it must grow
+    monkeypatch.setattr(active_sets, "DENSE_CELLS", 150)
+    monkeypatch.setattr(active_sets, "WORKING_MARGIN", 0.0)  # a first set too small: it must grow
     results = _record_working_sets(monkeypatch)
     states = contact.load_path(flat_surface, FORCES, length=1.0, e_star=E_STAR, periodic=True)
     assert any(r is not None for r in results), "no load went through the working set"
@@ -57,7 +57,7 @@ def test_working_set_that_outgrows_the_limit_continues_on_the_grid(flat_surface,
 
 def test_working_set_with_hardness(flat_surface, monkeypatch):
     """The capped kernel on a working set gives the capped whole-grid solution."""
-    monkeypatch.setattr(solver, "DENSE_CELLS", 600)
+    monkeypatch.setattr(active_sets, "DENSE_CELLS", 600)
     results = _record_working_sets(monkeypatch)
     hardness = 0.05
     forces = FORCES[-3:]
@@ -74,12 +74,12 @@ def test_working_set_with_hardness(flat_surface, monkeypatch):
 def test_dense_limit_grows_with_the_periodic_grid(monkeypatch):
     """At least DENSE_CELLS, more on larger periodic grids, at most DENSE_BYTES of matrix;
     DENSE_CELLS = 0 switches dense matrices off."""
-    limits = [solver.dense_limit(operators.PeriodicOperator(n, 1.0, 1.0)) for n in (129, 513, 1025)]
-    assert limits[0] == limits[1] == solver.DENSE_CELLS
-    assert limits[2] == int(np.sqrt(solver.DENSE_BYTES // 8))
-    assert solver.dense_limit(operators.FreeSpaceOperator(1025, 1.0, 1.0)) == solver.DENSE_CELLS
-    monkeypatch.setattr(solver, "DENSE_CELLS", 0)
-    assert solver.dense_limit(operators.PeriodicOperator(1025, 1.0, 1.0)) == 0
+    limits = [active_sets.dense_limit(operators.PeriodicOperator(n, 1.0, 1.0)) for n in (129, 513, 1025)]
+    assert limits[0] == limits[1] == active_sets.DENSE_CELLS
+    assert limits[2] == int(np.sqrt(active_sets.DENSE_BYTES // 8))
+    assert active_sets.dense_limit(operators.FreeSpaceOperator(1025, 1.0, 1.0)) == active_sets.DENSE_CELLS
+    monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
+    assert active_sets.dense_limit(operators.PeriodicOperator(1025, 1.0, 1.0)) == 0
 
 
 @pytest.mark.parametrize("periodic", [False, True])
@@ -151,7 +151,7 @@ def test_working_set_out_of_iterations_is_not_converged(flat_surface, monkeypatc
     checked only on the working set or only at the loose tolerance."""
     lower = contact.solve(flat_surface, force=0.8 * FORCES[-1], length=1.0, e_star=E_STAR,
                           periodic=True)
-    monkeypatch.setattr(solver, "solve_candidates", lambda *args: None)
+    monkeypatch.setattr(active_sets, "solve_candidates", lambda *args: None)
     results = _record_working_sets(monkeypatch)
     for maxiter in (1, 5, 12):
         state = contact.solve(flat_surface, force=FORCES[-1], length=1.0, e_star=E_STAR,

@@ -19,14 +19,15 @@ For the periodic half-space the mean displacement is undefined; ``u`` has zero
 mean and ``depth`` is the approach of the indenter to the mean plane of the
 deformed surface, counted from first touch.
 
-Algorithms (module :mod:`roughcontact.solver`, which also describes the
-windows of non-periodic solves and the candidate cells of periodic ones):
+Algorithms (modules :mod:`roughcontact.solver`, :mod:`roughcontact.active_sets`
+(the windows of non-periodic solves, the candidate cells and working sets of
+periodic ones) and :mod:`roughcontact.punch`):
 force-controlled constrained conjugate gradients of Polonsky & Keer, Wear 231,
 206 (1999), with the box ``0 ≤ p ≤ H`` when a hardness is given; the exact
 unloading stiffness as the force of a rigid flat punch with the current
 contact set as footprint (the incremental analogy of Barber, Proc. R. Soc. A
 459, 53 (2003)), solved by conjugate gradients (Hestenes & Stiefel 1952,
-``scipy.sparse.linalg.cg``).
+``scipy.sparse.linalg.cg``) with mixed-precision iterative refinement.
 """
 
 from __future__ import annotations
@@ -39,18 +40,20 @@ from collections.abc import Iterator
 import numpy as np
 
 from ._validate import check_finite_positive, check_grid_size
+from .active_sets import equilibrium
 from .operators import operator_for
 from .plastic import plastic_flow
-from .solver import capped_kernel, equilibrium, polonsky_keer, punch_stiffness
+from .punch import punch_stiffness
+from .solver import capped_kernel, polonsky_keer
 
 __all__ = [
     "ContactState",
     "DomainTooSmallError",
-    "solve",
-    "load_path",
-    "iter_load_path",
-    "stiffness",
     "displacement",
+    "iter_load_path",
+    "load_path",
+    "solve",
+    "stiffness",
 ]
 
 #: Default maximum number of conjugate-gradient iterations per solve.
