@@ -1,4 +1,4 @@
-"""Configuration of the parameter study: schema, defaults, checks, one-line errors.
+"""Configuration of the parameter study: resolution, cross-key checks, one-line errors.
 
 :func:`resolve_config` normalises a raw config (as Snakemake or ``yaml``
 loaded it), validates it against ``workflow/schemas/config.schema.yaml`` plus
@@ -9,27 +9,46 @@ workflow and ``roughcontact check-config`` print it.  Nothing here runs a job
 (:mod:`roughcontact.study` does); ``jsonschema`` and ``yaml`` are imported
 where they are used.
 
-Numbers must be finite (:func:`roughcontact._validate.is_finite_number`):
-JSON-schema bounds compare false against NaN, so after the schema a walk over
-the whole config rejects every NaN and infinity, except ``+inf`` where the
-schema node carries ``x-allow-inf: true`` (the radius items: a nominally flat
-surface).  New keys of the schema are covered without further code.
+The generic schema machinery (finding and parsing the schema, coercing
+command-line strings, wording errors, rejecting NaN and infinities, filling
+defaults) is :mod:`roughcontact.schema`; :class:`ConfigError`,
+:func:`find_schema` and :func:`finite_error` are re-exported here.
+
+Cross-key checks
+----------------
+After the schema, :func:`resolve_config` requires an odd
+``fit.slopes.window``; ``forces.sphere`` / ``forces.flat`` for the radii
+listed, with ``from < to`` and forces within floating-point range; flat
+surfaces pressed short of full contact (:func:`full_contact_slope`); and a
+smooth-body contact radius within L/4 of the free-space grid.  The optional
+axes (``_check_spectrum_and_hardness``) need exponents other than every H,
+roll-off and cutoff wavelengths that leave a self-affine band on the grid,
+and hardnesses above the fully plastic limit of the largest force.
 """
 from __future__ import annotations
 
 import copy
-import functools
-import json
 import math
-import numbers
 import os
 import sys
-from collections.abc import Mapping
-from pathlib import Path
 
 import numpy as np
 
-from . import _validate, theory
+from . import theory
+from .schema import (
+    ConfigError,
+    _check_finite,
+    _coerce,
+    _fill_defaults,
+    _key,
+    _leaves,  # noqa: F401  (re-exported: roughcontact.cli uses config._leaves)
+    _load_schema,
+    _printable,
+    _schema_error,
+    _short,  # noqa: F401  (re-exported: roughcontact.cli uses config._short)
+    find_schema,
+    finite_error,
+)
 
 __all__ = [
     "ConfigError",
@@ -41,39 +60,10 @@ __all__ = [
     "resolve_config",
 ]
 
-#: schema annotation: this number may be ``+inf`` (no other non-finite value is ever allowed)
-ALLOW_INF = "x-allow-inf"
-
-
-class ConfigError(ValueError):
-    """An invalid configuration; ``str(err)`` is one line naming the key."""
-
 
 def error_line(err: ConfigError) -> str:
     """The one line the workflow and ``roughcontact check-config`` print."""
     return f"Invalid configuration: {err}"
-
-
-# --------------------------------------------------------------------------
-# configuration
-# --------------------------------------------------------------------------
-SCHEMA_RELPATH = Path("workflow/schemas/config.schema.yaml")
-
-
-def find_schema(start: str | os.PathLike | None = None) -> Path:
-    """Locate ``workflow/schemas/config.schema.yaml``: above *start* (a file or
-    directory), the current directory, or the checkout holding this module."""
-    candidates = []
-    for base in (start, Path.cwd(), Path(__file__).resolve()):
-        if base is None:
-            continue
-        base = Path(base).resolve()
-        candidates += [base, *base.parents]
-    for base in candidates:
-        path = base / SCHEMA_RELPATH
-        if path.is_file():
-            return path
-    raise FileNotFoundError(f"cannot find {SCHEMA_RELPATH} (run from the roughcontact checkout)")
 
 
 def load_config(path: str | os.PathLike) -> dict:
@@ -97,291 +87,6 @@ def load_config(path: str | os.PathLike) -> dict:
         raise ConfigError(f"config file {_printable(str(path))} is not valid YAML{where}: "
                           f"{_printable(problem)}") from err
     return data if data is not None else {}
-
-
-def _load_schema(schema) -> dict:
-    if isinstance(schema, dict):
-        return schema
-    path = Path(schema if schema is not None else find_schema()).resolve()
-    return _parse_schema(str(path), path.stat().st_mtime_ns)
-
-
-@functools.lru_cache(maxsize=8)
-def _parse_schema(path: str, mtime_ns: int) -> dict:
-    """The schema file, parsed once per modification (*mtime_ns* is the cache key)."""
-    import yaml
-
-    with open(path, encoding="utf-8") as fh:
-        return yaml.load(fh, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-
-
-_INF_WORDS = {"inf", ".inf", "+inf", "+.inf", "infinity", "+infinity"}
-_NAN_WORDS = {"nan", ".nan"}
-
-
-def _coerce(obj):
-    """Undo what command lines and YAML 1.1 do to numbers: ``--config`` passes
-    lists as strings, and PyYAML reads ``1e-5`` (no dot) and ``inf`` as strings.
-
-    Only ASCII text is read as a number.  ``inf`` and ``nan`` (any spelling)
-    become floats, so that the finiteness check names them; a numeral too large
-    for a float stays text (rejected as not a number) instead of becoming inf.
-    """
-    if isinstance(obj, Mapping):
-        return {k: _coerce(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [_coerce(v) for v in obj]
-    if isinstance(obj, str) and obj.isascii():
-        text = obj.strip()
-        if text.startswith("[") and text.endswith("]"):
-            import yaml
-
-            try:
-                return _coerce(yaml.safe_load(text))
-            except (yaml.YAMLError, ValueError):  # not YAML, or an integer of more than 4300 digits
-                return obj
-        low = text.lower()
-        sign = -1.0 if low.startswith("-") else 1.0
-        if low.lstrip("-") in _INF_WORDS or low in _INF_WORDS:
-            return sign * math.inf
-        if low.lstrip("+-") in _NAN_WORDS:
-            return math.nan
-        try:
-            return int(text)
-        except ValueError:
-            pass
-        try:
-            value = float(text)
-        except ValueError:
-            return obj
-        return value if math.isfinite(value) else obj
-    return obj
-
-
-def _printable(text: str) -> str:
-    """*text* with every non-printable character (newlines too) escaped: one line."""
-    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
-
-
-def _key(path) -> str:
-    out = ""
-    for part in path:
-        if isinstance(part, int) and not isinstance(part, bool):
-            out += f"[{part}]"
-        else:
-            part = _printable(str(part)) if str(part).strip() else json.dumps(str(part))  # '' and ' ' visible
-            out += f".{part}" if out else part
-    return out or "<top level>"
-
-
-def _render(value) -> str:
-    """Compact JSON-like text of a config value; ``nan``, ``inf``, ``-inf`` as
-    bare words, every non-ASCII or control character escaped (one line)."""
-    if isinstance(value, bool) or value is None:
-        return json.dumps(value)
-    if isinstance(value, float):
-        if math.isnan(value):
-            return "nan"
-        if math.isinf(value):
-            return "inf" if value > 0 else "-inf"
-        return repr(value)
-    if isinstance(value, numbers.Integral):
-        value = int(value)
-        if value.bit_length() > 200:  # str() of a huge integer is slow (and limited)
-            return f"{'-' if value < 0 else ''}<an integer of about {int(value.bit_length() * 0.30103) + 1} digits>"
-        return str(value)
-    if isinstance(value, numbers.Real):
-        return _render(float(value))
-    if isinstance(value, str):
-        return json.dumps(value)
-    if isinstance(value, Mapping):
-        items = sorted(value.items(), key=lambda kv: str(kv[0]))
-        return "{" + ",".join(f"{json.dumps(str(k))}:{_render(v)}" for k, v in items) + "}"
-    if isinstance(value, (list, tuple)):
-        return "[" + ",".join(_render(v) for v in value) + "]"
-    return json.dumps(str(value))
-
-
-def _short(value) -> str:
-    text = _render(value)
-    return text if len(text) <= 60 else text[:57] + "..."
-
-
-def _branches(node: dict, root: dict):
-    """*node* and the sub-schemas of its oneOf/anyOf/allOf, dereferenced."""
-    node = _deref(node, root)
-    yield node
-    for key in ("oneOf", "anyOf", "allOf"):
-        for branch in node.get(key, []):
-            yield from _branches(branch, root)
-
-
-def _node(schema: dict, root: dict, path) -> dict:
-    """The schema node describing the instance at *path* ({} if the schema has none)."""
-    node = schema
-    for part in path:
-        found = {}
-        for branch in _branches(node, root):
-            if isinstance(part, int) and not isinstance(part, bool):
-                if isinstance(branch.get("items"), dict):
-                    found = branch["items"]
-                    break
-            elif part in branch.get("properties", {}):
-                found = branch["properties"][part]
-                break
-        node = found
-    return _deref(node, root)
-
-
-def _deref(node: dict, root: dict) -> dict:
-    ref = node.get("$ref")
-    if ref and ref.startswith("#/"):
-        target = root
-        for part in ref[2:].split("/"):
-            target = target[part]
-        return {**target, **{k: v for k, v in node.items() if k != "$ref"}}
-    return node
-
-
-_NOUNS = {"integer": ("an integer", "integers"), "number": ("a number", "numbers"),
-          "string": ("a string", "strings"), "boolean": ("true or false", "true or false"), "null": ("null", "null")}
-
-
-def _describe(node: dict, root: dict, with_doc: bool = True, finite: bool = False, plural: bool = False) -> str:
-    """What *node* allows, in words.  *finite*: say that numbers must be finite
-    (the message of a NaN or an infinity); *plural*: for list items."""
-    node = _deref(node, root)
-    if "oneOf" in node or "anyOf" in node:
-        text = " or ".join(_describe(b, root, False, finite, plural) for b in node.get("oneOf", node.get("anyOf")))
-    elif "enum" in node:
-        text = "one of " + ", ".join(map(str, node["enum"]))
-    elif "const" in node:
-        text = _render(node["const"])
-    else:
-        kinds = node.get("type") or []
-        kinds = kinds if isinstance(kinds, list) else [kinds]
-        parts = []
-        for kind in kinds:
-            if kind == "array":
-                text = "lists" if plural else "a list"
-                if node.get("minItems", 0) >= 1:
-                    text = "non-empty " + text if plural else "a non-empty list"
-                text += " of " + ("distinct " if node.get("uniqueItems") else "")
-                text += _describe(node.get("items", {}), root, False, finite, plural=True)
-            elif kind == "object":
-                text = ("mappings" if plural else "a mapping") + " with keys " + ", ".join(node.get("properties", {}))
-            elif kind in _NOUNS:
-                text = _NOUNS[kind][plural]
-                if kind == "number" and (finite or node.get(ALLOW_INF)):
-                    text = ("finite " if plural else "a finite ") + text.split(" ")[-1]
-                bounds = []
-                if "minimum" in node:
-                    bounds.append(f">= {node['minimum']}")
-                if "exclusiveMinimum" in node:
-                    bounds.append(f"> {node['exclusiveMinimum']}")
-                if "maximum" in node:
-                    bounds.append(f"<= {node['maximum']}")
-                if "exclusiveMaximum" in node:
-                    bounds.append(f"< {node['exclusiveMaximum']}")
-                if bounds:
-                    text += " " + " and ".join(bounds)
-                if kind == "number" and node.get(ALLOW_INF):
-                    text += " or inf"
-            else:
-                text = "values" if plural else "a value"
-            parts.append(text)
-        text = " or ".join(parts) if parts else ("values" if plural else "a value")
-    if with_doc and node.get("description"):
-        text += f" ({' '.join(node['description'].split())})"
-    return text
-
-
-def _schema_error(err, root: dict) -> ConfigError:
-    path = list(err.absolute_path)
-    if err.validator == "additionalProperties":
-        allowed = list(err.schema.get("properties", {}))
-        extra = sorted((e for e in err.instance if e not in allowed), key=str)
-        where = _key(path)
-        names = ", ".join(f"'{_key(path + [str(e)])}'" for e in extra)
-        return ConfigError(
-            f"unknown config key {names}; allowed keys {'at top level' if not path else 'in ' + where}: "
-            + ", ".join(allowed)
-        )
-    if err.validator == "required":
-        missing = next((k for k in err.validator_value if k not in err.instance), "?")
-        node = _node(root, root, path + [missing])
-        return ConfigError(f"missing config key '{_key(path + [missing])}'; allowed: {_describe(node, root)}")
-    return ConfigError(f"config key '{_key(path)}' = {_short(err.instance)} is not allowed; "
-                       f"allowed: {_describe(_documented(root, path), root)}")
-
-
-def _documented(root: dict, path) -> dict:
-    """The schema node at *path*; list items borrow the description of their list."""
-    node = _node(root, root, path)
-    if path and isinstance(path[-1], int) and not node.get("description"):
-        parent = _node(root, root, path[:-1])
-        if parent.get("description"):
-            node = {**node, "description": parent["description"]}
-    return node
-
-
-def _leaves(obj, path=()):
-    """(path, value) of every scalar in a nested config."""
-    if isinstance(obj, Mapping):
-        for key, value in obj.items():
-            yield from _leaves(value, (*path, key))
-    elif isinstance(obj, (list, tuple)):
-        for index, value in enumerate(obj):
-            yield from _leaves(value, (*path, index))
-    else:
-        yield list(path), obj
-
-
-def _check_finite(cfg, root: dict, known_only: bool) -> None:
-    """Raise the :func:`finite_error` of the first non-finite number in *cfg*;
-    *known_only*: only where the schema has a node for the key."""
-    for path, value in _leaves(cfg):
-        if known_only and not _node(root, root, path):
-            continue
-        err = finite_error(path, value, root)
-        if err is not None:
-            raise err
-
-
-def finite_error(path, value, schema: dict | None = None, allow_inf: bool | None = None) -> ConfigError | None:
-    """The error for a number at config key *path* that is not finite (or not
-    ``+inf`` where the schema node carries ``x-allow-inf``, or *allow_inf*);
-    ``None`` if *value* is allowed or not a number.
-
-    The one rule of :func:`roughcontact._validate.is_finite_number`, worded as
-    the other config errors; *schema* (a loaded schema) supplies the bounds and
-    description.
-    """
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        return None
-    root = schema or {}
-    node = _documented(root, list(path)) if root else {}
-    if allow_inf is None:
-        allow_inf = bool(node.get(ALLOW_INF))
-    elif allow_inf and not node.get(ALLOW_INF):
-        node = {**node, ALLOW_INF: True}
-    if _validate.is_finite_number(value, allow_inf):
-        return None
-    if not node.get("type"):
-        node = {**node, "type": "number"}
-    return ConfigError(f"config key '{_key(path)}' = {_short(value)} is not allowed; "
-                       f"allowed: {_describe(node, root, finite=True)}")
-
-
-def _fill_defaults(instance, node, root):
-    node = _deref(node, root)
-    if isinstance(instance, dict):
-        for name, sub in node.get("properties", {}).items():
-            sub = _deref(sub, root)
-            if name not in instance and "default" in sub:
-                instance[name] = copy.deepcopy(sub["default"])
-            if name in instance:
-                _fill_defaults(instance[name], sub, root)
 
 
 def full_contact_slope(hurst: float, n: int, length: float, *, rolloff: float | None = None,
