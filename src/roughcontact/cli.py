@@ -12,7 +12,7 @@ import argparse
 import math
 import sys
 
-from . import config, study
+from . import config, schema, study
 
 # config keys as they appear in error messages -> the command-line flag
 _FLAGS = {
@@ -83,10 +83,10 @@ def _schema_or_none(start):
         return None
 
 
-def _check_numbers(args, schema) -> None:
+def _check_numbers(args, schema_path) -> None:
     """Every number flag finite (``--radius`` may be inf), by the rule of the
     config (:func:`roughcontact.config.finite_error`); raises ConfigError."""
-    loaded = config._load_schema(schema) if schema is not None else None
+    loaded = schema.load_schema(schema_path) if schema_path is not None else None
     kind = "sphere" if math.isfinite(args.radius) else "flat"
     for name, path in _NUMBER_FLAGS.items():
         value = getattr(args, name)
@@ -101,15 +101,15 @@ def _check_numbers(args, schema) -> None:
 def _mapping(value, path):
     """*value* if it is a mapping, else the ConfigError of --config's key *path*."""
     if not isinstance(value, dict):
-        raise config.ConfigError(f"config key '{config._key(path)}' = {config._short(value)} is not allowed; "
+        raise config.ConfigError(f"config key '{schema.key_text(path)}' = {schema.short_text(value)} is not allowed; "
                                  "allowed: a mapping")
     return value
 
 
 def settings_from_args(args) -> dict:
     """Resolved job settings for ``roughcontact indent`` (raises ConfigError)."""
-    schema = _schema_or_none(args.config)
-    _check_numbers(args, schema)
+    schema_path = _schema_or_none(args.config)
+    _check_numbers(args, schema_path)
     kind = "sphere" if math.isfinite(args.radius) else "flat"
     base = _mapping(config.load_config(args.config) if args.config else {}, [])
     grid = dict(_mapping(base.get("grid", {}), ["grid"]))
@@ -136,15 +136,15 @@ def settings_from_args(args) -> dict:
         "forces": {kind: forces}, "solver": solver, "fit": base.get("fit", _FIT),
         **{axis: [getattr(args, axis)] for axis in study.DEFAULTS if getattr(args, axis) is not None},
     }
-    if schema is None:  # installed without the workflow: the core checks its own arguments
-        resolved = config._coerce(cfg)
-        for path, value in config._leaves(resolved):  # numbers from --config, too
+    if schema_path is None:  # installed without the workflow: the core checks its own arguments
+        resolved = schema.coerce(cfg)
+        for path, value in schema.leaves(resolved):  # numbers from --config, too
             err = config.finite_error(path, value, allow_inf=path[0] == "radius")
             if err is not None:
                 raise err
         resolved["seeds"] = [int(args.seed)]
     else:
-        resolved = config.resolve_config(cfg, schema=schema)
+        resolved = config.resolve_config(cfg, schema=schema_path)
     run = {"hurst": args.hurst, "radius": args.radius, "h_rms": args.h_rms, "seed": args.seed,
            **{axis: getattr(args, axis) for axis in study.DEFAULTS if getattr(args, axis) is not None}}
     return study.job_settings(resolved, run)

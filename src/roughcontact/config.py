@@ -38,14 +38,14 @@ from . import theory
 from .schema import (
     ConfigError,
     _check_finite,
-    _coerce,
+    coerce,
     _fill_defaults,
-    _key,
-    _leaves,  # noqa: F401  (re-exported: roughcontact.cli uses config._leaves)
-    _load_schema,
+    key_text,
+    leaves,  # noqa: F401  (re-exported: roughcontact.cli uses schema.leaves)
+    load_schema,
     _printable,
     _schema_error,
-    _short,  # noqa: F401  (re-exported: roughcontact.cli uses config._short)
+    short_text,  # noqa: F401  (re-exported: roughcontact.cli uses schema.short_text)
     find_schema,
     finite_error,
 )
@@ -117,13 +117,13 @@ def resolve_config(raw: dict, schema=None) -> dict:
     """
     import jsonschema
 
-    root = _load_schema(schema)
-    cfg = _coerce(copy.deepcopy(raw))
+    root = load_schema(schema)
+    cfg = coerce(copy.deepcopy(raw))
     # JSON-schema bounds compare false against NaN: every number must be finite (radius may be +inf).
     # Keys the schema knows first (a NaN is the cause, not a duplicate or a bound) ...
     _check_finite(cfg, root, known_only=True)
     validator = jsonschema.Draft202012Validator(root)
-    errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), _key(list(e.absolute_path))))
+    errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), key_text(list(e.absolute_path))))
     if errors:
         # report the shallowest problem first: an unknown top-level key explains more than its children
         raise _schema_error(errors[0], root)

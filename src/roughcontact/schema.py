@@ -1,7 +1,7 @@
 """JSON-schema machinery of the configuration: load, coerce, describe, one-line errors.
 
 :func:`find_schema` locates ``workflow/schemas/config.schema.yaml`` and
-``_load_schema`` parses it once per modification of the file.  Nothing here
+``load_schema`` parses it once per modification of the file.  Nothing here
 knows the keys of this project's config: :mod:`roughcontact.config` resolves
 the config with these helpers and adds the checks a JSON schema cannot
 express.  ``yaml`` is imported where it is used; ``jsonschema`` is imported
@@ -10,14 +10,14 @@ by :mod:`roughcontact.config`, which validates.
 Errors
 ------
 Every problem is a :class:`ConfigError` whose text is one line naming the key
-(``_key``), the offending value (``_render``, shortened by ``_short``) and
+(``key_text``), the offending value (``_render``, shortened by ``short_text``) and
 what the schema allows (``_describe``: the node's type, bounds and
 description).  ``_schema_error`` words a ``jsonschema`` validation error this
 way.
 
 Numbers
 -------
-``_coerce`` undoes what command lines and YAML 1.1 do to numbers.  Numbers
+``coerce`` undoes what command lines and YAML 1.1 do to numbers.  Numbers
 must be finite (:func:`roughcontact._validate.is_finite_number`): JSON-schema
 bounds compare false against NaN, so ``_check_finite`` walks the whole config
 and :func:`finite_error` rejects every NaN and infinity, except ``+inf`` where
@@ -42,8 +42,13 @@ __all__ = [
     "ALLOW_INF",
     "SCHEMA_RELPATH",
     "ConfigError",
+    "coerce",
     "find_schema",
     "finite_error",
+    "key_text",
+    "leaves",
+    "load_schema",
+    "short_text",
 ]
 
 #: schema annotation: this number may be ``+inf`` (no other non-finite value is ever allowed)
@@ -74,7 +79,7 @@ def find_schema(start: str | os.PathLike | None = None) -> Path:
     raise FileNotFoundError(f"cannot find {SCHEMA_RELPATH} (run from the roughcontact checkout)")
 
 
-def _load_schema(schema) -> dict:
+def load_schema(schema) -> dict:
     if isinstance(schema, dict):
         return schema
     path = Path(schema if schema is not None else find_schema()).resolve()
@@ -94,7 +99,7 @@ _INF_WORDS = {"inf", ".inf", "+inf", "+.inf", "infinity", "+infinity"}
 _NAN_WORDS = {"nan", ".nan"}
 
 
-def _coerce(obj):
+def coerce(obj):
     """Undo what command lines and YAML 1.1 do to numbers: ``--config`` passes
     lists as strings, and PyYAML reads ``1e-5`` (no dot) and ``inf`` as strings.
 
@@ -103,16 +108,16 @@ def _coerce(obj):
     for a float stays text (rejected as not a number) instead of becoming inf.
     """
     if isinstance(obj, Mapping):
-        return {k: _coerce(v) for k, v in obj.items()}
+        return {k: coerce(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [_coerce(v) for v in obj]
+        return [coerce(v) for v in obj]
     if isinstance(obj, str) and obj.isascii():
         text = obj.strip()
         if text.startswith("[") and text.endswith("]"):
             import yaml
 
             try:
-                return _coerce(yaml.safe_load(text))
+                return coerce(yaml.safe_load(text))
             except (yaml.YAMLError, ValueError):  # not YAML, or an integer of more than 4300 digits
                 return obj
         low = text.lower()
@@ -138,7 +143,7 @@ def _printable(text: str) -> str:
     return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
 
 
-def _key(path) -> str:
+def key_text(path) -> str:
     out = ""
     for part in path:
         if isinstance(part, int) and not isinstance(part, bool):
@@ -177,7 +182,7 @@ def _render(value) -> str:
     return json.dumps(str(value))
 
 
-def _short(value) -> str:
+def short_text(value) -> str:
     text = _render(value)
     return text if len(text) <= 60 else text[:57] + "..."
 
@@ -276,8 +281,8 @@ def _schema_error(err, root: dict) -> ConfigError:
     if err.validator == "additionalProperties":
         allowed = list(err.schema.get("properties", {}))
         extra = sorted((e for e in err.instance if e not in allowed), key=str)
-        where = _key(path)
-        names = ", ".join(f"'{_key(path + [str(e)])}'" for e in extra)
+        where = key_text(path)
+        names = ", ".join(f"'{key_text(path + [str(e)])}'" for e in extra)
         return ConfigError(
             f"unknown config key {names}; allowed keys {'at top level' if not path else 'in ' + where}: "
             + ", ".join(allowed)
@@ -285,8 +290,8 @@ def _schema_error(err, root: dict) -> ConfigError:
     if err.validator == "required":
         missing = next((k for k in err.validator_value if k not in err.instance), "?")
         node = _node(root, root, path + [missing])
-        return ConfigError(f"missing config key '{_key(path + [missing])}'; allowed: {_describe(node, root)}")
-    return ConfigError(f"config key '{_key(path)}' = {_short(err.instance)} is not allowed; "
+        return ConfigError(f"missing config key '{key_text(path + [missing])}'; allowed: {_describe(node, root)}")
+    return ConfigError(f"config key '{key_text(path)}' = {short_text(err.instance)} is not allowed; "
                        f"allowed: {_describe(_documented(root, path), root)}")
 
 
@@ -300,14 +305,14 @@ def _documented(root: dict, path) -> dict:
     return node
 
 
-def _leaves(obj, path=()):
+def leaves(obj, path=()):
     """(path, value) of every scalar in a nested config."""
     if isinstance(obj, Mapping):
         for key, value in obj.items():
-            yield from _leaves(value, (*path, key))
+            yield from leaves(value, (*path, key))
     elif isinstance(obj, (list, tuple)):
         for index, value in enumerate(obj):
-            yield from _leaves(value, (*path, index))
+            yield from leaves(value, (*path, index))
     else:
         yield list(path), obj
 
@@ -315,7 +320,7 @@ def _leaves(obj, path=()):
 def _check_finite(cfg, root: dict, known_only: bool) -> None:
     """Raise the :func:`finite_error` of the first non-finite number in *cfg*;
     *known_only*: only where the schema has a node for the key."""
-    for path, value in _leaves(cfg):
+    for path, value in leaves(cfg):
         if known_only and not _node(root, root, path):
             continue
         err = finite_error(path, value, root)
@@ -344,7 +349,7 @@ def finite_error(path, value, schema: dict | None = None, allow_inf: bool | None
         return None
     if not node.get("type"):
         node = {**node, "type": "number"}
-    return ConfigError(f"config key '{_key(path)}' = {_short(value)} is not allowed; "
+    return ConfigError(f"config key '{key_text(path)}' = {short_text(value)} is not allowed; "
                        f"allowed: {_describe(node, root, finite=True)}")
 
 
