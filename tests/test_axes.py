@@ -80,6 +80,22 @@ def test_claims_rows_of_the_axes(run):
     assert len(body) == 4 and body["statement"].str.contains("m = 4").all(), body["statement"]
 
 
+def test_the_papers_theory_is_not_judged_off_its_setting(run):
+    """Rows (a)-(f) of a combination with a cutoff or a hardness keep their measured value
+    but are 'untested', naming the claim that tests the axis; elastic self-affine rows are judged."""
+    work, _ = run
+    claims = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
+    theory_rows = claims[claims["claim"].isin(list("abdef"))]
+    plastic = theory_rows[theory_rows["hardness"] == 0.05]
+    assert (plastic["verdict"] == "untested").all(), plastic[["claim", "verdict"]]
+    assert plastic["reason"].str.contains("claim k").all(), plastic["reason"]
+    assert plastic["measured"].notna().any(), "the measured values are kept"
+    cut = theory_rows[(theory_rows["cutoff"] == 0.05) & np.isinf(theory_rows["hardness"])]
+    assert cut["reason"].str.contains("claim i").all() and "claim k" not in "".join(cut["reason"]), cut["reason"]
+    elastic = theory_rows[(theory_rows["cutoff"] == 0.0) & np.isinf(theory_rows["hardness"])]
+    assert not elastic["reason"].str.contains("self-affine").any(), elastic[["claim", "reason"]]
+
+
 def test_a_figure_per_body_and_variant(run):
     work, _ = run
     names = {p.name for p in (work / "results/figures").glob("fig3_*.png")}
