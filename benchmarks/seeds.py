@@ -51,7 +51,13 @@ def main() -> None:
     parser.add_argument("--block", type=int, default=50, help="seeds per disjoint block")
     args = parser.parse_args()
     cfg = config.resolve_config(config.load_config(args.configfile))
-    groups = analysis.read_groups(args.directory / "results" / "stiffness.nc")
+    stiffness = args.directory / "results" / "stiffness.nc"
+    if not stiffness.exists():
+        raise SystemExit(f"{stiffness} not found: run the sweep first, e.g. snakemake --cores 2 "
+                         f"--configfile {args.configfile} --directory {args.directory}")
+    groups = analysis.read_groups(stiffness)
+    if "sphere" not in groups:
+        raise SystemExit(f"{stiffness} holds no sphere runs: the crossover needs spheres")
     zeta = pd.read_csv(args.directory / "results" / "zeta.csv")
     total = groups["sphere"].sizes["seed"]
     rows = []
