@@ -253,20 +253,42 @@ def test_dense_punch_stiffness_equals_matrix_free(flat_path, rough, monkeypatch,
 
 
 @pytest.mark.parametrize("periodic", [True, False])
-def test_punch_refinement_survives_a_wrong_single_precision_product(flat_path, rough,
-                                                                     monkeypatch, periodic):
-    """The single-precision products only steer the refinement: with products off by a
-    factor 2 (each correction overshoots, the residual does not shrink) the solve falls
-    back to double precision and returns the same stiffness within 1e-7 (tol = 1e-8)."""
+def test_punch_refinement_uses_single_precision_products(flat_path, rough, monkeypatch, periodic):
+    """A large footprint's punch solve runs on single-precision products (the fast path) and
+    still meets tol = 1e-8: the dense solve gives the same stiffness within 1e-7."""
+    state = flat_path[2][-1] if periodic else rough[1]
+    dense = contact.stiffness(state)
+    monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
+    operator_type = type(operators.operator_for(state.heights.shape[0], state.length,
+                                                state.e_star, state.periodic))
+    calls = []
+    exact_single = operator_type.single
+    monkeypatch.setattr(operator_type, "single", lambda self, p: calls.append(1) or exact_single(self, p))
+    assert contact.stiffness(state) == pytest.approx(dense, rel=1e-7), "refined punch stiffness differs"
+    assert len(calls) > 0, "the single-precision products were not used"
+
+
+@pytest.mark.parametrize("wrong", ["scaled", "indefinite"])
+@pytest.mark.parametrize("periodic", [True, False])
+def test_punch_refinement_survives_a_wrong_single_precision_product(flat_path, rough, monkeypatch,
+                                                                     periodic, wrong):
+    """The single-precision products only steer the refinement. Products off by a factor 2
+    (each correction overshoots, the residual does not shrink) or indefinite (K − 2 K_00 I:
+    the inner conjugate gradients do not converge) make the solve fall back to double
+    precision, with the same stiffness within 1e-7 (tol = 1e-8)."""
     state = flat_path[2][-1] if periodic else rough[1]
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
     refined = contact.stiffness(state)
     operator_type = type(operators.operator_for(state.heights.shape[0], state.length,
                                                 state.e_star, state.periodic))
     exact_single = operator_type.single
-    monkeypatch.setattr(operator_type, "single", lambda self, p: 0.5 * exact_single(self, p))
+    if wrong == "scaled":
+        monkeypatch.setattr(operator_type, "single", lambda self, p: 0.5 * exact_single(self, p))
+    else:
+        monkeypatch.setattr(operator_type, "single",
+                            lambda self, p: exact_single(self, p) - 2.0 * self.self_coefficient * p)
     assert contact.stiffness(state) == pytest.approx(refined, rel=1e-7), \
-        "a wrong single-precision product changed the punch stiffness"
+        f"a {wrong} single-precision product changed the punch stiffness"
 
 
 # --- rough sphere ----------------------------------------------------------------------
