@@ -37,17 +37,15 @@ import numpy as np
 from . import theory
 from .schema import (
     ConfigError,
-    _check_finite,
+    check_finite,
     coerce,
-    _fill_defaults,
-    key_text,
-    leaves,  # noqa: F401  (re-exported: roughcontact.cli uses schema.leaves)
-    load_schema,
-    _printable,
-    _schema_error,
-    short_text,  # noqa: F401  (re-exported: roughcontact.cli uses schema.short_text)
+    fill_defaults,
     find_schema,
     finite_error,
+    key_text,
+    load_schema,
+    printable,
+    schema_error,
 )
 
 __all__ = [
@@ -78,14 +76,14 @@ def load_config(path: str | os.PathLike) -> dict:
         with open(path, encoding="utf-8") as fh:
             data = yaml.safe_load(fh)
     except (OSError, UnicodeError) as err:
-        raise ConfigError(f"cannot read config file {_printable(str(path))}: "
-                          f"{_printable(getattr(err, 'strerror', None) or str(err))}") from err
+        raise ConfigError(f"cannot read config file {printable(str(path))}: "
+                          f"{printable(getattr(err, 'strerror', None) or str(err))}") from err
     except (yaml.YAMLError, ValueError) as err:  # ValueError: an integer of more than 4300 digits
         mark = getattr(err, "problem_mark", None)
         where = f" (line {mark.line + 1}, column {mark.column + 1})" if mark is not None else ""
         problem = getattr(err, "problem", None) or str(err)
-        raise ConfigError(f"config file {_printable(str(path))} is not valid YAML{where}: "
-                          f"{_printable(problem)}") from err
+        raise ConfigError(f"config file {printable(str(path))} is not valid YAML{where}: "
+                          f"{printable(problem)}") from err
     return data if data is not None else {}
 
 
@@ -121,15 +119,15 @@ def resolve_config(raw: dict, schema=None) -> dict:
     cfg = coerce(copy.deepcopy(raw))
     # JSON-schema bounds compare false against NaN: every number must be finite (radius may be +inf).
     # Keys the schema knows first (a NaN is the cause, not a duplicate or a bound) ...
-    _check_finite(cfg, root, known_only=True)
+    check_finite(cfg, root, known_only=True)
     validator = jsonschema.Draft202012Validator(root)
     errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), key_text(list(e.absolute_path))))
     if errors:
         # report the shallowest problem first: an unknown top-level key explains more than its children
-        raise _schema_error(errors[0], root)
+        raise schema_error(errors[0], root)
     # ... then everything, also below schema nodes that leave their contents open
-    _check_finite(cfg, root, known_only=False)
-    _fill_defaults(cfg, root, root)
+    check_finite(cfg, root, known_only=False)
+    fill_defaults(cfg, root, root)
 
     # normalise types
     cfg["grid"]["n"] = int(cfg["grid"]["n"])

@@ -12,18 +12,18 @@ Errors
 Every problem is a :class:`ConfigError` whose text is one line naming the key
 (``key_text``), the offending value (``_render``, shortened by ``short_text``) and
 what the schema allows (``_describe``: the node's type, bounds and
-description).  ``_schema_error`` words a ``jsonschema`` validation error this
+description).  ``schema_error`` words a ``jsonschema`` validation error this
 way.
 
 Numbers
 -------
 ``coerce`` undoes what command lines and YAML 1.1 do to numbers.  Numbers
 must be finite (:func:`roughcontact._validate.is_finite_number`): JSON-schema
-bounds compare false against NaN, so ``_check_finite`` walks the whole config
+bounds compare false against NaN, so ``check_finite`` walks the whole config
 and :func:`finite_error` rejects every NaN and infinity, except ``+inf`` where
 the schema node carries ``x-allow-inf: true`` (:data:`ALLOW_INF`; the radius
 items: a nominally flat surface).  New keys of the schema are covered without
-further code.  ``_fill_defaults`` fills in the schema's ``default`` values.
+further code.  ``fill_defaults`` fills in the schema's ``default`` values.
 """
 from __future__ import annotations
 
@@ -42,12 +42,16 @@ __all__ = [
     "ALLOW_INF",
     "SCHEMA_RELPATH",
     "ConfigError",
+    "check_finite",
     "coerce",
     "find_schema",
+    "fill_defaults",
     "finite_error",
     "key_text",
     "leaves",
     "load_schema",
+    "printable",
+    "schema_error",
     "short_text",
 ]
 
@@ -138,7 +142,7 @@ def coerce(obj):
     return obj
 
 
-def _printable(text: str) -> str:
+def printable(text: str) -> str:
     """*text* with every non-printable character (newlines too) escaped: one line."""
     return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
 
@@ -149,7 +153,7 @@ def key_text(path) -> str:
         if isinstance(part, int) and not isinstance(part, bool):
             out += f"[{part}]"
         else:
-            part = _printable(str(part)) if str(part).strip() else json.dumps(str(part))  # '' and ' ' visible
+            part = printable(str(part)) if str(part).strip() else json.dumps(str(part))  # '' and ' ' visible
             out += f".{part}" if out else part
     return out or "<top level>"
 
@@ -276,7 +280,7 @@ def _describe(node: dict, root: dict, with_doc: bool = True, finite: bool = Fals
     return text
 
 
-def _schema_error(err, root: dict) -> ConfigError:
+def schema_error(err, root: dict) -> ConfigError:
     path = list(err.absolute_path)
     if err.validator == "additionalProperties":
         allowed = list(err.schema.get("properties", {}))
@@ -317,7 +321,7 @@ def leaves(obj, path=()):
         yield list(path), obj
 
 
-def _check_finite(cfg, root: dict, known_only: bool) -> None:
+def check_finite(cfg, root: dict, known_only: bool) -> None:
     """Raise the :func:`finite_error` of the first non-finite number in *cfg*;
     *known_only*: only where the schema has a node for the key."""
     for path, value in leaves(cfg):
@@ -353,7 +357,7 @@ def finite_error(path, value, schema: dict | None = None, allow_inf: bool | None
                        f"allowed: {_describe(node, root, finite=True)}")
 
 
-def _fill_defaults(instance, node, root):
+def fill_defaults(instance, node, root):
     node = _deref(node, root)
     if isinstance(instance, dict):
         for name, sub in node.get("properties", {}).items():
@@ -361,4 +365,4 @@ def _fill_defaults(instance, node, root):
             if name not in instance and "default" in sub:
                 instance[name] = copy.deepcopy(sub["default"])
             if name in instance:
-                _fill_defaults(instance[name], sub, root)
+                fill_defaults(instance[name], sub, root)
