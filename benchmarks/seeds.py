@@ -11,7 +11,9 @@ with free prefactors, percentile bootstrap over seeds) on
   ensembles, whose scatter of F_tr should match the width of their bootstrap intervals.
 
 Prints one table: seeds, which seeds, F_tr, interval, half-width ``(high − low)/2`` in % of
-F_tr, and the verdicts against eq. 17 (fitted ζ, and ζ = 1.7/(H+1)).
+F_tr, and eq. 17 with its verdicts (fitted ζ, and ζ = 1.7/(H+1)). The fitted ζ is the one of the
+whole run (``zeta.csv``) for every subset, so only F_tr and its interval are independent between
+the disjoint blocks, not the verdicts against eq. 17 with the fitted ζ.
 
 Usage::
 
@@ -29,8 +31,8 @@ import pandas as pd
 
 from roughcontact import analysis, config, verdicts
 
-COLUMNS = ["Ftr_measured", "Ftr_ci_low", "Ftr_ci_high", "Ftr_predicted_fit", "verdict_fit",
-           "Ftr_predicted_estimate", "verdict_estimate"]
+COLUMNS = ["Ftr_measured", "Ftr_ci_low", "Ftr_ci_high", "Ftr_pred_fit", "verdict_fit",
+           "Ftr_pred_estimate", "verdict_estimate"]
 
 
 def estimate(groups: dict, zeta: pd.DataFrame, cfg: dict, seeds: np.ndarray) -> dict:
@@ -41,7 +43,7 @@ def estimate(groups: dict, zeta: pd.DataFrame, cfg: dict, seeds: np.ndarray) -> 
         raise SystemExit(f"expected one sphere combination, found {len(table)}")
     row = table.iloc[0]
     half = (row["Ftr_ci_high"] - row["Ftr_ci_low"]) / 2 / row["Ftr_measured"]
-    return {**{c: row[c] for c in COLUMNS if c in row}, "half_width_percent": 100 * half}
+    return {**{c: row[c] for c in COLUMNS}, "half_width_percent": 100 * half}
 
 
 def main() -> None:

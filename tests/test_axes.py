@@ -14,7 +14,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from roughcontact import analysis, config, study
+from roughcontact import analysis, claims, config, study
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = {
@@ -67,16 +67,16 @@ def test_merged_dimensions_and_plastic_variables(run):
 
 def test_claims_rows_of_the_axes(run):
     work, _ = run
-    claims = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
-    assert set(claims["verdict"]) <= {"consistent", "differs", "untested"}, set(claims["verdict"])
+    table = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
+    assert set(table["verdict"]) <= {"consistent", "differs", "untested"}, set(table["verdict"])
     for claim in "ik":
-        rows = claims[claims["claim"] == claim]
+        rows = table[table["claim"] == claim]
         assert len(rows) >= 2, f"claim ({claim}) has {len(rows)} rows"
-    unloading = claims[(claims["claim"] == "k") & claims["statement"].str.contains("unloading")]
+    unloading = table[(table["claim"] == "k") & table["statement"].str.contains("unloading")]
     assert (unloading["measured"] > 0).all(), unloading[["measured", "verdict"]]
-    rolloff = claims[claims["claim"] == "j"]
+    rolloff = table[table["claim"] == "j"]
     assert rolloff["reason"].tolist() == ["no rolloff swept"], rolloff["reason"]
-    body = claims[(claims["claim"] == "a") & (claims["exponent"] == 4.0)]
+    body = table[(table["claim"] == "a") & (table["exponent"] == 4.0)]
     assert len(body) == 4 and body["statement"].str.contains("m = 4").all(), body["statement"]
 
 
@@ -84,16 +84,31 @@ def test_the_papers_theory_is_not_judged_off_its_setting(run):
     """Rows (a)-(f) of a combination with a cutoff or a hardness keep their measured value
     but are 'untested', naming the claim that tests the axis; elastic self-affine rows are judged."""
     work, _ = run
-    claims = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
-    theory_rows = claims[claims["claim"].isin(list("abdef"))]
+    table = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
+    theory_rows = table[table["claim"].isin(list("abcdef")) & table["radius"].notna()]
     plastic = theory_rows[theory_rows["hardness"] == 0.05]
+    assert len(plastic) >= 12, f"{len(plastic)} rows (a)-(f) with a hardness"
     assert (plastic["verdict"] == "untested").all(), plastic[["claim", "verdict"]]
     assert plastic["reason"].str.contains("claim k").all(), plastic["reason"]
     assert plastic["measured"].notna().any(), "the measured values are kept"
     cut = theory_rows[(theory_rows["cutoff"] == 0.05) & np.isinf(theory_rows["hardness"])]
-    assert cut["reason"].str.contains("claim i").all() and "claim k" not in "".join(cut["reason"]), cut["reason"]
+    assert len(cut) >= 6, f"{len(cut)} rows (a)-(f) with a cutoff alone"
+    assert cut["reason"].str.contains("claim i").all(), cut["reason"]
+    assert not cut["reason"].str.contains("claim k").any(), cut["reason"]
     elastic = theory_rows[(theory_rows["cutoff"] == 0.0) & np.isinf(theory_rows["hardness"])]
+    assert len(elastic) >= 6, f"{len(elastic)} rows (a)-(f) at the paper's setting"
     assert not elastic["reason"].str.contains("self-affine").any(), elastic[["claim", "reason"]]
+
+
+@pytest.mark.parametrize("axis, value, claim", [("rolloff", 0.25, "j"), ("cutoff", 0.05, "i"),
+                                                ("hardness", 0.2, "k")])
+def test_off_theory_reason_names_the_claim_of_each_axis(axis, value, claim):
+    """A combination off the paper's setting in one optional axis is untested by eqs. 11-17,
+    and the reason names the claim that tests that axis; the paper's setting has no reason."""
+    paper = {"rolloff": 1.0, "cutoff": 0.0, "hardness": math.inf, "exponent": 2.0}
+    assert claims._off_theory(paper, 1.0) == "", "the paper's setting is judged"
+    reason = claims._off_theory({**paper, axis: value}, 1.0)
+    assert reason.startswith("untested: ") and f"{axis} = {value:g} (claim {claim}" in reason, reason
 
 
 def test_a_figure_per_body_and_variant(run):
