@@ -252,6 +252,15 @@ def test_dense_punch_stiffness_equals_matrix_free(flat_path, rough, monkeypatch,
             f"dense punch stiffness differs ({int(state.contact.sum())} cells)"
 
 
+def _replace_single(monkeypatch, state, product):
+    """Patch the single-precision product of ``state``'s operator class with
+    ``product(exact_single, self, p)``."""
+    operator_type = type(operators.operator_for(state.heights.shape[0], state.length,
+                                                state.e_star, state.periodic))
+    exact_single = operator_type.single
+    monkeypatch.setattr(operator_type, "single", lambda self, p: product(exact_single, self, p))
+
+
 @pytest.mark.parametrize("periodic", [True, False])
 def test_punch_refinement_uses_single_precision_products(flat_path, rough, monkeypatch, periodic):
     """A large footprint's punch solve runs on single-precision products (the fast path) and
@@ -259,11 +268,8 @@ def test_punch_refinement_uses_single_precision_products(flat_path, rough, monke
     state = flat_path[2][-1] if periodic else rough[1]
     dense = contact.stiffness(state)
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
-    operator_type = type(operators.operator_for(state.heights.shape[0], state.length,
-                                                state.e_star, state.periodic))
     calls = []
-    exact_single = operator_type.single
-    monkeypatch.setattr(operator_type, "single", lambda self, p: calls.append(1) or exact_single(self, p))
+    _replace_single(monkeypatch, state, lambda single, self, p: calls.append(1) or single(self, p))
     assert contact.stiffness(state) == pytest.approx(dense, rel=1e-7), "refined punch stiffness differs"
     assert len(calls) > 0, "the single-precision products were not used"
 
@@ -279,14 +285,11 @@ def test_punch_refinement_survives_a_wrong_single_precision_product(flat_path, r
     state = flat_path[2][-1] if periodic else rough[1]
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
     refined = contact.stiffness(state)
-    operator_type = type(operators.operator_for(state.heights.shape[0], state.length,
-                                                state.e_star, state.periodic))
-    exact_single = operator_type.single
     if wrong == "scaled":
-        monkeypatch.setattr(operator_type, "single", lambda self, p: 0.5 * exact_single(self, p))
+        _replace_single(monkeypatch, state, lambda single, self, p: 0.5 * single(self, p))
     else:
-        monkeypatch.setattr(operator_type, "single",
-                            lambda self, p: exact_single(self, p) - 2.0 * self.self_coefficient * p)
+        _replace_single(monkeypatch, state,
+                        lambda single, self, p: single(self, p) - 2.0 * self.self_coefficient * p)
     assert contact.stiffness(state) == pytest.approx(refined, rel=1e-7), \
         f"a {wrong} single-precision product changed the punch stiffness"
 
