@@ -4,8 +4,8 @@ The two legs are the unit of work of the large presets: (a) a nominally flat sel
 surface on the periodic half-space (``presets/zeta.yaml`` with ``grid.n = 1025``: 13 loads
 F/(E* L²) = 10⁻⁶ … 3·10⁻³), and (b) a rough sphere on the free half-space
 (``presets/paper-fine.yaml``: 2049², R = 0.5, H = 0.7, h_rms = 9·10⁻³, 23 loads
-10⁻⁶ … 5.6·10⁻⁴). Each leg runs ``contact.iter_load_path`` and the exact tangent stiffness
-``contact.stiffness`` at every load, as the ``indent`` job does.
+10⁻⁶ … 5.6·10⁻⁴). Each leg runs ``bem.iter_load_path`` and the exact tangent stiffness
+``bem.stiffness`` at every load, as the ``indent`` job does.
 
 Prints, per leg: n, loads, Polonsky–Keer iterations, FFT convolutions (calls of the grid
 operators: ``fft`` double precision, ``fft32`` single precision, counted separately for the
@@ -38,7 +38,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from run import machine_lines
 
-from roughcontact import contact, operators, surfaces
+from roughcontact import bem
+from roughcontact import surfaces
+from roughcontact.bem import operators
 
 #: Counted calls, by phase ("solve" or "stiffness") and kind ("fft" or "dense").
 COUNTS: collections.Counter = collections.Counter()
@@ -91,7 +93,7 @@ def run_leg(heights, forces, periodic, tol, detail):
     """Load path with stiffness; totals and the per-load rows."""
     rows = []
     totals = collections.Counter()
-    path = contact.iter_load_path(heights, forces, length=1.0, e_star=1.0, periodic=periodic, tol=tol)
+    path = bem.iter_load_path(heights, forces, length=1.0, e_star=1.0, periodic=periodic, tol=tol)
     while True:
         before = COUNTS.copy()
         tick = time.perf_counter()
@@ -101,7 +103,7 @@ def run_leg(heights, forces, periodic, tol, detail):
         solve_seconds = time.perf_counter() - tick
         tick = time.perf_counter()
         with phase("stiffness"):
-            stiffness = contact.stiffness(state)
+            stiffness = bem.stiffness(state)
         stiffness_seconds = time.perf_counter() - tick
         spent = COUNTS - before
         row = {"force": state.force, "cells": int(state.contact.sum()), "it": state.iterations,

@@ -249,7 +249,7 @@ class ContactMechanicsPeer:
     def _penetration(self, pixel_forces: np.ndarray, depth: float) -> float:
         """Largest penetration outside the contact set, relative to ``depth``: the
         half of roughcontact's stopping test that ContactMechanics does not check."""
-        from roughcontact.contact import displacement
+        from roughcontact.bem import displacement
 
         pressure = pixel_forces / self.cell_area
         gap = displacement(pressure, length=self.length, e_star=self.e_star) - self.heights - depth

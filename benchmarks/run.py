@@ -1,8 +1,8 @@
 """Load-path benchmark: roughcontact against ContactMechanics and tamaas.
 
 Builds one rough sphere, solves a log-spaced force-controlled load path with the
-stiffness at every force in roughcontact (``contact.load_path`` and the exact
-tangent ``contact.stiffness``) and in each peer (warm-started solves and the
+stiffness at every force in roughcontact (``bem.load_path`` and the exact
+tangent ``bem.stiffness``) and in each peer (warm-started solves and the
 central difference quotient from two extra solves at ``F(1 ± 1e-3)``), all on
 the same heights and tolerance, and prints one table with times, iterations
 and the relative differences of depth and stiffness.
@@ -28,7 +28,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import peers  # noqa: E402
 import roughcontact  # noqa: E402
-from roughcontact import contact, surfaces  # noqa: E402
+from roughcontact import bem
+from roughcontact import surfaces  # noqa: E402
 
 LENGTH = 1.0
 E_STAR = 1.0
@@ -69,13 +70,13 @@ def run_roughcontact(heights, forces, tol):
     """Load path and tangent stiffness in roughcontact; per-force times from the progress hook."""
     stamps = []
     start = time.perf_counter()
-    states = contact.load_path(heights, forces, length=LENGTH, e_star=E_STAR, tol=tol,
+    states = bem.load_path(heights, forces, length=LENGTH, e_star=E_STAR, tol=tol,
                                progress=lambda i, total, state: stamps.append(time.perf_counter()))
     solve_seconds = np.diff([start] + stamps)
     stiffness, stiffness_seconds = [], []
     for state in states:
         tick = time.perf_counter()
-        stiffness.append(contact.stiffness(state))
+        stiffness.append(bem.stiffness(state))
         stiffness_seconds.append(time.perf_counter() - tick)
     return states, solve_seconds, np.array(stiffness), np.array(stiffness_seconds)
 

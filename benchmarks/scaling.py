@@ -25,7 +25,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, machine_lines  # noqa: E402
 
-from roughcontact import contact, surfaces  # noqa: E402
+from roughcontact import bem
+from roughcontact import surfaces  # noqa: E402
 
 
 def best_of(repeat: int, func):
@@ -61,10 +62,10 @@ def main(argv=None) -> int:
                                         seed=0)
         timed = {}
         for windowed in (True, False):
-            state, seconds = best_of(args.repeat, lambda: contact.solve(
+            state, seconds = best_of(args.repeat, lambda: bem.solve(
                 heights, force=force, length=LENGTH, e_star=E_STAR, tol=args.tol,
                 windowed=windowed))
-            stiffness, stiffness_seconds = best_of(args.repeat, lambda: contact.stiffness(state))
+            stiffness, stiffness_seconds = best_of(args.repeat, lambda: bem.stiffness(state))
             timed[windowed] = (state, seconds, stiffness, stiffness_seconds)
         win, full = timed[True], timed[False]
         rows, cols = win[0].window

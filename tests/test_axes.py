@@ -14,7 +14,11 @@ import pandas as pd
 import pytest
 import yaml
 
-from roughcontact import analysis, claims, config, study
+from roughcontact import errors
+from roughcontact.study import claims
+from roughcontact.study import config
+from roughcontact.study import merge
+from roughcontact.study import runs
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = {
@@ -49,8 +53,8 @@ def test_run_names_tag_only_the_axes_off_the_paper_setting(run):
 
 def test_merged_dimensions_and_plastic_variables(run):
     work, cfg = run
-    ds = analysis.read_groups(work / "results/stiffness.nc")["sphere"]
-    assert ds["stiffness"].dims == (*study.AXES["sphere"], "seed", "force"), ds["stiffness"].dims
+    ds = merge.read_groups(work / "results/stiffness.nc")["sphere"]
+    assert ds["stiffness"].dims == (*runs.AXES["sphere"], "seed", "force"), ds["stiffness"].dims
     assert ds["exponent"].values.tolist() == [2.0, 4.0], ds["exponent"].values
     assert ds["cutoff"].values.tolist() == [0.0, 0.05], "cutoff null is the coordinate 0"
     assert ds["rolloff"].values.tolist() == [1.0], "rolloff null is the coordinate L"
@@ -127,7 +131,7 @@ def test_a_figure_per_body_and_variant(run):
     ({"hardness": [0.001]}, "'hardness[0]'"),                        # fully plastic beyond L/4
 ])
 def test_optional_axes_reject_nonsense_in_one_line(change, key):
-    with pytest.raises(config.ConfigError) as info:
+    with pytest.raises(errors.ConfigError) as info:
         config.resolve_config({**CONFIG, **change})
     line = config.error_line(info.value)
     assert len(line.splitlines()) == 1 and line.startswith("Invalid configuration"), line

@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from roughcontact import config, study
+from roughcontact import errors
+from roughcontact.study import config
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -48,7 +49,7 @@ BAD = [
     ("unknown-top-key", "colour", "red", "colour"),
     ("unknown-nested-key", "grid.cells", 65, "cells"),
     ("unknown-solver-key", "solver.tolerance", 1e-8, "tolerance"),
-    ("missing-grid", "grid", DELETE, "grid"),
+    ("missing-radius", "radius", DELETE, "radius"),
     ("n-string", "grid.n", "big", "grid.n"),
     ("n-float", "grid.n", 64.5, "grid.n"),
     ("n-too-small", "grid.n", 8, "grid.n"),
@@ -73,7 +74,7 @@ BAD = [
     ("force-zero", "forces.sphere.from", 0.0, "forces.sphere.from"),
     ("force-negative", "forces.flat.to", -1e-4, "forces.flat.to"),
     ("force-count-one", "forces.sphere.count", 1, "forces.sphere.count"),
-    ("flat-forces-missing", "forces.flat", DELETE, "forces.flat"),
+    ("h-rms-missing", "h_rms", DELETE, "h_rms"),
     ("flat-full-contact", "forces.flat.to", 0.5, "forces.flat.to"),
     ("sphere-reaches-edge", "forces.sphere.to", 0.5, "forces.sphere.to"),
     ("tol-zero", "solver.tol", 0.0, "solver.tol"),
@@ -95,7 +96,7 @@ def test_good_config_passes():
 @pytest.mark.parametrize("key,value,named", [b[1:] for b in BAD], ids=[b[0] for b in BAD])
 def test_bad_config_rejected_with_one_line(key, value, named):
     cfg = _set(copy.deepcopy(GOOD), key, value)
-    with pytest.raises(config.ConfigError) as err:
+    with pytest.raises(errors.ConfigError) as err:
         config.resolve_config(cfg)
     msg = str(err.value)
     assert "\n" not in msg, msg

@@ -23,7 +23,8 @@ import math
 
 import pytest
 
-from roughcontact import contact, surfaces
+from roughcontact import bem
+from roughcontact import surfaces
 
 E_STAR = 1.0
 LENGTH = 1.0
@@ -50,7 +51,7 @@ def indentation(request):
     radius, closed_form = BODIES[exponent]
     force, depth = closed_form(A)
     z = surfaces.body_of_revolution(n, radius=radius, exponent=exponent, length=LENGTH)
-    state = contact.solve(z, force=force, length=LENGTH, e_star=E_STAR, tol=1e-8)
+    state = bem.solve(z, force=force, length=LENGTH, e_star=E_STAR, tol=1e-8)
     return state, force, depth
 
 
@@ -71,4 +72,4 @@ def test_contact_radius(indentation):
 
 def test_stiffness(indentation):
     state = indentation[0]
-    assert contact.stiffness(state) == pytest.approx(2 * E_STAR * A, rel=1e-2), "k = 2 E* a"
+    assert bem.stiffness(state) == pytest.approx(2 * E_STAR * A, rel=1e-2), "k = 2 E* a"

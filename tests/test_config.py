@@ -12,10 +12,12 @@ from pathlib import Path
 import pytest
 import yaml
 
-from roughcontact import config, study
+from roughcontact import cli
+from roughcontact import errors
+from roughcontact.study import config
+from roughcontact.study import runs, schema
 
 ROOT = Path(__file__).resolve().parents[1]
-SCHEMA = ROOT / "workflow/schemas/config.schema.yaml"
 TINY = yaml.safe_load((ROOT / "presets/tiny.yaml").read_text())
 
 
@@ -54,8 +56,8 @@ BAD = [
     ("n too small", _with("grid.n", 8), "grid.n"),
     ("n not an integer", _with("grid.n", "many"), "grid.n"),
     ("bad stiffness method", _with("solver.stiffness", "secant"), "solver.stiffness"),
-    ("missing grid", _with("grid", DELETE), "grid"),
-    ("missing sphere forces", _with("forces.sphere", DELETE), "forces.sphere"),
+    ("missing hurst", _with("hurst", DELETE), "hurst"),
+    ("missing seeds", _with("seeds", DELETE), "seeds"),
     ("flat range near full contact", _with("forces.flat", {"from": 1e-5, "to": 0.5, "count": 5}), "forces.flat.to"),
     ("even slope window", _with("fit.slopes.window", 4), "fit.slopes.window"),
     ("sphere contact beyond the grid", _with("forces.sphere", {"from": 1e-5, "to": 0.2, "count": 5}),
@@ -65,8 +67,8 @@ BAD = [
 
 @pytest.mark.parametrize("cfg, needle", [b[1:] for b in BAD], ids=[b[0] for b in BAD])
 def test_bad_config_one_line_naming_the_key(cfg, needle):
-    with pytest.raises(config.ConfigError) as info:
-        config.resolve_config(cfg, schema=SCHEMA)
+    with pytest.raises(errors.ConfigError) as info:
+        config.resolve_config(cfg)
     msg = str(info.value)
     assert "\n" not in msg
     assert needle in msg
@@ -75,13 +77,13 @@ def test_bad_config_one_line_naming_the_key(cfg, needle):
 
 def test_good_configs_resolve():
     for path in [ROOT / "config.yaml", *sorted((ROOT / "presets").glob("*.yaml"))]:
-        cfg = config.resolve_config(config.load_config(path), schema=SCHEMA)
+        cfg = config.resolve_config(config.load_config(path))
         assert cfg["seeds"] == sorted(set(cfg["seeds"]))
         assert all(isinstance(s, int) for s in cfg["seeds"])
 
 
 def test_default_config_sweeps_every_axis():
-    cfg = config.resolve_config(config.load_config(ROOT / "config.yaml"), schema=SCHEMA)
+    cfg = config.resolve_config(config.load_config(ROOT / "config.yaml"))
     for axis in ("hurst", "radius", "h_rms", "seeds"):
         assert len(cfg[axis]) >= 2, axis
     assert any(math.isinf(r) for r in cfg["radius"]) and any(math.isfinite(r) for r in cfg["radius"])
@@ -92,7 +94,7 @@ def test_command_line_strings_are_coerced():
     cfg = _with("hurst", "[0.5, 0.8]")
     cfg["forces"]["sphere"]["from"] = "1e-5"
     cfg["radius"] = ["0.5", "inf"]
-    out = config.resolve_config(cfg, schema=SCHEMA)
+    out = config.resolve_config(cfg)
     assert out["hurst"] == [0.5, 0.8] and out["forces"]["sphere"]["from"] == 1e-5
     assert math.isinf(out["radius"][1])
 
@@ -136,25 +138,25 @@ def test_paper_preset_plans_50_indent_jobs_per_combination(tmp_path):
     proc = _snakemake(["-n", "--configfile", str(ROOT / "presets/paper.yaml")], tmp_path)
     assert proc.returncode == 0, proc.stderr
     out = proc.stdout + proc.stderr
-    cfg = config.resolve_config(config.load_config(ROOT / "presets/paper.yaml"), schema=SCHEMA)
+    cfg = config.resolve_config(config.load_config(ROOT / "presets/paper.yaml"))
     assert cfg["grid"]["n"] == 513 and cfg["hurst"] == [0.7] and 0.5 in cfg["radius"]
     assert cfg["h_rms"] == [9e-3] and len(cfg["seeds"]) == 50
     assert cfg["forces"]["sphere"]["from"] <= 1e-7 and cfg["forces"]["sphere"]["to"] >= 1e-2
-    for combo in study.combinations(cfg):
-        prefix = f"results/runs/H{study.format_value(combo['hurst'])}_R{study.format_value(combo['radius'])}" \
-                 f"_h{study.format_value(combo['h_rms'])}/"
+    for combo in runs.combinations(cfg):
+        prefix = f"results/runs/H{runs.format_value(combo['hurst'])}_R{runs.format_value(combo['radius'])}" \
+                 f"_h{runs.format_value(combo['h_rms'])}/"
         planned = {line.split(prefix)[1].split()[0] for line in out.splitlines()
                    if "output:" in line and prefix in line}
         assert len(planned) == 50, (prefix, len(planned))
 
 
 def test_cli_check_config(tmp_path):
-    from roughcontact import cli
+
 
     assert cli.main(["check-config", str(ROOT / "config.yaml")]) == 0
     bad = tmp_path / "bad.yaml"
     bad.write_text(yaml.safe_dump(_with("hurst", [0.0])))
-    assert cli.main(["check-config", str(bad), "--schema", str(SCHEMA)]) == 2
+    assert cli.main(["check-config", str(bad)]) == 2
 
 
 def test_conda_env_files_exist():
@@ -164,3 +166,23 @@ def test_conda_env_files_exist():
     for smk in (ROOT / "workflow/rules").glob("*.smk"):
         for rel in re.findall(r'conda:\s*\n\s*"([^"]+)"', smk.read_text()):
             assert (smk.parent / rel).resolve().is_file(), (smk.name, rel)
+
+
+def test_a_config_of_only_the_sweep_axes_takes_every_default_of_the_schema():
+    """Defaults are defaults: the four sweep axes alone resolve, and every other key equals
+    the schema's ``default`` (the same numbers as ``config.yaml`` for the keys it sets)."""
+    minimal = {"hurst": [0.7], "radius": [0.5, math.inf], "h_rms": [9e-3], "seeds": 2}
+    resolved = config.resolve_config(minimal)
+    root = schema.load_schema(None)
+    for path in (["grid", "n"], ["grid", "length"], ["e_star"], ["forces", "sphere"], ["forces", "flat"],
+                 ["solver", "tol"], ["solver", "stiffness"], ["solver", "rel_step"], ["fit", "zeta", "min_cells"],
+                 ["fit", "zeta", "max_area_fraction"], ["fit", "zeta", "bootstrap"], ["fit", "slopes", "window"],
+                 ["exponent"], ["rolloff"], ["cutoff"], ["hardness"]):
+        value = resolved
+        for key in path:
+            value = value[key]
+        assert value == schema.default_of(root, path), f"{'.'.join(path)} = {value!r} is not the schema's default"
+    full = config.resolve_config(config.load_config(ROOT / "config.yaml"))
+    assert {k: full[k] for k in ("grid", "e_star", "forces", "solver", "fit")} == \
+        {k: resolved[k] for k in ("grid", "e_star", "forces", "solver", "fit")}, \
+        "the schema's defaults differ from the values config.yaml spells out"

@@ -5,7 +5,11 @@ import math
 import numpy as np
 import pytest
 
-from roughcontact import active_sets, contact, operators, surfaces
+from roughcontact import bem
+from roughcontact import errors
+from roughcontact import surfaces
+from roughcontact.bem import active_sets
+from roughcontact.bem import operators
 
 E_STAR = 1.0
 
@@ -89,7 +93,7 @@ def hertz():
     a = 0.1
     force = 4 * E_STAR * a**3 / (3 * radius)
     z = surfaces.paraboloid(n, radius=radius, length=length)
-    state = contact.solve(z, force=force, length=length, e_star=E_STAR, tol=1e-8)
+    state = bem.solve(z, force=force, length=length, e_star=E_STAR, tol=1e-8)
     return state, radius, force
 
 
@@ -129,13 +133,13 @@ def test_hertz_stiffness(hertz):
     """k = 2 E* a within 1%."""
     state, radius, force = hertz
     a = (3 * force * radius / (4 * E_STAR)) ** (1 / 3)
-    assert contact.stiffness(state) == pytest.approx(2 * E_STAR * a, rel=1e-2), "Hertz stiffness"
+    assert bem.stiffness(state) == pytest.approx(2 * E_STAR * a, rel=1e-2), "Hertz stiffness"
 
 
 def test_hertz_windowed_equals_full(hertz):
     """The windowed solve and the whole-grid solve agree within the tolerance."""
     state, _, force = hertz
-    full = contact.solve(state.heights, force=force, length=1.0, e_star=E_STAR, windowed=False)
+    full = bem.solve(state.heights, force=force, length=1.0, e_star=E_STAR, windowed=False)
     assert state.window != full.window, "the test should compare a window with the full grid"
     assert state.depth == pytest.approx(full.depth, rel=1e-7), "windowed depth differs"
     assert np.array_equal(state.contact, full.contact), "windowed contact set differs"
@@ -149,10 +153,10 @@ def test_flat_punch_stiffness(n, cells):
     discretized disc; the unresolved edge singularity costs ≈ 0.4% at 30 cells."""
     r = surfaces.radial_distance(n, 1.0)
     z = np.where(r <= cells / n, 0.0, 1.0)
-    state = contact.solve(z, force=1e-3, length=1.0, e_star=E_STAR)
+    state = bem.solve(z, force=1e-3, length=1.0, e_star=E_STAR)
     a = math.sqrt(state.contact_area / math.pi)
     assert np.count_nonzero(state.contact) == np.count_nonzero(z == 0), "punch not in full contact"
-    assert contact.stiffness(state) == pytest.approx(2 * E_STAR * a, rel=2e-2), "punch stiffness"
+    assert bem.stiffness(state) == pytest.approx(2 * E_STAR * a, rel=2e-2), "punch stiffness"
 
 
 # --- periodic wavy surface -------------------------------------------------------------
@@ -167,7 +171,7 @@ def test_wavy_contact_half_width(n, load_ratio):
     z = np.broadcast_to(h * np.cos(2 * math.pi * x / length)[:, None], (n, n)).copy()
     p_star = math.pi * E_STAR * h / length
     force = load_ratio * p_star * length**2
-    state = contact.solve(z, force=force, length=length, e_star=E_STAR, periodic=True)
+    state = bem.solve(z, force=force, length=length, e_star=E_STAR, periodic=True)
     half_width = math.asin(math.sqrt(load_ratio)) * length / math.pi
     measured = np.count_nonzero(state.contact[:, 0]) * length / n / 2
     assert state.converged, "wavy solve did not converge"
@@ -178,7 +182,7 @@ def wavy_state(load_ratio, n=64, length=1.0, h=1e-2):
     x = np.arange(n) * length / n
     z = np.broadcast_to(h * np.cos(2 * math.pi * x / length)[:, None], (n, n)).copy()
     force = load_ratio * math.pi * E_STAR * h / length * length**2
-    return contact.solve(z, force=force, length=length, e_star=E_STAR, periodic=True)
+    return bem.solve(z, force=force, length=length, e_star=E_STAR, periodic=True)
 
 
 @pytest.mark.parametrize("load_ratio", [1.0, 1.5])
@@ -202,14 +206,14 @@ def flat_path(request):
     n = request.param
     z = surfaces.self_affine(n, hurst=0.7, h_rms=9e-3, length=1.0, seed=3)
     forces = np.geomspace(1e-6, 3e-4, 5)
-    return z, forces, contact.load_path(z, forces, length=1.0, e_star=E_STAR, periodic=True)
+    return z, forces, bem.load_path(z, forces, length=1.0, e_star=E_STAR, periodic=True)
 
 
 def test_flat_candidates_equal_whole_grid(flat_path):
     """The dense solve on the cells that can touch gives the whole-grid FFT solution."""
     z, forces, states = flat_path
     for force, state in zip(forces, states):
-        full = contact.solve(z, force=force, length=1.0, e_star=E_STAR, periodic=True,
+        full = bem.solve(z, force=force, length=1.0, e_star=E_STAR, periodic=True,
                              windowed=False)
         assert state.depth == pytest.approx(full.depth, rel=1e-7), f"depth differs at F = {force:g}"
         assert np.array_equal(state.contact, full.contact), f"contact set differs at F = {force:g}"
@@ -233,8 +237,8 @@ def test_flat_cold_solve_enlarges_the_candidates(monkeypatch):
     solve_candidates = active_sets.solve_candidates
     monkeypatch.setattr(active_sets, "solve_candidates",
                         lambda *args: used.append(solve_candidates(*args)) or used[-1])
-    state = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True)
-    full = contact.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True, windowed=False)
+    state = bem.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True)
+    full = bem.solve(z, force=3e-4, length=1.0, e_star=E_STAR, periodic=True, windowed=False)
     assert used and used[-1] is not None, "the candidate solve was not used"
     assert state.depth > np.quantile(z - z.min(), 64 / z.size), "the first bound was not too small"
     assert state.depth == pytest.approx(full.depth, rel=1e-7), "depth differs from the whole grid"
@@ -245,10 +249,10 @@ def test_flat_cold_solve_enlarges_the_candidates(monkeypatch):
 def test_dense_punch_stiffness_equals_matrix_free(flat_path, rough, monkeypatch, periodic):
     """The punch stiffness with a dense influence matrix equals the FFT-based one."""
     states = flat_path[2] if periodic else [rough[1]]
-    dense = [contact.stiffness(s) for s in states]
+    dense = [bem.stiffness(s) for s in states]
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
     for state, k in zip(states, dense):
-        assert k == pytest.approx(contact.stiffness(state), rel=1e-7), \
+        assert k == pytest.approx(bem.stiffness(state), rel=1e-7), \
             f"dense punch stiffness differs ({int(state.contact.sum())} cells)"
 
 
@@ -266,11 +270,11 @@ def test_punch_refinement_uses_single_precision_products(flat_path, rough, monke
     """A large footprint's punch solve runs on single-precision products (the fast path) and
     still meets tol = 1e-8: the dense solve gives the same stiffness within 1e-7."""
     state = flat_path[2][-1] if periodic else rough[1]
-    dense = contact.stiffness(state)
+    dense = bem.stiffness(state)
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
     calls = []
     _replace_single(monkeypatch, state, lambda single, self, p: calls.append(1) or single(self, p))
-    assert contact.stiffness(state) == pytest.approx(dense, rel=1e-7), "refined punch stiffness differs"
+    assert bem.stiffness(state) == pytest.approx(dense, rel=1e-7), "refined punch stiffness differs"
     assert len(calls) > 0, "the single-precision products were not used"
 
 
@@ -284,13 +288,13 @@ def test_punch_refinement_survives_a_wrong_single_precision_product(flat_path, r
     precision, with the same stiffness within 1e-7 (tol = 1e-8)."""
     state = flat_path[2][-1] if periodic else rough[1]
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 0)
-    refined = contact.stiffness(state)
+    refined = bem.stiffness(state)
     if wrong == "scaled":
         _replace_single(monkeypatch, state, lambda single, self, p: 0.5 * single(self, p))
     else:
         _replace_single(monkeypatch, state,
                         lambda single, self, p: single(self, p) - 2.0 * self.self_coefficient * p)
-    assert contact.stiffness(state) == pytest.approx(refined, rel=1e-7), \
+    assert bem.stiffness(state) == pytest.approx(refined, rel=1e-7), \
         f"a {wrong} single-precision product changed the punch stiffness"
 
 
@@ -300,7 +304,7 @@ def test_punch_refinement_survives_a_wrong_single_precision_product(flat_path, r
 def rough():
     n, length = 257, 1.0
     z = surfaces.rough_sphere(n, radius=0.5, hurst=0.7, h_rms=9e-3, length=length, seed=4)
-    state = contact.solve(z, force=1e-3, length=length, e_star=E_STAR, tol=1e-8)
+    state = bem.solve(z, force=1e-3, length=length, e_star=E_STAR, tol=1e-8)
     return z, state
 
 
@@ -326,15 +330,15 @@ def test_rough_force_matched(rough):
 
 def test_rough_warm_equals_cold(rough):
     z, cold = rough
-    lower = contact.solve(z, force=0.7e-3, length=1.0, e_star=E_STAR)
-    warm = contact.solve(z, force=1e-3, length=1.0, e_star=E_STAR, initial=lower.pressure)
+    lower = bem.solve(z, force=0.7e-3, length=1.0, e_star=E_STAR)
+    warm = bem.solve(z, force=1e-3, length=1.0, e_star=E_STAR, initial=lower.pressure)
     assert warm.depth == pytest.approx(cold.depth, rel=1e-7), "warm-start depth differs"
     assert np.array_equal(warm.contact, cold.contact), "warm-start contact set differs"
 
 
 def test_rough_windowed_equals_full(rough):
     z, state = rough
-    full = contact.solve(z, force=1e-3, length=1.0, e_star=E_STAR, windowed=False)
+    full = bem.solve(z, force=1e-3, length=1.0, e_star=E_STAR, windowed=False)
     assert full.depth == pytest.approx(state.depth, rel=1e-7), "windowed depth differs"
     assert np.array_equal(full.contact, state.contact), "windowed contact set differs"
 
@@ -343,14 +347,14 @@ def test_rough_difference_quotient_equals_punch(rough):
     """The paper's differential quotient approaches the exact tangent stiffness;
     over ±0.1% of load few cells change status, so they agree within 1%."""
     _, state = rough
-    exact = contact.stiffness(state)
-    assert contact.stiffness(state, method="difference", rel_step=1e-3) == \
+    exact = bem.stiffness(state)
+    assert bem.stiffness(state, method="difference", rel_step=1e-3) == \
         pytest.approx(exact, rel=1e-2), "difference quotient vs punch stiffness"
 
 
 def test_load_path_matches_independent_solves(rough):
     z, state = rough
-    states = contact.load_path(z, [1e-5, 1e-4, 1e-3], length=1.0, e_star=E_STAR)
+    states = bem.load_path(z, [1e-5, 1e-4, 1e-3], length=1.0, e_star=E_STAR)
     assert states[-1].depth == pytest.approx(state.depth, rel=1e-7), "load-path depth differs"
     assert [s.force for s in states] == pytest.approx([1e-5, 1e-4, 1e-3], rel=1e-12), "forces"
 
@@ -362,9 +366,9 @@ def test_iter_load_path_equals_load_path(n):
     z = surfaces.rough_sphere(n, radius=0.5, hurst=0.7, h_rms=9e-3, length=1.0, seed=5)
     forces = np.geomspace(1e-5, 1e-3, 4)
     calls = []
-    listed = contact.load_path(z, forces, length=1.0, e_star=E_STAR,
+    listed = bem.load_path(z, forces, length=1.0, e_star=E_STAR,
                                progress=lambda i, total, s: calls.append((i, total, s.force)))
-    generated = contact.iter_load_path(z, forces, length=1.0, e_star=E_STAR)
+    generated = bem.iter_load_path(z, forces, length=1.0, e_star=E_STAR)
     count = 0
     for a, b in zip(listed, generated, strict=True):
         count += 1
@@ -380,13 +384,13 @@ def test_iter_load_path_checks_arguments_eagerly():
     """Bad arguments raise when the generator is made, not at the first next()."""
     z = surfaces.paraboloid(16, radius=0.5)
     with pytest.raises(ValueError, match="forces"):
-        contact.iter_load_path(z, [1e-4, -1.0], length=1.0, e_star=E_STAR)
+        bem.iter_load_path(z, [1e-4, -1.0], length=1.0, e_star=E_STAR)
 
 
 def test_stiffness_increases_along_load_path(rough):
     z, _ = rough
-    states = contact.load_path(z, np.geomspace(1e-6, 1e-3, 6), length=1.0, e_star=E_STAR)
-    k = [contact.stiffness(s) for s in states]
+    states = bem.load_path(z, np.geomspace(1e-6, 1e-3, 6), length=1.0, e_star=E_STAR)
+    k = [bem.stiffness(s) for s in states]
     assert np.all(np.diff(k) > 0), f"stiffness not increasing: {k}"
 
 
@@ -396,12 +400,12 @@ def test_exact_scaling_with_length_and_modulus():
     """Same problem with L = 2, E* = 3: F ∝ E*L², k ∝ E*L, d ∝ L, to 1e-10."""
     n, kw = 129, dict(radius=0.5, hurst=0.7, h_rms=9e-3, seed=2)
     base_z = surfaces.rough_sphere(n, length=1.0, **kw)
-    base = contact.solve(base_z, force=1e-3, length=1.0, e_star=1.0, tol=1e-12)
+    base = bem.solve(base_z, force=1e-3, length=1.0, e_star=1.0, tol=1e-12)
     scaled_z = surfaces.rough_sphere(n, length=2.0, **{**kw, "radius": 1.0, "h_rms": 18e-3})
-    scaled = contact.solve(scaled_z, force=1e-3 * 3 * 4, length=2.0, e_star=3.0, tol=1e-12)
+    scaled = bem.solve(scaled_z, force=1e-3 * 3 * 4, length=2.0, e_star=3.0, tol=1e-12)
     assert scaled.force / base.force == pytest.approx(12, rel=1e-10), "force scaling"
     assert scaled.depth / base.depth == pytest.approx(2, rel=1e-10), "depth scaling"
-    assert contact.stiffness(scaled, tol=1e-13) / contact.stiffness(base, tol=1e-13) == \
+    assert bem.stiffness(scaled, tol=1e-13) / bem.stiffness(base, tol=1e-13) == \
         pytest.approx(6, rel=1e-10), "stiffness scaling"
 
 
@@ -409,13 +413,13 @@ def test_exact_scaling_with_length_and_modulus():
 
 def test_contact_reaching_edge_raises():
     z = surfaces.paraboloid(32, radius=0.5, length=1.0)
-    with pytest.raises(contact.DomainTooSmallError, match="edge"):
-        contact.solve(z, force=1.0, length=1.0, e_star=E_STAR)
+    with pytest.raises(errors.DomainTooSmallError, match="edge"):
+        bem.solve(z, force=1.0, length=1.0, e_star=E_STAR)
 
 
 def test_maxiter_reports_not_converged():
     z = surfaces.rough_sphere(65, radius=0.5, hurst=0.7, h_rms=9e-3, length=1.0, seed=0)
-    state = contact.solve(z, force=1e-3, length=1.0, e_star=E_STAR, maxiter=2)
+    state = bem.solve(z, force=1e-3, length=1.0, e_star=E_STAR, maxiter=2)
     assert not state.converged, "a 2-iteration solve claims convergence"
 
 
@@ -431,23 +435,23 @@ def test_bad_arguments_name_themselves(kwargs, name):
     z = surfaces.paraboloid(16, radius=0.5)
     args = dict(force=1e-4, length=1.0, e_star=1.0) | kwargs
     with pytest.raises(ValueError, match=name):
-        contact.solve(z, **args)
+        bem.solve(z, **args)
 
 
 def test_non_square_heights_rejected():
     with pytest.raises(ValueError, match="heights"):
-        contact.solve(np.zeros((16, 17)), force=1.0, length=1.0, e_star=1.0)
+        bem.solve(np.zeros((16, 17)), force=1.0, length=1.0, e_star=1.0)
 
 
 def test_unknown_stiffness_method_rejected(rough):
     with pytest.raises(ValueError, match="method"):
-        contact.stiffness(rough[1], method="secant")
+        bem.stiffness(rough[1], method="secant")
 
 
 def test_edge_contact_allowed_for_a_finite_flat_punch():
     """A nominally flat rough indenter as large as the grid may touch its edge cells."""
     z = surfaces.self_affine(64, hurst=0.7, h_rms=9e-3, length=1.0, seed=0)
-    state = contact.solve(z, force=1e-2, length=1.0, e_star=E_STAR, edge_contact=True)
+    state = bem.solve(z, force=1e-2, length=1.0, e_star=E_STAR, edge_contact=True)
     edge = np.concatenate([state.contact[0], state.contact[-1],
                            state.contact[:, 0], state.contact[:, -1]])
     assert state.converged, "edge-contact solve did not converge"

@@ -17,10 +17,15 @@ import pytest
 import yaml
 from snakemake_dry import dry_run
 
-from roughcontact import _validate, cli, config, contact, surfaces
+from roughcontact import _validate
+from roughcontact import bem
+from roughcontact import cli
+from roughcontact import errors
+from roughcontact import surfaces
+from roughcontact.study import config
+from roughcontact.study.schema import SCHEMA_PATH
 
 ROOT = Path(__file__).resolve().parents[1]
-SCHEMA = ROOT / "workflow/schemas/config.schema.yaml"
 BASE = config.load_config(ROOT / "config.yaml")
 
 
@@ -75,8 +80,8 @@ def _yaml_config(key: str, text: str) -> dict:
 
 
 def _rejection(cfg) -> str:
-    with pytest.raises(config.ConfigError) as info:
-        config.resolve_config(cfg, schema=SCHEMA)
+    with pytest.raises(errors.ConfigError) as info:
+        config.resolve_config(cfg)
     return config.error_line(info.value)
 
 
@@ -98,14 +103,14 @@ def test_message_says_finite(key, text, named, shown):
 
 @pytest.mark.parametrize("text", ["[0.5, .inf]", "[0.5, inf]", "[0.5, .Inf]", "[0.5, '+inf']", "[0.5, Infinity]"])
 def test_radius_accepts_inf_as_a_flat_surface(text):
-    cfg = config.resolve_config(_yaml_config("radius", text), schema=SCHEMA)
+    cfg = config.resolve_config(_yaml_config("radius", text))
     assert cfg["radius"][0] == 0.5, f"sphere radius changed: {cfg['radius']}"
     assert cfg["radius"][1] == math.inf, f"{text} did not resolve to a flat surface: {cfg['radius']}"
 
 
 def _schema_with_axis() -> dict:
     """The schema plus a sweep axis it does not have yet: numbers > 0 or null."""
-    schema = yaml.safe_load(SCHEMA.read_text())
+    schema = yaml.safe_load(SCHEMA_PATH.read_text())
     schema["properties"]["rolloff"] = {"description": "roll-off wavelengths", "type": "array", "minItems": 1,
                                        "items": {"type": ["number", "null"], "exclusiveMinimum": 0}}
     return schema
@@ -114,7 +119,7 @@ def _schema_with_axis() -> dict:
 @pytest.mark.parametrize("text, named, shown", [("[.nan]", "rolloff[0]", "nan"), ("[null, .inf]", "rolloff[1]", "inf")])
 def test_a_new_key_is_checked_without_new_code(text, named, shown):
     cfg = _changed("e_star", 1.0) | {"rolloff": yaml.safe_load(f"value: {text}")["value"]}
-    with pytest.raises(config.ConfigError) as info:
+    with pytest.raises(errors.ConfigError) as info:
         config.resolve_config(cfg, schema=_schema_with_axis())
     line = config.error_line(info.value)
     assert f"'{named}' = {shown} is not allowed" in line, f"new axis not checked: {line!r}"
@@ -129,7 +134,7 @@ def test_a_new_key_accepts_finite_values_and_null():
 
 def test_default_config_resolves_unchanged():
     """The schema annotation and the finite walk leave the default sweep alone."""
-    cfg = config.resolve_config(BASE, schema=SCHEMA)
+    cfg = config.resolve_config(BASE)
     assert cfg["radius"] == [0.5, math.inf], f"radius axis changed: {cfg['radius']}"
     assert cfg["seeds"] == list(range(6)), f"seeds changed: {cfg['seeds']}"
 
@@ -137,7 +142,7 @@ def test_default_config_resolves_unchanged():
 def _check_config(path: Path) -> tuple[int, str]:
     err = io.StringIO()
     with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-        code = cli.main(["check-config", str(path), "--schema", str(SCHEMA)])
+        code = cli.main(["check-config", str(path)])
     return code, err.getvalue()
 
 
@@ -211,8 +216,8 @@ def test_indent_rejects_non_finite_flags(tmp_path, flag, value):
 def test_indent_radius_inf_is_a_flat_run():
     args = cli._parser().parse_args(["indent", "--hurst", "0.7", "--radius", "inf", "--h-rms", "9e-3", "-o", "x.nc"])
     settings = cli.settings_from_args(args)
-    assert settings["kind"] == "flat", f"--radius inf gave {settings['kind']}"
-    assert settings["periodic"] is True, "--radius inf is not periodic"
+    assert settings.kind == "flat", f"--radius inf gave {settings.kind}"
+    assert settings.periodic is True, "--radius inf is not periodic"
 
 
 # ---------------------------------------------------------------------------
@@ -256,9 +261,9 @@ def test_rough_sphere_rejects_non_finite(kwargs):
 def test_solve_rejects_non_finite(kwargs):
     args = {"length": 1.0, "e_star": 1.0, "tol": 1e-8} | kwargs
     with pytest.raises(ValueError, match="must be a finite number"):
-        contact.solve(surfaces.paraboloid(17, radius=0.5), force=1e-4, **args)
+        bem.solve(surfaces.paraboloid(17, radius=0.5), force=1e-4, **args)
 
 
 def test_solve_rejects_non_finite_force():
     with pytest.raises(ValueError, match="force must be a finite number"):
-        contact.solve(surfaces.paraboloid(17, radius=0.5), force=math.nan, length=1.0, e_star=1.0)
+        bem.solve(surfaces.paraboloid(17, radius=0.5), force=math.nan, length=1.0, e_star=1.0)

@@ -3,8 +3,8 @@ from the schema (so keys added to the schema join in without edits here).
 
 Every mutated config is either
 
-* accepted: then ``study.runs``/``study.run_paths`` give one distinct run path
-  per run, and each path parses back (``study.parse_run_path``) to exactly the
+* accepted: then ``runs.runs``/``runs.run_paths`` give one distinct run path
+  per run, and each path parses back (``runs.parse_run_path``) to exactly the
   run's configured values; or
 * rejected by ``roughcontact check-config`` (exit code 2) with one line that
   starts with ``Invalid configuration`` and names a key.
@@ -29,11 +29,16 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from snakemake_dry import dry_run
+from workflow_paths import RUN_PATTERN
 
-from roughcontact import _validate, cli, config, study
+from roughcontact import _validate
+from roughcontact import cli
+from roughcontact import errors
+from roughcontact.study import config
+from roughcontact.study import runs
+from roughcontact.study.schema import SCHEMA_PATH
 
 ROOT = Path(__file__).resolve().parents[1]
-SCHEMA_PATH = ROOT / "workflow/schemas/config.schema.yaml"
 SCHEMA = yaml.safe_load(SCHEMA_PATH.read_text())
 BASE = config.load_config(ROOT / "config.yaml")
 
@@ -209,15 +214,15 @@ def _same(a, b) -> bool:
 
 def check_accepted(cfg: dict) -> int:
     """The run naming of an accepted config: distinct paths that parse back exactly; returns the run count."""
-    runs = study.runs(cfg)
-    paths = study.run_paths(cfg)
-    assert len(paths) == len(runs), f"{len(paths)} paths for {len(runs)} runs"
+    table = runs.runs(cfg)
+    paths = runs.run_paths(cfg, RUN_PATTERN)
+    assert len(paths) == len(table), f"{len(paths)} paths for {len(table)} runs"
     assert len(set(paths)) == len(paths), f"run paths collide: {len(paths) - len(set(paths))} duplicates"
-    for run, path in zip(runs, paths):
-        parsed = study.parse_run_path(path)
+    for run, path in zip(table, paths):
+        parsed = runs.parse_run_path(path, RUN_PATTERN)
         for field, value in parsed.items():
             assert _same(value, run[field]), f"{path}: {field} parses to {value!r}, not {run[field]!r}"
-    return len(runs)
+    return len(table)
 
 
 def check_rejected(line: str) -> None:
@@ -230,8 +235,8 @@ def check_rejected(line: str) -> None:
 def outcome(cfg: dict) -> tuple[str, str | dict]:
     """('accepted', resolved config) or ('rejected', the one line)."""
     try:
-        return "accepted", config.resolve_config(cfg, schema=SCHEMA)
-    except config.ConfigError as err:
+        return "accepted", config.resolve_config(cfg)
+    except errors.ConfigError as err:
         return "rejected", config.error_line(err)
 
 
@@ -239,7 +244,7 @@ def _check_config_cli(text: str, path: Path) -> tuple[int, str]:
     path.write_text(text, encoding="utf-8")
     err = io.StringIO()
     with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-        code = cli.main(["check-config", str(path), "--schema", str(SCHEMA_PATH)])
+        code = cli.main(["check-config", str(path)])
     return code, err.getvalue()
 
 
@@ -338,7 +343,7 @@ def seeded_sample(seed: int = 20240611) -> list[dict]:
     """DRY_RUNS mutated configs (at least DRY_ACCEPTED accepted), from the same catalogue."""
     rng = random.Random(seed)
     accepted, rejected = [], []
-    sweeps = {frozenset(study.run_paths(config.resolve_config(BASE, schema=SCHEMA)))}  # accepted: each a new sweep
+    sweeps = {frozenset(runs.run_paths(config.resolve_config(BASE), RUN_PATTERN))}  # accepted: each a new sweep
     while len(accepted) + len(rejected) < DRY_RUNS:
         cfg = copy.deepcopy(BASE)
         for _ in range(rng.randint(1, 2)):
@@ -351,7 +356,7 @@ def seeded_sample(seed: int = 20240611) -> list[dict]:
         _, loaded = _yaml_round_trip(cfg)
         kind, result = outcome(loaded)
         if kind == "accepted":
-            paths = frozenset(study.run_paths(result))
+            paths = frozenset(runs.run_paths(result, RUN_PATTERN))
             if len(paths) <= 100 and paths not in sweeps:  # a few dozen runs keep the dry runs quick
                 sweeps.add(paths)
                 accepted.append(loaded)

@@ -7,8 +7,10 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from roughcontact import greenwood_tripp as gt
-from roughcontact import surfaces, theory
+from roughcontact import surfaces
+from roughcontact.models import asperities, greenwood_tripp
+from roughcontact.models import paper
+
 
 MU = 4.0
 
@@ -21,16 +23,16 @@ def test_gt_function_is_the_integral(n, h):
     """F_n(h) = ∫_h^∞ (x − h)^n φ(x) dx by adaptive quadrature (accuracy ~1e-12)."""
     expected, _ = quad(lambda x: (x - h) ** n * math.exp(-x * x / 2) / math.sqrt(2 * math.pi),
                        h, max(h, 0.0) + 40.0, limit=200, epsabs=0.0, epsrel=1e-13)
-    assert float(gt.gt_function(h, n)) == pytest.approx(expected, rel=1e-10), \
+    assert float(greenwood_tripp.gt_function(h, n)) == pytest.approx(expected, rel=1e-10), \
         f"F_{n}({h}) differs from the integral"
 
 
 @pytest.mark.parametrize("h", [-2.0, 0.5, 3.0])
 def test_gt_function_antiderivative(h):
     """∫_h^∞ F_{3/2}(s) ds = F_{5/2}(h)/(5/2), the identity behind the light-load limit."""
-    integral, _ = quad(lambda s: float(gt.gt_function(s, 1.5)), h, h + 40.0, limit=200,
+    integral, _ = quad(lambda s: float(greenwood_tripp.gt_function(s, 1.5)), h, h + 40.0, limit=200,
                        epsabs=0.0, epsrel=1e-12)
-    assert integral == pytest.approx(float(gt.gt_function(h, 2.5)) / 2.5, rel=1e-9), \
+    assert integral == pytest.approx(float(greenwood_tripp.gt_function(h, 2.5)) / 2.5, rel=1e-9), \
         "antiderivative identity"
 
 
@@ -42,7 +44,7 @@ def hertz_displacement():
     rho = np.linspace(0.0, 5.0, 100)
     radius = 3.0
     pressure = 8 / math.pi * np.sqrt(np.clip(radius**2 - rho**2, 0.0, None))
-    return rho, radius, gt.influence_matrix(5.0, 100) @ pressure
+    return rho, radius, greenwood_tripp.influence_matrix(5.0, 100) @ pressure
 
 
 def test_hertz_displacement_inside(hertz_displacement):
@@ -81,7 +83,7 @@ def versus_contact_mechanics():
     """
     reference = pytest.importorskip("ContactMechanics.ReferenceSolutions.GreenwoodTripp")
     displacement, pressure, rho = reference.GreenwoodTripp(0.5, MU, mix=0.5)
-    return gt.greenwood_tripp(0.5, MU), displacement, pressure, rho
+    return greenwood_tripp.greenwood_tripp(0.5, MU), displacement, pressure, rho
 
 
 def test_nodes_match_contact_mechanics(versus_contact_mechanics):
@@ -115,7 +117,7 @@ def test_force_matches_contact_mechanics(versus_contact_mechanics):
 
 def light_load_force(depth_star, mu):
     """Rigid sphere on the summits: (2π/5) μ F_{5/2}(d*)."""
-    return 2 * math.pi / 5 * mu * float(gt.gt_function(depth_star, 2.5))
+    return 2 * math.pi / 5 * mu * float(greenwood_tripp.gt_function(depth_star, 2.5))
 
 
 #: Discretization error of the force at 100 points for d* = 1…2 (against 400 points: ≤ 1.2e-3).
@@ -127,7 +129,7 @@ LIGHT_LOAD_RTOL = 2e-3
 def test_light_load_lower_bound(depth_star, mu):
     """The displacement is largest at the centre (w ≤ w(0)), so every separation is at most
     the rigid one and F ≥ (2π/5) μ F_{5/2}(d*)."""
-    solution = gt.greenwood_tripp(depth_star, mu)
+    solution = greenwood_tripp.greenwood_tripp(depth_star, mu)
     assert solution.force_star >= light_load_force(depth_star, mu) * (1 - LIGHT_LOAD_RTOL), \
         "force below the rigid-sphere force"
 
@@ -136,7 +138,7 @@ def test_light_load_lower_bound(depth_star, mu):
 @pytest.mark.parametrize("mu", [1.0, MU])
 def test_light_load_upper_bound(depth_star, mu):
     """Separations shrink by at most w(0): F ≤ (2π/5) μ F_{5/2}(d* − w(0))."""
-    solution = gt.greenwood_tripp(depth_star, mu)
+    solution = greenwood_tripp.greenwood_tripp(depth_star, mu)
     upper = light_load_force(depth_star - solution.displacement[0], mu)
     assert solution.force_star <= upper * (1 + LIGHT_LOAD_RTOL), "force above the upper bound"
 
@@ -144,7 +146,7 @@ def test_light_load_upper_bound(depth_star, mu):
 def test_light_load_limit():
     """F/((2π/5) μ F_{5/2}(d*)) − 1 decreases towards 0 as d* = 1, 2, 3 (3.3e-2, 4.4e-3,
     1.8e-3 for μ = 1)."""
-    excess = [gt.greenwood_tripp(d, 1.0).force_star / light_load_force(d, 1.0) - 1
+    excess = [greenwood_tripp.greenwood_tripp(d, 1.0).force_star / light_load_force(d, 1.0) - 1
               for d in (1.0, 2.0, 3.0)]
     assert excess[0] > excess[1] > excess[2] > 0, f"no light-load convergence: {excess}"
 
@@ -152,7 +154,7 @@ def test_light_load_limit():
 @pytest.fixture(scope="module")
 def heavy():
     """μ = 4 at d* = 0, −1, −2 (Hertz radius ρ_a = 1.0, 2.4, 5.1) on ρ ≤ 8."""
-    return [gt.greenwood_tripp(d, MU, rho_max=8.0, points=160) for d in (0.0, -1.0, -2.0)]
+    return [greenwood_tripp.greenwood_tripp(d, MU, rho_max=8.0, points=160) for d in (0.0, -1.0, -2.0)]
 
 
 def hertz_deviation(solution):
@@ -178,14 +180,14 @@ def test_hertz_limit_approached(heavy):
 def test_load_vanishes_far_from_the_apex():
     """With p(ρ = 5) ≈ 1e-124 of the peak, extending the grid to ρ = 6 (same spacing)
     changes nothing but round-off."""
-    near = gt.greenwood_tripp(0.0, MU, rho_max=5.0, points=101)
-    far = gt.greenwood_tripp(0.0, MU, rho_max=6.0, points=121)
+    near = greenwood_tripp.greenwood_tripp(0.0, MU, rho_max=5.0, points=101)
+    far = greenwood_tripp.greenwood_tripp(0.0, MU, rho_max=6.0, points=121)
     assert near.force_star == pytest.approx(far.force_star, rel=1e-12), "truncation at ρ = 5"
 
 
 def test_truncated_load_rejected():
     with pytest.raises(ValueError, match="rho_max"):
-        gt.greenwood_tripp(-2.0, MU, rho_max=4.0)
+        greenwood_tripp.greenwood_tripp(-2.0, MU, rho_max=4.0)
 
 
 @pytest.mark.parametrize("depth_star", [1.0, -1.0])
@@ -193,9 +195,9 @@ def test_stiffness_is_the_derivative(depth_star):
     """stiffness_star against (F₊ − F₋)/(α₊ − α₋) at d* ± 1e-4: O(1e-8) curvature and
     Newton residual (measured ≤ 8e-9); F is continuous and differentiable in d*."""
     step = 1e-4
-    centre = gt.greenwood_tripp(depth_star, MU)
-    plus = gt.greenwood_tripp(depth_star + step, MU)
-    minus = gt.greenwood_tripp(depth_star - step, MU)
+    centre = greenwood_tripp.greenwood_tripp(depth_star, MU)
+    plus = greenwood_tripp.greenwood_tripp(depth_star + step, MU)
+    minus = greenwood_tripp.greenwood_tripp(depth_star - step, MU)
     quotient = (plus.force_star - minus.force_star) / (plus.approach_star - minus.approach_star)
     assert centre.stiffness_star == pytest.approx(quotient, rel=1e-6), "stiffness vs quotient"
 
@@ -203,14 +205,14 @@ def test_stiffness_is_the_derivative(depth_star):
 def test_force_continuous_in_mu():
     """μ(1 ± 1e-6) moves F by ±(dlnF/dlnμ)·1e-6, with dlnF/dlnμ between 1 (light load)
     and 2.5 here (elastic flattening adds load): |ΔF/F| ≤ 1e-5."""
-    centre = gt.greenwood_tripp(-1.0, MU).force_star
+    centre = greenwood_tripp.greenwood_tripp(-1.0, MU).force_star
     for sign in (1, -1):
-        moved = gt.greenwood_tripp(-1.0, MU * (1 + sign * 1e-6)).force_star
+        moved = greenwood_tripp.greenwood_tripp(-1.0, MU * (1 + sign * 1e-6)).force_star
         assert 0 < sign * (moved / centre - 1) <= 1e-5, f"F not continuous in μ ({sign:+d})"
 
 
 def test_theory_reexports_greenwood_tripp():
-    assert theory.greenwood_tripp is gt.greenwood_tripp, "theory.greenwood_tripp"
+    assert greenwood_tripp.greenwood_tripp is greenwood_tripp.greenwood_tripp, "greenwood_tripp.greenwood_tripp"
 
 
 # --- spectral moments and summits -----------------------------------------------------
@@ -221,8 +223,8 @@ def test_array_moments_equal_the_discrete_spectrum(n, hurst):
     """The FFT of the generated surface has exactly the spectrum self_affine_moments sums
     (deterministic amplitudes, random phases): equal to round-off, any seed."""
     z = surfaces.self_affine(n, hurst=hurst, h_rms=3e-3, length=2.0, seed=11)
-    measured = gt.spectral_moments(z, length=2.0)
-    expected = gt.self_affine_moments(hurst, 3e-3, n, 2.0)
+    measured = surfaces.spectral_moments(z, length=2.0)
+    expected = surfaces.self_affine_moments(hurst, 3e-3, n, 2.0)
     for name in ("m0", "m2", "m4"):
         assert getattr(measured, name) == pytest.approx(getattr(expected, name), rel=1e-10), \
             f"{name} of the array differs from the discrete spectrum"
@@ -235,7 +237,7 @@ def test_moments_of_two_cosines(n):
     q = 2 * math.pi * 4 / length
     x = np.arange(n) * length / n
     z = amplitude * (np.cos(q * x)[:, None] + np.cos(q * x)[None, :])
-    moments = gt.spectral_moments(z, length=length)
+    moments = surfaces.spectral_moments(z, length=length)
     assert moments.m0 == pytest.approx(amplitude**2, rel=1e-12), "m0"
     assert moments.m2 == pytest.approx(amplitude**2 * q**2 / 2, rel=1e-12), "m2"
     assert moments.m4 == pytest.approx(3 * amplitude**2 * q**4 / 8, rel=1e-12), "m4"
@@ -243,8 +245,8 @@ def test_moments_of_two_cosines(n):
 
 def test_asperities_scale_with_the_heights():
     """Heights scaled by c: α and η unchanged, β ∝ 1/c, σ_s ∝ c (Nayak's formulas)."""
-    base = gt.asperity_parameters(gt.self_affine_moments(0.7, 1e-3, 65, 1.0))
-    scaled = gt.asperity_parameters(gt.self_affine_moments(0.7, 3e-3, 65, 1.0))
+    base = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, 1e-3, 65, 1.0))
+    scaled = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, 3e-3, 65, 1.0))
     assert scaled.bandwidth == pytest.approx(base.bandwidth, rel=1e-12), "bandwidth"
     assert scaled.density == pytest.approx(base.density, rel=1e-12), "density"
     assert scaled.summit_radius == pytest.approx(base.summit_radius / 3, rel=1e-12), "radius"
@@ -254,16 +256,16 @@ def test_asperities_scale_with_the_heights():
 def test_isotropic_bandwidth_minimum_rejected():
     """α = m0 m4/m2² ≥ 1.5 for an isotropic surface (Nayak 1971): smaller is rejected."""
     with pytest.raises(ValueError, match="bandwidth"):
-        gt.asperity_parameters(gt.SpectralMoments(m0=1.0, m2=1.0, m4=1.0))
+        asperities.asperity_parameters(surfaces.SpectralMoments(m0=1.0, m2=1.0, m4=1.0))
 
 
 # --- physical units --------------------------------------------------------------------
 
 def curve(scale, e_star):
     """GT curve of the paper's rough sphere on 128² (μ ≈ 4.0), lengths scaled by ``scale``."""
-    asperities = gt.asperity_parameters(gt.self_affine_moments(0.7, 9e-3 * scale, 128, scale))
-    return gt.greenwood_tripp_curve([-1.0, -2.0], radius=0.5 * scale, e_star=e_star,
-                                    asperities=asperities, rho_max=8.0, points=160)
+    summits = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, 9e-3 * scale, 128, scale))
+    return greenwood_tripp.greenwood_tripp_curve([-1.0, -2.0], radius=0.5 * scale, e_star=e_star,
+                                                 asperities=summits, rho_max=8.0, points=160)
 
 
 @pytest.fixture(scope="module")
@@ -284,6 +286,6 @@ def test_curve_tends_to_hertz(curves):
     """At the heaviest load k → eq. 9, k = E*(6RF/E*)^(1/3), within σ/approach (the summit
     layer against the approach)."""
     base, _ = curves
-    hertz = theory.hertz_stiffness(base.force[-1], 0.5, 1.0)
+    hertz = paper.hertz_stiffness(base.force[-1], radius=0.5, e_star=1.0)
     bound = base.sigma / base.approach[-1]
     assert base.stiffness[-1] == pytest.approx(hertz, rel=bound), "GT vs Hertz stiffness"

@@ -3,6 +3,7 @@ temporary directory (about a minute on 2 cores), then checks of the merged
 data, the tables, the report, provenance, the CLI and failure handling."""
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import shutil
@@ -14,8 +15,17 @@ import numpy as np
 import pandas as pd
 import pytest
 import xarray as xr
+from workflow_paths import LOG_PATTERN, RUN_PATTERN
 
-from roughcontact import analysis, cli, config, study, theory
+from roughcontact import cli
+from roughcontact import errors
+from roughcontact.models import paper
+from roughcontact.study import config
+from roughcontact.study import indent
+from roughcontact.study import merge
+from roughcontact.study import runfile
+from roughcontact.study import runs
+from roughcontact.study import settings
 
 ROOT = Path(__file__).resolve().parents[1]
 TINY = ROOT / "presets/tiny.yaml"
@@ -41,15 +51,15 @@ def run(tmp_path_factory):
 def test_merged_file_has_a_group_per_kind_without_padding(run):
     """stiffness.nc: one group per surface kind with its own force grid: nothing NaN, counts integers."""
     work, cfg = run
-    groups = analysis.read_groups(work / "results/stiffness.nc")
+    groups = merge.read_groups(work / "results/stiffness.nc")
     assert sorted(groups) == ["flat", "sphere"], sorted(groups)
     for kind, ds in groups.items():
-        assert tuple(ds["stiffness"].dims) == (*study.AXES[kind], "seed", "force"), ds["stiffness"].dims
+        assert tuple(ds["stiffness"].dims) == (*runs.AXES[kind], "seed", "force"), ds["stiffness"].dims
         assert ds["hurst"].values.tolist() == cfg["hurst"], kind
         assert ds["h_rms"].values.tolist() == cfg["h_rms"], kind
         assert ds["seed"].values.tolist() == cfg["seeds"], kind
         assert ds.sizes["force"] == cfg["forces"][kind]["count"], f"{kind}: its own load grid"
-        for name in study.RUN_VARIABLES:
+        for name in runfile.RUN_VARIABLES:
             assert not ds[name].isnull().any(), f"{kind}/{name} is NaN somewhere"
         for name in ("contact_cells", "iterations", "converged"):
             assert np.issubdtype(ds[name].dtype, np.integer), f"{kind}/{name} is {ds[name].dtype}"
@@ -71,7 +81,7 @@ def test_merged_file_provenance(run):
 
 def test_stiffness_positive_and_increasing(run):
     work, _ = run
-    for kind, ds in analysis.read_groups(work / "results/stiffness.nc").items():
+    for kind, ds in merge.read_groups(work / "results/stiffness.nc").items():
         k = ds["stiffness"].transpose(..., "force").values.reshape(-1, ds.sizes["force"])
         assert (k > 0).all(), kind
         # k = dF/dd grows with the contact set; equal when the set did not change
@@ -85,17 +95,17 @@ def test_hertz_limit_at_the_largest_load(run):
     Hertz contact (radius 0.155 L = 10 cells) to a few per cent, and the seeds
     scatter by a few per cent: 15 % bounds all three."""
     work, cfg = run
-    ens = analysis.read_groups(work / "results/ensemble.nc")["sphere"]
+    ens = merge.read_groups(work / "results/ensemble.nc")["sphere"]
     for radius in ens["radius"].values:
         sub = ens.sel(radius=radius).isel(force=-1)
-        k_hertz = theory.hertz_stiffness(float(sub["force"]), radius, cfg["e_star"])
+        k_hertz = paper.hertz_stiffness(float(sub["force"]), radius=radius, e_star=cfg["e_star"])
         ratio = sub["k_mean"].values / k_hertz
         assert np.all(np.abs(ratio - 1) < 0.15), ratio
 
 
 def test_ensemble_and_tables(run):
     work, cfg = run
-    ens = analysis.read_groups(work / "results/ensemble.nc")
+    ens = merge.read_groups(work / "results/ensemble.nc")
     for kind, ds in ens.items():
         for name in ("k_mean", "k_std", "k_sem", "contact_cells_mean"):
             assert name in ds, f"{kind}/{name}"
@@ -152,11 +162,40 @@ def test_report_and_figures(run):
     assert sum(n.startswith("fig3_") for n in names) == len(cfg["hurst"]) * len(cfg["h_rms"])
 
 
+def _chromium() -> str | None:
+    return shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
+
+
+@pytest.mark.skipif(_chromium() is None, reason="no Chromium on this machine (.ci/run installs it)")
+def test_report_shows_the_claims_as_a_table_on_the_page(run):
+    """In headless Chromium the landing page's link opens the claims as an HTML table inside the
+    report (not a download), with one coloured verdict cell per row of claims.csv."""
+    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright (the test extra) is not installed")
+    work, _ = run
+    rows = len(pd.read_csv(work / "results/claims.csv"))
+    with sync_api.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=_chromium(), args=["--no-sandbox"])
+        try:
+            page = browser.new_page()
+            page.goto((work / "results/report.html").resolve().as_uri())
+            page.get_by_text("claims table", exact=True).first.click()
+            page.wait_for_function("document.querySelector('iframe') !== null", timeout=20_000)
+            frame = page.frame_locator("iframe")
+            cells = frame.locator("td.verdict-consistent, td.verdict-differs, td.verdict-untested")
+            cells.first.wait_for(timeout=20_000)
+            count = cells.count()
+            header = frame.locator("th").all_inner_texts()
+        finally:
+            browser.close()
+    assert count == rows, f"{count} verdict cells on the page for {rows} rows of claims.csv"
+    assert "verdict" in header, f"the table's header {header} has no verdict column"
+
+
 def test_logs_and_run_provenance(run):
     work, cfg = run
-    first = study.runs(cfg)[0]
-    path = study.run_path(first)
-    log = (work / study.run_path(first, pattern=study.LOG_PATTERN)).read_text()
+    first = runs.runs(cfg)[0]
+    path = runs.run_path(first, RUN_PATTERN)
+    log = (work / runs.run_path(first, LOG_PATTERN)).read_text()
     n = cfg["forces"]["sphere"]["count"]
     assert f"load step {n}/{n}" in log and "iterations" in log and " s" in log
     with xr.open_dataset(work / path) as ds:
@@ -177,7 +216,7 @@ def test_cli_shares_code_with_the_rule(run, tmp_path):
     """`roughcontact indent` with the same settings writes the same numbers and hash."""
     work, cfg = run
     h, r, s, seed = cfg["hurst"][1], cfg["radius"][0], cfg["h_rms"][1], cfg["seeds"][1]
-    run_file = work / study.run_path({"hurst": h, "radius": r, "h_rms": s, "seed": seed})
+    run_file = work / runs.run_path({"hurst": h, "radius": r, "h_rms": s, "seed": seed}, RUN_PATTERN)
     out = tmp_path / "run.nc"
     assert cli.main(["indent", "--config", str(TINY), "--hurst", str(h), "--radius", str(r), "--h-rms", str(s),
                      "--seed", str(seed), "-o", str(out), "-q"]) == 0
@@ -189,38 +228,38 @@ def test_cli_shares_code_with_the_rule(run, tmp_path):
 
 def test_merge_names_a_truncated_or_foreign_file(run, tmp_path):
     work, cfg = run
-    row = study.runs(cfg)[0]
-    good = work / study.run_path(row)
-    expected = study.job_settings(cfg, row)
+    row = runs.runs(cfg)[0]
+    good = work / runs.run_path(row, RUN_PATTERN)
+    expected = settings.job_settings(cfg, row)
     bad = tmp_path / "truncated.nc"
     bad.write_bytes(good.read_bytes()[:300])
-    with pytest.raises(analysis.MergeError, match="truncated.nc"):
-        analysis.read_run(bad, expected)
+    with pytest.raises(errors.MergeError, match="truncated.nc"):
+        merge.read_run(bad, expected)
     foreign = tmp_path / "foreign.nc"
     xr.Dataset({"x": ("a", [1.0, 2.0])}).to_netcdf(foreign, engine="netcdf4")
-    with pytest.raises(analysis.MergeError, match="foreign.nc.*foreign"):
-        analysis.read_run(foreign, expected)
-    other = dict(expected, tol=1e-6)
-    with pytest.raises(analysis.MergeError, match="other settings"):
-        analysis.read_run(good, other)
+    with pytest.raises(errors.MergeError, match="foreign.nc.*foreign"):
+        merge.read_run(foreign, expected)
+    other = dataclasses.replace(expected, tol=1e-6)
+    with pytest.raises(errors.MergeError, match="other settings"):
+        merge.read_run(good, other)
 
 
 def test_failed_job_names_parameters_and_leaves_no_file(tmp_path):
-    settings = {"hurst": 0.7, "radius": 0.5, "h_rms": 9e-3, "seed": 3, "kind": "sphere", "periodic": False,
-                "n": 33, "length": 1.0, "e_star": 1.0, "forces": {"from": 1e-3, "to": 0.3, "count": 4},
-                "tol": 1e-8, "stiffness": "punch", "rel_step": 1e-3, "maxiter": None}
+    job = settings.JobSettings(hurst=0.7, radius=0.5, h_rms=9e-3, seed=3, n=33, length=1.0, e_star=1.0,
+                               force_from=1e-3, force_to=0.3, force_count=4, tol=1e-8, stiffness_method="punch",
+                               rel_step=1e-3)
     out = tmp_path / "run.nc"
-    with pytest.raises(study.IndentError) as info:
-        study.run_indent(settings, out, log=tmp_path / "run.log")
+    with pytest.raises(errors.IndentError) as info:
+        indent.run_indent(job, out, log=tmp_path / "run.log")
     msg = str(info.value)
     assert "H = 0.7" in msg and "R = 0.5" in msg and "seed = 3" in msg and "n = 33" in msg
     assert "forces.sphere.to" in msg and "grid.n" in msg
     assert "FAILED" in (tmp_path / "run.log").read_text()
     assert not any(tmp_path.glob("*.nc")) and not any(tmp_path.glob(".*tmp*"))
     # non-convergence
-    settings.update(forces={"from": 1e-4, "to": 1e-3, "count": 2}, maxiter=1)
-    with pytest.raises(study.IndentError, match="did not converge.*solver.maxiter"):
-        study.run_indent(settings, out)
+    job = dataclasses.replace(job, force_from=1e-4, force_to=1e-3, force_count=2, maxiter=1)
+    with pytest.raises(errors.IndentError, match="did not converge.*solver.maxiter"):
+        indent.run_indent(job, out)
     assert not out.exists()
 
 
@@ -232,7 +271,7 @@ def test_failing_jobs_through_snakemake_keep_going(tmp_path):
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0
     cfg = config.resolve_config(config.load_config(TINY))
-    n_runs = len(study.runs(cfg))
+    n_runs = len(runs.runs(cfg))
     assert out.count("did not converge") >= n_runs
     assert "H = 0.8, R = inf (flat, periodic), h_rms = 0.02, seed = 1, n = 65" in out
     assert "raise solver.maxiter" in out

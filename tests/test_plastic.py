@@ -7,7 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from roughcontact import contact, surfaces
+from roughcontact import bem
+from roughcontact import surfaces
+from roughcontact.bem import plastic
 
 E_STAR = 1.0
 LENGTH = 1.0
@@ -28,7 +30,7 @@ def plastic_spheres(request):
     """Paraboloid pressed with F = H π a₀² at each hardness of HARDNESSES."""
     n = request.param
     z = surfaces.paraboloid(n, radius=RADIUS, length=LENGTH)
-    states = {hardness: contact.solve(z, force=hardness * math.pi * PLASTIC_RADIUS**2,
+    states = {hardness: bem.solve(z, force=hardness * math.pi * PLASTIC_RADIUS**2,
                                       length=LENGTH, e_star=E_STAR, hardness=hardness)
               for hardness in HARDNESSES}
     return n, states
@@ -91,7 +93,7 @@ def test_fully_plastic_loading_stiffness(plastic_spheres):
     hardness = min(HARDNESSES)
     state = states[hardness]
     step = 0.5
-    measured = contact.stiffness(state, method="loading", rel_step=step)
+    measured = bem.stiffness(state, method="loading", rel_step=step)
     expected = step * state.force / (sink_in_depth(state.force * (1 + step), hardness)
                                      - sink_in_depth(state.force, hardness))
     added = step * state.force / (hardness * state.cell_area)
@@ -105,7 +107,7 @@ def test_fully_plastic_unloading_stiffness(plastic_spheres):
     _, states = plastic_spheres
     state = states[min(HARDNESSES)]
     a = math.sqrt(state.contact_area / math.pi)
-    assert contact.stiffness(state) == pytest.approx(2 * E_STAR * a, rel=1e-2), \
+    assert bem.stiffness(state) == pytest.approx(2 * E_STAR * a, rel=1e-2), \
         "unloading stiffness of the fully plastic sphere"
 
 
@@ -116,34 +118,34 @@ def rough(request):
     """Rough sphere with its elastic solution at F/(E*L²) = 1e-3 (peak pressure ≈ 0.5 E*)."""
     n = request.param
     z = surfaces.rough_sphere(n, radius=RADIUS, hurst=0.7, h_rms=9e-3, length=LENGTH, seed=0)
-    return z, contact.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR)
+    return z, bem.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR)
 
 
 @pytest.fixture(scope="module")
 def capped_path(rough):
     """Load path at H = 0.05 E* (a tenth of the elastic peak): most contact cells flow."""
     z, _ = rough
-    return contact.load_path(z, [3e-4, 6e-4, 1e-3], length=LENGTH, e_star=E_STAR, hardness=0.05)
+    return bem.load_path(z, [3e-4, 6e-4, 1e-3], length=LENGTH, e_star=E_STAR, hardness=0.05)
 
 
 def test_hardness_above_peak_keeps_depth(rough):
     """H = 2 max p of the elastic solution: the same solution, to round-off."""
     z, elastic = rough
-    capped = contact.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
+    capped = bem.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
                            hardness=2 * elastic.pressure.max())
     assert capped.depth == pytest.approx(elastic.depth, rel=1e-14, abs=0), "depth changed"
 
 
 def test_hardness_above_peak_keeps_force(rough):
     z, elastic = rough
-    capped = contact.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
+    capped = bem.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
                            hardness=2 * elastic.pressure.max())
     assert capped.force == pytest.approx(elastic.force, rel=1e-14, abs=0), "force changed"
 
 
 def test_hardness_above_peak_keeps_pressure(rough):
     z, elastic = rough
-    capped = contact.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
+    capped = bem.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
                            hardness=2 * elastic.pressure.max())
     difference = np.abs(capped.pressure - elastic.pressure).max()
     assert difference <= 1e-14 * elastic.pressure.max(), f"pressure changed by {difference:.2e}"
@@ -154,8 +156,8 @@ def test_hardness_above_peak_along_a_path(rough):
     z, elastic = rough
     forces = [3e-4, 1e-3]
     hardness = 2 * elastic.pressure.max()
-    capped = contact.load_path(z, forces, length=LENGTH, e_star=E_STAR, hardness=hardness)
-    free = contact.load_path(z, forces, length=LENGTH, e_star=E_STAR)
+    capped = bem.load_path(z, forces, length=LENGTH, e_star=E_STAR, hardness=hardness)
+    free = bem.load_path(z, forces, length=LENGTH, e_star=E_STAR)
     assert [s.depth for s in capped] == pytest.approx([s.depth for s in free], rel=1e-14), \
         "depths of the capped path differ from the elastic path"
 
@@ -164,10 +166,10 @@ def test_loading_equals_unloading_when_elastic(rough):
     """Without flow loading and unloading tangents coincide; the forward quotient's bias
     is ≈ rel_step/6 = 1.7e-4 (Hertz-like F ∝ d^(3/2))."""
     z, elastic = rough
-    capped = contact.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
+    capped = bem.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR,
                            hardness=2 * elastic.pressure.max())
-    assert contact.stiffness(capped, method="loading") == \
-        pytest.approx(contact.stiffness(capped), rel=1e-3), "loading vs unloading stiffness"
+    assert bem.stiffness(capped, method="loading") == \
+        pytest.approx(bem.stiffness(capped), rel=1e-3), "loading vs unloading stiffness"
 
 
 def test_pressure_capped(capped_path):
@@ -187,7 +189,7 @@ def test_plastic_displacement_non_negative(capped_path):
 def test_plastic_displacement_only_on_plastic_cells(rough):
     """A single solve from the virgin surface: δ > 0 exactly on the cells that flowed."""
     z, _ = rough
-    state = contact.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR, hardness=0.05)
+    state = bem.solve(z, force=1e-3, length=LENGTH, e_star=E_STAR, hardness=0.05)
     assert np.array_equal(state.plastic_displacement > 0, state.plastic), \
         "plastic displacement off the plastic cells"
 
@@ -213,7 +215,7 @@ def test_plastic_complementarity(capped_path):
 def test_plastic_windowed_equals_full(rough, capped_path):
     z, _ = rough
     state = capped_path[-1]
-    full = contact.solve(z, force=state.force, length=LENGTH, e_star=E_STAR, hardness=0.05,
+    full = bem.solve(z, force=state.force, length=LENGTH, e_star=E_STAR, hardness=0.05,
                          windowed=False, plastic_displacement=capped_path[-2].plastic_displacement)
     assert state.window != full.window, "the test should compare a window with the full grid"
     assert full.depth == pytest.approx(state.depth, rel=1e-7), "windowed plastic depth differs"
@@ -225,12 +227,12 @@ def test_unloading_is_elastic(rough, capped_path):
     (no contact cell is lost over so small a step)."""
     z, _ = rough
     state = capped_path[-1]
-    lower = contact.solve(z, force=state.force * (1 - 1e-3), length=LENGTH, e_star=E_STAR,
+    lower = bem.solve(z, force=state.force * (1 - 1e-3), length=LENGTH, e_star=E_STAR,
                           hardness=0.05, initial=state.pressure,
                           plastic_displacement=state.plastic_displacement)
     assert not lower.plastic.any(), "cells flowed on unloading"
     quotient = (state.force - lower.force) / (state.depth - lower.depth)
-    assert quotient == pytest.approx(contact.stiffness(state), rel=1e-3), \
+    assert quotient == pytest.approx(bem.stiffness(state), rel=1e-3), \
         "unloading quotient vs punch stiffness"
 
 
@@ -239,11 +241,11 @@ def test_periodic_capped_candidates_equal_whole_grid(n):
     """Periodic rough surface, H = 0.3 × the elastic peak: the candidate-cell solve equals the
     FFT solve on the whole grid (depths within the tolerance 1e-8)."""
     z = surfaces.self_affine(n, hurst=0.7, h_rms=9e-3, length=LENGTH, seed=3)
-    elastic = contact.solve(z, force=3e-4, length=LENGTH, e_star=E_STAR, periodic=True)
+    elastic = bem.solve(z, force=3e-4, length=LENGTH, e_star=E_STAR, periodic=True)
     kwargs = {"force": 3e-4, "length": LENGTH, "e_star": E_STAR, "periodic": True,
               "hardness": 0.3 * elastic.pressure.max()}
-    fast = contact.solve(z, **kwargs)
-    full = contact.solve(z, windowed=False, **kwargs)
+    fast = bem.solve(z, **kwargs)
+    full = bem.solve(z, windowed=False, **kwargs)
     assert fast.plastic.any(), "the test load should make cells flow"
     assert fast.depth == pytest.approx(full.depth, rel=1e-7), "candidate depth differs"
 
@@ -279,7 +281,7 @@ def contact_mechanics(rough):
         peer.append({"force": float(np.sum(result.jac)), "depth": depth,
                      "pressure": np.asarray(result.jac) / (LENGTH / n) ** 2,
                      "plastic_displacement": -topography.plastic_displ.copy()})
-    ours = contact.load_path(z, [p["force"] for p in peer], length=LENGTH, e_star=E_STAR,
+    ours = bem.load_path(z, [p["force"] for p in peer], length=LENGTH, e_star=E_STAR,
                              hardness=CM_HARDNESS, tol=CM_TOL)
     return list(zip(peer, ours))
 
@@ -295,7 +297,7 @@ def test_force_matches_contact_mechanics(contact_mechanics):
     """Force at the same depth: our force at CM's depth differs from CM's by k·Δd with
     k ≤ the unloading stiffness (the loading one is smaller); relative bound 1e-7."""
     for peer, state in contact_mechanics:
-        implied = contact.stiffness(state) * abs(state.depth - peer["depth"]) / peer["force"]
+        implied = bem.stiffness(state) * abs(state.depth - peer["depth"]) / peer["force"]
         assert implied <= 1e-7, f"d = {peer['depth']}: force differs by {implied:.2e}"
 
 
@@ -336,29 +338,29 @@ def test_pressure_matches_contact_mechanics(contact_mechanics):
 def test_bad_hardness_rejected(hardness):
     z = surfaces.paraboloid(16, radius=0.5)
     with pytest.raises(ValueError, match="hardness"):
-        contact.solve(z, force=1e-4, length=1.0, e_star=1.0, hardness=hardness)
+        bem.solve(z, force=1e-4, length=1.0, e_star=1.0, hardness=hardness)
 
 
 def test_negative_plastic_displacement_rejected():
     z = surfaces.paraboloid(16, radius=0.5)
     with pytest.raises(ValueError, match="plastic_displacement"):
-        contact.solve(z, force=1e-4, length=1.0, e_star=1.0, hardness=0.1,
+        bem.solve(z, force=1e-4, length=1.0, e_star=1.0, hardness=0.1,
                       plastic_displacement=-np.ones((16, 16)))
 
 
 def test_central_difference_rejected_for_capped_state(capped_path):
     with pytest.raises(ValueError, match="elastic state"):
-        contact.stiffness(capped_path[-1], method="difference")
+        bem.stiffness(capped_path[-1], method="difference")
 
 
 def test_projected_gradient_phase_alone(rough, capped_path, monkeypatch):
     """With the conjugate-gradient phase cut off at once (plastic.STALL = 0) the
     projected-gradient phase converges to the same state (depth within 1e-7)."""
-    from roughcontact import plastic
+
 
     z, _ = rough
     state = capped_path[0]
     monkeypatch.setattr(plastic, "STALL", 0)
-    slow = contact.solve(z, force=state.force, length=LENGTH, e_star=E_STAR, hardness=0.05)
+    slow = bem.solve(z, force=state.force, length=LENGTH, e_star=E_STAR, hardness=0.05)
     assert slow.converged, "projected gradients did not converge"
     assert slow.depth == pytest.approx(state.depth, rel=1e-7), "projected-gradient depth differs"

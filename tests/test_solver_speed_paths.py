@@ -5,7 +5,11 @@ import numpy as np
 import pytest
 import scipy.fft
 
-from roughcontact import active_sets, contact, operators, solver, surfaces
+from roughcontact import bem
+from roughcontact import surfaces
+from roughcontact.bem import active_sets
+from roughcontact.bem import operators
+from roughcontact.bem import solver
 
 E_STAR = 1.0
 FORCES = np.geomspace(1e-5, 3e-3, 6)
@@ -27,7 +31,7 @@ def _record_working_sets(monkeypatch):
 
 def _assert_whole_grid(states, z, forces, hardness=None):
     for force, state in zip(forces, states):
-        full = contact.solve(z, force=force, length=1.0, e_star=E_STAR, periodic=True,
+        full = bem.solve(z, force=force, length=1.0, e_star=E_STAR, periodic=True,
                              windowed=False, hardness=hardness)
         assert state.converged, f"not converged at F = {force:g}"
         assert state.depth == pytest.approx(full.depth, rel=1e-7), f"depth differs at F = {force:g}"
@@ -39,7 +43,7 @@ def test_working_set_equals_whole_grid(flat_surface, monkeypatch):
     the whole-grid FFT solution."""
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 600)
     results = _record_working_sets(monkeypatch)
-    states = contact.load_path(flat_surface, FORCES, length=1.0, e_star=E_STAR, periodic=True)
+    states = bem.load_path(flat_surface, FORCES, length=1.0, e_star=E_STAR, periodic=True)
     assert any(r is not None for r in results), "no load was solved on a working set"
     _assert_whole_grid(states, flat_surface, FORCES)
 
@@ -50,7 +54,7 @@ def test_working_set_that_outgrows_the_limit_continues_on_the_grid(flat_surface,
     monkeypatch.setattr(active_sets, "DENSE_CELLS", 150)
     monkeypatch.setattr(active_sets, "WORKING_MARGIN", 0.0)  # a first set too small: it must grow
     results = _record_working_sets(monkeypatch)
-    states = contact.load_path(flat_surface, FORCES, length=1.0, e_star=E_STAR, periodic=True)
+    states = bem.load_path(flat_surface, FORCES, length=1.0, e_star=E_STAR, periodic=True)
     assert any(r is not None for r in results), "no load went through the working set"
     _assert_whole_grid(states, flat_surface, FORCES)
 
@@ -64,7 +68,7 @@ def test_working_set_with_hardness(flat_surface, monkeypatch):
     states = []
     for force in forces:  # each from the elastic state of the previous load: no flow history
         initial = states[-1].pressure if states else None
-        states.append(contact.solve(flat_surface, force=force, length=1.0, e_star=E_STAR,
+        states.append(bem.solve(flat_surface, force=force, length=1.0, e_star=E_STAR,
                                     periodic=True, hardness=hardness, initial=initial))
     assert any(r is not None for r in results), "no load was solved on a working set"
     assert any(s.plastic.any() for s in states), "the cap was never reached"
@@ -135,11 +139,11 @@ def test_single_precision_phase_gives_the_double_solution(flat_surface, monkeypa
     single = operators.PeriodicOperator.single
     monkeypatch.setattr(operators.PeriodicOperator, "single",
                         lambda self, p: calls.append(1) or single(self, p))
-    state = contact.solve(flat_surface, force=3e-3, length=1.0, e_star=E_STAR, periodic=True,
+    state = bem.solve(flat_surface, force=3e-3, length=1.0, e_star=E_STAR, periodic=True,
                           windowed=False)
     assert calls, "no single-precision convolution"
     monkeypatch.setattr(solver, "_SINGLE_ERROR", 0.0)
-    double = contact.solve(flat_surface, force=3e-3, length=1.0, e_star=E_STAR, periodic=True,
+    double = bem.solve(flat_surface, force=3e-3, length=1.0, e_star=E_STAR, periodic=True,
                            windowed=False)
     assert state.gap_error <= state.tol
     assert state.depth == pytest.approx(double.depth, rel=1e-7)
@@ -149,12 +153,12 @@ def test_single_precision_phase_gives_the_double_solution(flat_surface, monkeypa
 def test_working_set_out_of_iterations_is_not_converged(flat_surface, monkeypatch):
     """A working-set solve stopped by maxiter reports converged=False, never a solution
     checked only on the working set or only at the loose tolerance."""
-    lower = contact.solve(flat_surface, force=0.8 * FORCES[-1], length=1.0, e_star=E_STAR,
+    lower = bem.solve(flat_surface, force=0.8 * FORCES[-1], length=1.0, e_star=E_STAR,
                           periodic=True)
     monkeypatch.setattr(active_sets, "solve_candidates", lambda *args: None)
     results = _record_working_sets(monkeypatch)
     for maxiter in (1, 5, 12):
-        state = contact.solve(flat_surface, force=FORCES[-1], length=1.0, e_star=E_STAR,
+        state = bem.solve(flat_surface, force=FORCES[-1], length=1.0, e_star=E_STAR,
                               periodic=True, initial=lower.pressure, maxiter=maxiter)
         assert not state.converged, f"converged in {maxiter} iterations"
     assert any(r is not None for r in results), "no working-set solve"

@@ -7,7 +7,9 @@ import tracemalloc
 import numpy as np
 import pytest
 
-from roughcontact import surfaces, theory
+from roughcontact import surfaces
+from roughcontact.models import paper
+from roughcontact.surfaces import roughness
 
 LENGTH = 2.5
 
@@ -92,16 +94,16 @@ def test_rough_sphere_is_sum():
 
 def test_equivalent_profile_eq15():
     n, hurst, h, zeta = 65, 0.7, 9e-3, 1.0
-    z = surfaces.equivalent_profile(n, radius=0.5, hurst=hurst, h_rms=h, length=1.0, zeta=zeta)
+    z = paper.equivalent_profile(n, radius=0.5, hurst=hurst, h_rms=h, length=1.0, zeta=zeta)
     r = 10 / n
-    q3d = (2 / zeta) ** (hurst + 1) * (hurst + 1) * h / (2 * hurst * theory.kappa(hurst))
+    q3d = (2 / zeta) ** (hurst + 1) * (hurst + 1) * h / (2 * hurst * paper.kappa(hurst))
     assert z[n // 2 + 10, n // 2] == pytest.approx(r**2 / 1.0 + q3d * r**hurst, rel=1e-13), \
         "profile differs from eq. 15"
 
 
 def test_equivalent_profile_flat_has_no_parabola():
-    z = surfaces.equivalent_profile(65, radius=np.inf, hurst=0.5, h_rms=1e-2, length=1.0)
-    q3d = theory.profile_prefactor(0.5, 1e-2, 1.0, theory.zeta_estimate(0.5))
+    z = paper.equivalent_profile(65, radius=np.inf, hurst=0.5, h_rms=1e-2, length=1.0)
+    q3d = paper.profile_prefactor(0.5, h_rms=1e-2, length=1.0, zeta=paper.zeta_estimate(0.5))
     assert z[32 + 4, 32] == pytest.approx(q3d * (4 / 65) ** 0.5, rel=1e-13), "z_s != Q3D r^H"
 
 
@@ -224,12 +226,12 @@ def test_defaults_give_recorded_bytes_other_length(n, hurst):
     assert sha256(z) == REFERENCE_SHA256_LENGTH[n, hurst], f"self_affine bytes; {PLATFORM_HINT}"
 
 
-@pytest.mark.parametrize("block_cells", [1, 1000, surfaces._BLOCK_CELLS])
+@pytest.mark.parametrize("block_cells", [1, 1000, roughness._BLOCK_CELLS])
 @pytest.mark.parametrize("n", [64, 65, 385])
 def test_same_bytes_as_whole_array_algorithm(n, block_cells, monkeypatch):
     """Block-wise generation (one row per block with ``block_cells = 1``) equals the
     whole-array algorithm byte for byte, on any platform."""
-    monkeypatch.setattr(surfaces, "_BLOCK_CELLS", block_cells)
+    monkeypatch.setattr(roughness, "_BLOCK_CELLS", block_cells)
     kw = dict(hurst=0.7, h_rms=9e-3, length=1.0, seed=3)
     expected = whole_array_self_affine(n, **kw)
     assert surfaces.self_affine(n, **kw).tobytes() == expected.tobytes(), "self_affine bytes"

@@ -17,19 +17,20 @@ Conventions (used throughout):
 * Units are the caller's: results scale exactly as ``F ∝ E*L²``,
   ``k ∝ E*L``, ``d ∝ L``.
 
-Modules: :mod:`~roughcontact.surfaces` (height maps, eqs. 1–3 and 15),
-:mod:`~roughcontact.contact` (the BEM solver and stiffness),
-:mod:`~roughcontact.theory` (eqs. 7–18), :mod:`~roughcontact.operators`
-(elastic half-space influence operators).
+Subpackages, bottom up: :mod:`~roughcontact.surfaces` (height maps and spectra,
+eqs. 1–3), :mod:`~roughcontact.bem` (the boundary-element solver and stiffness),
+:mod:`~roughcontact.models` (the paper's eqs. 7–18 and other closed forms) and
+:mod:`~roughcontact.study` (the parameter study; not imported here). Errors are in
+:mod:`~roughcontact.errors`.
 """
 
 from importlib.metadata import PackageNotFoundError, version
 
-from . import contact, operators, surfaces, theory
+from . import bem, errors, models, surfaces
 
 try:
     __version__ = version("roughcontact")
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
-__all__ = ["contact", "operators", "surfaces", "theory", "__version__"]
+__all__ = ["bem", "errors", "models", "surfaces", "__version__"]

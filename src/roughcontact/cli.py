@@ -2,17 +2,19 @@
 
 ``roughcontact indent --hurst 0.7 --radius 0.5 --h-rms 9e-3 --seed 0 --n 513 -o run.nc``
 runs one indentation (the same code as the Snakemake ``indent`` rule,
-:func:`roughcontact.study.run_indent`) with a progress bar and writes the same
+:func:`roughcontact.study.indent.run_indent`) with a progress bar and writes the same
 NetCDF file.  ``roughcontact check-config config.yaml`` validates a sweep
-without running it.
+without running it.  Settings not given on the command line come from ``--config``, else
+from the defaults of the configuration schema (the same defaults as a sweep's).
 """
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 
-from . import config, schema, study
+from .errors import ConfigError, IndentError
+from .study import config, indent, runs, schema
+from .study.settings import JobSettings, job_settings
 
 # config keys as they appear in error messages -> the command-line flag
 _FLAGS = {
@@ -32,10 +34,6 @@ _NUMBER_FLAGS = {
     "tol": ("solver", "tol"), "rel_step": ("solver", "rel_step"),
     "exponent": ("exponent", 0), "rolloff": ("rolloff", 0), "cutoff": ("cutoff", 0), "hardness": ("hardness", 0),
 }
-DEFAULT_FORCES = {"sphere": (1e-7, 1e-2, 21), "flat": (1e-6, 3e-3, 13)}
-_FIT = {"zeta": {"min_cells": 1, "max_area_fraction": 1.0}, "slopes": {"low_max_ratio": 1.0, "high_min_ratio": 1.0}}
-
-
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="roughcontact", description=__doc__.split("\n\n")[0])
     sub = p.add_subparsers(dest="command", required=True)
@@ -55,13 +53,13 @@ def _parser() -> argparse.ArgumentParser:
     ind.add_argument("--cutoff", type=float, default=None, help="short-wavelength cutoff (default: none)")
     ind.add_argument("--hardness", type=float, default=None,
                      help="penetration hardness in units of E* (default: elastic)")
-    ind.add_argument("--n", type=int, default=None, help="grid points per side (default: config or 257)")
-    ind.add_argument("--length", type=float, default=None, help="side length L (default: config or 1)")
-    ind.add_argument("--e-star", type=float, default=None, help="effective modulus E* (default: config or 1)")
+    ind.add_argument("--n", type=int, default=None, help="grid points per side (default: config or schema)")
+    ind.add_argument("--length", type=float, default=None, help="side length L (default: config or schema)")
+    ind.add_argument("--e-star", type=float, default=None, help="effective modulus E* (default: config or schema)")
     ind.add_argument("--force-from", type=float, default=None, help="smallest F/(E* L^2)")
     ind.add_argument("--force-to", type=float, default=None, help="largest F/(E* L^2)")
     ind.add_argument("--force-count", type=int, default=None, help="number of log-spaced loads")
-    ind.add_argument("--tol", type=float, default=None, help="solver tolerance (default: config or 1e-8)")
+    ind.add_argument("--tol", type=float, default=None, help="solver tolerance (default: config or schema)")
     ind.add_argument("--stiffness", choices=["punch", "difference"], default=None, help="stiffness method")
     ind.add_argument("--rel-step", type=float, default=None, help="relative step of --stiffness difference")
     ind.add_argument("--maxiter", type=int, default=None, help="most solver iterations per load")
@@ -72,28 +70,20 @@ def _parser() -> argparse.ArgumentParser:
 
     chk = sub.add_parser("check-config", help="validate a sweep config (exit 2 with one line if invalid)")
     chk.add_argument("config", help="YAML config file, e.g. config.yaml or presets/paper.yaml")
-    chk.add_argument("--schema", default=None, help="JSON schema (default: workflow/schemas/config.schema.yaml)")
     return p
 
 
-def _schema_or_none(start):
-    try:
-        return config.find_schema(start)
-    except FileNotFoundError:
-        return None
-
-
-def _check_numbers(args, schema_path) -> None:
+def _check_numbers(args) -> None:
     """Every number flag finite (``--radius`` may be inf), by the rule of the
-    config (:func:`roughcontact.config.finite_error`); raises ConfigError."""
-    loaded = schema.load_schema(schema_path) if schema_path is not None else None
-    kind = "sphere" if math.isfinite(args.radius) else "flat"
+    config (:func:`roughcontact.study.schema.finite_error`); raises ConfigError."""
+    loaded = schema.load_schema(None)
+    kind = runs.kind_of(args.radius)
     for name, path in _NUMBER_FLAGS.items():
         value = getattr(args, name)
         if value is None:
             continue
         path = [part.format(kind=kind) if isinstance(part, str) else part for part in path]
-        err = config.finite_error(path, value, loaded, allow_inf=name == "radius")
+        err = schema.finite_error(path, value, loaded, allow_inf=name == "radius")
         if err is not None:
             raise err
 
@@ -101,53 +91,45 @@ def _check_numbers(args, schema_path) -> None:
 def _mapping(value, path):
     """*value* if it is a mapping, else the ConfigError of --config's key *path*."""
     if not isinstance(value, dict):
-        raise config.ConfigError(f"config key '{schema.key_text(path)}' = {schema.short_text(value)} is not allowed; "
+        raise ConfigError(f"config key '{schema.key_text(path)}' = {schema.short_text(value)} is not allowed; "
                                  "allowed: a mapping")
     return value
 
 
-def settings_from_args(args) -> dict:
-    """Resolved job settings for ``roughcontact indent`` (raises ConfigError)."""
-    schema_path = _schema_or_none(args.config)
-    _check_numbers(args, schema_path)
-    kind = "sphere" if math.isfinite(args.radius) else "flat"
+def settings_from_args(args) -> JobSettings:
+    """Resolved job settings for ``roughcontact indent`` (raises ConfigError).
+
+    The flags override ``--config``; what neither gives takes the schema's default
+    (:func:`roughcontact.study.config.resolve_config`)."""
+    _check_numbers(args)
+    kind = runs.kind_of(args.radius)
     base = _mapping(config.load_config(args.config) if args.config else {}, [])
     grid = dict(_mapping(base.get("grid", {}), ["grid"]))
-    grid.setdefault("n", 257)
-    grid.setdefault("length", 1.0)
-    if args.n is not None:
-        grid["n"] = args.n
-    if args.length is not None:
-        grid["length"] = args.length
-    forces = dict(_mapping(_mapping(base.get("forces", {}), ["forces"]).get(kind, {}), ["forces", kind]))
-    for key, value, default in zip(("from", "to", "count"), (args.force_from, args.force_to, args.force_count),
-                                   DEFAULT_FORCES[kind]):
-        forces[key] = value if value is not None else forces.get(key, default)
+    for key, value in (("n", args.n), ("length", args.length)):
+        if value is not None:
+            grid[key] = value
+    given = _mapping(_mapping(base.get("forces", {}), ["forces"]).get(kind, {}), ["forces", kind])
+    forces = {**schema.default_of(schema.load_schema(None), ["forces", kind]), **given}
+    for key, value in zip(("from", "to", "count"), (args.force_from, args.force_to, args.force_count)):
+        if value is not None:
+            forces[key] = value
     solver = dict(_mapping(base.get("solver", {}), ["solver"]))
-    solver.setdefault("tol", 1e-8)
-    solver.setdefault("stiffness", "punch")
     for key, value in (("tol", args.tol), ("stiffness", args.stiffness), ("rel_step", args.rel_step),
                        ("maxiter", args.maxiter)):
         if value is not None:
             solver[key] = value
+    axes = {axis: [getattr(args, axis)] for axis in runs.DEFAULTS if getattr(args, axis) is not None}
     cfg = {
-        "grid": grid, "e_star": args.e_star if args.e_star is not None else base.get("e_star", 1.0),
-        "hurst": [args.hurst], "radius": [args.radius], "h_rms": [args.h_rms], "seeds": [args.seed],
-        "forces": {kind: forces}, "solver": solver, "fit": base.get("fit", _FIT),
-        **{axis: [getattr(args, axis)] for axis in study.DEFAULTS if getattr(args, axis) is not None},
+        "grid": grid, "hurst": [args.hurst], "radius": [args.radius], "h_rms": [args.h_rms], "seeds": [args.seed],
+        "solver": solver, "forces": {kind: forces}, **axes,
+        **({"e_star": args.e_star} if args.e_star is not None else
+           {"e_star": base["e_star"]} if "e_star" in base else {}),
+        **({"fit": base["fit"]} if "fit" in base else {}),
     }
-    if schema_path is None:  # installed without the workflow: the core checks its own arguments
-        resolved = schema.coerce(cfg)
-        for path, value in schema.leaves(resolved):  # numbers from --config, too
-            err = config.finite_error(path, value, allow_inf=path[0] == "radius")
-            if err is not None:
-                raise err
-        resolved["seeds"] = [int(args.seed)]
-    else:
-        resolved = config.resolve_config(cfg, schema=schema_path)
+    resolved = config.resolve_config(cfg)
     run = {"hurst": args.hurst, "radius": args.radius, "h_rms": args.h_rms, "seed": args.seed,
-           **{axis: getattr(args, axis) for axis in study.DEFAULTS if getattr(args, axis) is not None}}
-    return study.job_settings(resolved, run)
+           **{axis: values[0] for axis, values in axes.items()}}
+    return job_settings(resolved, run)
 
 
 def _flagged(message: str) -> str:
@@ -160,26 +142,21 @@ def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     if args.command == "check-config":
         try:
-            cfg = config.resolve_config(config.load_config(args.config),
-                                       schema=args.schema or config.find_schema(args.config))
-        except config.ConfigError as err:
+            cfg = config.resolve_config(config.load_config(args.config))
+        except ConfigError as err:
             print(config.error_line(err), file=sys.stderr)
             return 2
-        except FileNotFoundError as err:  # no schema found
-            print(f"roughcontact check-config: {err}", file=sys.stderr)
-            return 2
-        runs = study.runs(cfg)
-        print(f"{args.config}: valid; {len(runs)} indent jobs "
-              f"({len(study.combinations(cfg))} (H, R, h_rms) x {len(cfg['seeds'])} seeds)")
+        print(f"{args.config}: valid; {len(runs.runs(cfg))} indent jobs "
+              f"({len(runs.combinations(cfg))} (H, R, h_rms) x {len(cfg['seeds'])} seeds)")
         return 0
     try:
         settings = settings_from_args(args)
-    except config.ConfigError as err:
+    except ConfigError as err:
         print(f"roughcontact indent: invalid argument: {_flagged(str(err))}", file=sys.stderr)
         return 2
     try:
-        study.run_indent(settings, args.output, log=args.log, progress=not args.quiet)
-    except study.IndentError as err:
+        indent.run_indent(settings, args.output, log=args.log, progress=not args.quiet)
+    except IndentError as err:
         print(f"roughcontact indent: FAILED: {err}", file=sys.stderr)
         return 1
     if not args.quiet:

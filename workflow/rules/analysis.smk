@@ -1,7 +1,7 @@
 # Merge the runs, fit zeta(H) (eq. 11), measure the crossover (eqs. 16, 17), the claims table.
 rule merge:
     input:
-        runs=study.run_paths(config),
+        runs=run_files,
     output:
         stiffness="results/stiffness.nc",
         ensemble="results/ensemble.nc",
@@ -68,6 +68,12 @@ rule claims:
         csv=report(
             "results/claims.csv",
             caption="../report/claims_table.rst",
+            category="Tables",
+            labels={"table": "claims (CSV)"},
+        ),
+        html=report(
+            "results/claims.html",
+            caption="../report/claims_page.rst",
             category="1. Claims of the paper",
             labels={"table": "claims"},
         ),

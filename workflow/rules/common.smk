@@ -1,4 +1,4 @@
-# Shared set-up: the package of this checkout, the validated and resolved config.
+# Shared set-up: the package of this checkout, the validated and resolved config, the paths.
 import os
 import sys
 from pathlib import Path
@@ -13,15 +13,43 @@ os.environ.update(
     PYTHONPATH=os.pathsep.join(p for p in (SRC, os.environ.get("PYTHONPATH")) if p)
 )
 
-from roughcontact import config as rc_config, study  # noqa: E402  (numpy only)
+from roughcontact.errors import ConfigError  # noqa: E402  (numpy only)
+from roughcontact.study import (
+    config as rc_config,
+    runs as study_runs,
+    schema,
+    settings as study_settings,
+)  # noqa: E402
 
-SCHEMA = str(Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
 try:
     # one line naming the key and what is allowed, before any job starts
-    C = rc_config.resolve_config(config, schema=SCHEMA)
-except rc_config.ConfigError as err:
+    C = rc_config.resolve_config(config)
+except ConfigError as err:
     raise SystemExit(rc_config.error_line(err))
-# the same schema through Snakemake (passes once resolve_config did)
-validate(C, SCHEMA)
+# the same schema (package data) through Snakemake (passes once resolve_config did)
+validate(C, str(schema.SCHEMA_PATH))
 config.clear()
 config.update(C)  # the report and the jobs see the resolved values
+
+# The workflow's paths: one run file, log and benchmark per (combination, seed).
+RUN_PATTERN = "results/runs/{combo}/seed{seed}.nc"
+LOG_PATTERN = "logs/indent/{combo}_seed{seed}.log"
+# Snakemake's per-job benchmark (wall seconds, peak RSS max_rss in MB) of each run
+BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_seed{seed}.tsv"
+FIGURE_DIR = "results/figures"
+CAPTION_DIR = "../report"  # relative to workflow/rules/
+
+
+def run_files(wildcards):
+    """Every run file of the resolved config, in the order merge expects."""
+    return study_runs.run_paths(config, RUN_PATTERN)
+
+
+# Scheduler resources of one indent job; both grow with the attempt: a job killed over a
+# limit is retried with more.
+def indent_mem_mb(wildcards, attempt):
+    return study_runs.indent_resources(config)["mem_mb"] * attempt
+
+
+def indent_runtime(wildcards, attempt):
+    return study_runs.indent_resources(config)["runtime"] * attempt

@@ -1,5 +1,5 @@
 # The paper's Figs. 1-4, zeta(H) and a collapse plot, all in the report.
-from roughcontact import (
+from roughcontact.study import (
     figures as _figures,
 )  # noqa: E402  (matplotlib only inside make_figures)
 
@@ -14,8 +14,8 @@ rule figures:
     output:
         *[
             report(
-                s["path"],
-                caption=s["caption"],
+                f"{FIGURE_DIR}/{s['file']}",
+                caption=f"{CAPTION_DIR}/{s['caption']}",
                 category=s["category"],
                 labels=s["labels"],
             )

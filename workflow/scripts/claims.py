@@ -1,8 +1,8 @@
-"""Snakemake `claims` job: crossover and zeta tables -> results/claims.csv (the paper's claims, verdicts)."""
-from roughcontact.claims import run_claims
-from roughcontact.logs import log_to
+"""Snakemake `claims` job: crossover and zeta tables -> results/claims.csv and claims.html (the paper's claims, verdicts)."""
+from roughcontact.study.claims import run_claims
+from roughcontact.study.logs import log_to
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
     run_claims(snakemake.params.cfg, snakemake.input.crossover, snakemake.input.replicates, snakemake.input.zeta,
-               snakemake.input.stiffness, snakemake.output.csv)
+               snakemake.input.stiffness, snakemake.output.csv, snakemake.output.html)

@@ -1,6 +1,6 @@
 """Snakemake `crossover` job: stiffness + zeta -> results/crossover.csv (eq. 16 fitted, F_tr with a 95 % interval)."""
-from roughcontact.logs import log_to
-from roughcontact.verdicts import run_crossover
+from roughcontact.study.logs import log_to
+from roughcontact.study.verdicts import run_crossover
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,4 +1,4 @@
-"""Where the kernels of :mod:`roughcontact.solver` run: windows, candidate cells, working sets.
+"""Where the kernels of :mod:`roughcontact.bem.solver` run: windows, candidate cells, working sets.
 
 :func:`equilibrium` solves one load on the whole grid by solving on a smaller
 set of cells and checking a posteriori that the result holds on the whole grid:
@@ -23,7 +23,7 @@ the cells that were closest to touching) with a dense matrix, computes the gap
 of that solution on the whole grid with one FFT convolution and accepts it when
 no cell outside ``W`` penetrates; otherwise the penetrating cells join ``W``
 (:func:`solve_working_set`). The punch stiffness on at most :func:`dense_limit`
-cells uses a dense matrix too (:mod:`roughcontact.punch`).
+cells uses a dense matrix too (:mod:`roughcontact.bem.punch`).
 
 All these arguments hold with a hardness cap too: a cell with pressure still
 has ``g ≤ 0``, and the acceptance tests are a posteriori.

@@ -3,10 +3,10 @@
 * :func:`polonsky_keer` — force-controlled constrained conjugate gradients of
   Polonsky & Keer, Wear 231, 206 (1999), ``p ≥ 0``;
 * :func:`capped_kernel` — the same with ``0 ≤ p ≤ H``
-  (:func:`roughcontact.plastic.bounded_polonsky_keer`).
+  (:func:`roughcontact.bem.plastic.bounded_polonsky_keer`).
 
 Where they run (windows, candidate cells, working sets) is decided by
-:func:`roughcontact.active_sets.equilibrium`.
+:func:`roughcontact.bem.active_sets.equilibrium`.
 """
 
 from __future__ import annotations
@@ -176,5 +176,5 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
 
 
 def capped_kernel(lift, operator, total, pressure, tol, maxiter, *, hardness):
-    """:func:`~roughcontact.plastic.bounded_polonsky_keer` with the elastic kernel's signature."""
+    """:func:`~roughcontact.bem.plastic.bounded_polonsky_keer` with the elastic kernel's signature."""
     return bounded_polonsky_keer(lift, operator, total, hardness, pressure, tol, maxiter)

@@ -25,6 +25,9 @@ from typing import NamedTuple
 import numpy as np
 from scipy.special import gamma
 
+from .._validate import check_finite_positive, check_hurst
+from ..surfaces.bodies import body_height, radial_distance
+
 __all__ = [
     "kappa",
     "zeta_estimate",
@@ -41,6 +44,8 @@ __all__ = [
     "stiffness_from_force",
     "crossover_force",
     "crossover_slope",
+    "equivalent_height",
+    "equivalent_profile",
 ]
 
 
@@ -55,12 +60,12 @@ def zeta_estimate(hurst):
     return 1.7 / (np.asarray(hurst, dtype=float) + 1.0)
 
 
-def hertz_stiffness(force, radius, e_star):
+def hertz_stiffness(force, *, radius, e_star):
     """Hertzian stiffness k = E* (6 R F/E*)^(1/3) (eq. 9); :func:`body_stiffness` with m = 2."""
-    return body_stiffness(force, radius, e_star)
+    return body_stiffness(force, radius=radius, e_star=e_star)
 
 
-def body_prefactor(radius, exponent=2.0):
+def body_prefactor(radius, *, exponent=2.0):
     """Q = R^(1−m)/m of the body of revolution z = Q r^m = (R/m)(r/R)^m (eq. 6 with H → m).
 
     Unit length^(1−m). m = 2 gives 1/(2R), the Q3D of the paraboloid in eq. 9;
@@ -78,7 +83,7 @@ def _body_coefficient(radius, exponent):
     return (exponent + 1.0) * 2.0**exponent * radius ** (exponent - 1.0) / kappa(exponent)
 
 
-def body_stiffness(force, radius, e_star, *, exponent=2.0):
+def body_stiffness(force, *, radius, e_star, exponent=2.0):
     """Stiffness of a rigid smooth body of revolution z = (R/m)(r/R)^m at force F.
 
     Eq. 7 with H → m and Q3D = R^(1−m)/m (:func:`body_prefactor`), written as
@@ -107,7 +112,7 @@ def body_stiffness(force, radius, e_star, *, exponent=2.0):
     return e_star * root
 
 
-def fractal_stiffness(force, hurst, h_rms, length, e_star, zeta):
+def fractal_stiffness(force, *, hurst, h_rms, length, e_star, zeta):
     """Stiffness of a nominally flat self-affine surface (eq. 11).
 
     k/(E* L) = ζ(H) (F/(E* h L))^(1/(H+1)).
@@ -148,7 +153,7 @@ def fractal_stiffness(force, hurst, h_rms, length, e_star, zeta):
     return e_star * length * zeta * (force / (e_star * h_rms * length)) ** (1.0 / (hurst + 1.0))
 
 
-def profile_prefactor(hurst, h_rms, length, zeta):
+def profile_prefactor(hurst, *, h_rms, length, zeta):
     """Q3D of the axisymmetric profile z_s = Q3D |r|^H equivalent to the roughness (eq. 14).
 
     Q3D = (2/(ζ L))^(H+1) (H+1) L h / (2 H κ(H)); unit length^(1−H).
@@ -165,7 +170,7 @@ class Indentation(NamedTuple):
     stiffness: np.ndarray
 
 
-def profile_indentation(contact_radius, q3d, hurst, e_star):
+def profile_indentation(contact_radius, *, q3d, hurst, e_star):
     """Rigid axisymmetric indenter z = Q3D |r|^H at contact radius a (the law behind eq. 7).
 
     With the method of dimensionality reduction (the paper's refs. 15, 17) or
@@ -202,7 +207,7 @@ def profile_indentation(contact_radius, q3d, hurst, e_star):
                        stiffness=2.0 * e_star * a)
 
 
-def body_indentation(contact_radius, radius, e_star, *, exponent=2.0):
+def body_indentation(contact_radius, *, radius, e_star, exponent=2.0):
     """Smooth body of revolution z = (R/m)(r/R)^m at contact radius a (eq. 7 with H → m).
 
     :func:`profile_indentation` with Q3D = R^(1−m)/m (:func:`body_prefactor`):
@@ -226,10 +231,10 @@ def body_indentation(contact_radius, radius, e_star, *, exponent=2.0):
     Indentation
         ``(force, depth, stiffness)`` at each a.
     """
-    return profile_indentation(contact_radius, body_prefactor(radius, exponent), exponent, e_star)
+    return profile_indentation(contact_radius, q3d=body_prefactor(radius, exponent=exponent), hurst=exponent, e_star=e_star)
 
 
-def profile_stiffness(force, q3d, hurst, e_star):
+def profile_stiffness(force, *, q3d, hurst, e_star):
     """Stiffness of a rigid axisymmetric indenter z = Q3D |r|^H (eq. 7).
 
     k = 2 E* ((H+1) F / (2 Q3D E* H κ(H)))^(1/(H+1)).
@@ -239,7 +244,7 @@ def profile_stiffness(force, q3d, hurst, e_star):
                            / (2.0 * q3d * e_star * hurst * kappa(hurst))) ** (1.0 / (hurst + 1.0))
 
 
-def force_from_stiffness(stiffness, radius, hurst, h_rms, length, e_star, zeta, *,
+def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zeta,
                          exponent=2.0):
     """Force of the rough body at a given stiffness, superposing eqs. 10 and 12 (eq. 16).
 
@@ -258,7 +263,7 @@ def force_from_stiffness(stiffness, radius, hurst, h_rms, length, e_star, zeta, 
     return e_star * (body + length * h_rms * (k / (zeta * e_star * length)) ** (hurst + 1.0))
 
 
-def stiffness_from_force(force, radius, hurst, h_rms, length, e_star, zeta, *, exponent=2.0):
+def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, exponent=2.0):
     """Invert eq. 16 for k at given force(s) (bisection in log k to machine precision).
 
     The root lies between min(k_9, k_11) at F/2 and at F, where k_9 and k_11 are
@@ -269,24 +274,24 @@ def stiffness_from_force(force, radius, hurst, h_rms, length, e_star, zeta, *, e
     """
     force = np.asarray(force, dtype=float)
     if math.isinf(radius):
-        return fractal_stiffness(force, hurst, h_rms, length, e_star, zeta)
+        return fractal_stiffness(force, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta)
 
     def asymptote_min(f):
-        return np.minimum(body_stiffness(f, radius, e_star, exponent=exponent),
-                          fractal_stiffness(f, hurst, h_rms, length, e_star, zeta))
+        return np.minimum(body_stiffness(f, radius=radius, e_star=e_star, exponent=exponent),
+                          fractal_stiffness(f, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta))
 
     lo = np.log(asymptote_min(force / 2.0))
     hi = np.log(asymptote_min(force))
     for _ in range(100):
         mid = 0.5 * (lo + hi)
-        too_stiff = force_from_stiffness(np.exp(mid), radius, hurst, h_rms, length,
-                                         e_star, zeta, exponent=exponent) > force
+        too_stiff = force_from_stiffness(np.exp(mid), radius=radius, hurst=hurst, h_rms=h_rms, length=length,
+                                         e_star=e_star, zeta=zeta, exponent=exponent) > force
         hi = np.where(too_stiff, mid, hi)
         lo = np.where(too_stiff, lo, mid)
     return np.exp(0.5 * (lo + hi))
 
 
-def crossover_force(radius, hurst, h_rms, length, e_star, zeta, *, exponent=2.0):
+def crossover_force(radius, *, hurst, h_rms, length, e_star, zeta, exponent=2.0):
     """Force where the asymptotes of eq. 16 intersect (eq. 17).
 
     F_tr/E* = [ζ^(3H+3) h^(−3) L^(3H) (6R)^(−H−1)]^(1/(H−2)).
@@ -318,4 +323,32 @@ def crossover_slope(hurst, *, exponent=2.0):
     return 2.0 / (np.asarray(hurst, dtype=float) + (exponent + 2.0))
 
 
-from .greenwood_tripp import greenwood_tripp  # noqa: F401  (GT 1967, re-exported)
+def equivalent_height(r, *, radius, hurst, h_rms, length, zeta=None, exponent=2.0):
+    """Height ``z_c(r)`` of the axisymmetric profile equivalent to a rough body (eq. 15).
+
+    ``z_c(r) = (R/m)(r/R)^m + Q3D |r|^H`` with ``Q3D`` from eq. 14 (``m = 2``: the parabola
+    ``r²/(2R)``); ``radius = inf`` gives the roughness-equivalent profile ``z_s`` of eq. 6
+    alone. ``zeta`` defaults to the estimate 1.7/(H+1) (eq. 13). Vectorised over ``r``
+    (length unit, any sign).
+    """
+    check_hurst(hurst)
+    if not (radius > 0):
+        raise ValueError(f"radius must be > 0 (inf allowed), got {radius!r}")
+    check_finite_positive("exponent", exponent)
+    if zeta is None:
+        zeta = zeta_estimate(hurst)
+    check_finite_positive("zeta", zeta)
+    r = np.abs(np.asarray(r, dtype=float))
+    profile = profile_prefactor(hurst, h_rms=h_rms, length=length, zeta=zeta) * r**hurst
+    if math.isfinite(radius):
+        profile = profile + body_height(r, radius, exponent)
+    return profile
+
+
+def equivalent_profile(n: int, *, radius: float, hurst: float, h_rms: float,
+                       length: float = 1.0, zeta: float | None = None,
+                       exponent: float = 2.0) -> np.ndarray:
+    """:func:`equivalent_height` (eq. 15) on the ``n × n`` grid, ``r`` measured from the
+    node ``(n//2, n//2)`` (:func:`roughcontact.surfaces.radial_distance`)."""
+    return equivalent_height(radial_distance(n, length), radius=radius, hurst=hurst, h_rms=h_rms,
+                             length=length, zeta=zeta, exponent=exponent)

@@ -11,7 +11,7 @@ Conventions (units are the caller's; nothing assumes ``L = 1`` or ``E* = 1``):
   ``≥ 0`` elsewhere; pressure ``p ≥ 0`` everywhere.
 * ``force = Σ p Δ²``.
 * With a ``hardness`` ``H`` (penetration-hardness plasticity, module
-  :mod:`roughcontact.plastic`) the pressure is capped at ``H``, cells at the
+  :mod:`roughcontact.bem.plastic`) the pressure is capped at ``H``, cells at the
   cap may have ``g < 0`` and flow by ``−g``, and the accumulated plastic
   displacement ``δ ≥ 0`` enters the gap as ``g = (z − min z) + δ − d + u``.
 
@@ -19,9 +19,9 @@ For the periodic half-space the mean displacement is undefined; ``u`` has zero
 mean and ``depth`` is the approach of the indenter to the mean plane of the
 deformed surface, counted from first touch.
 
-Algorithms (modules :mod:`roughcontact.solver`, :mod:`roughcontact.active_sets`
+Algorithms (modules :mod:`roughcontact.bem.solver`, :mod:`roughcontact.bem.active_sets`
 (the windows of non-periodic solves, the candidate cells and working sets of
-periodic ones) and :mod:`roughcontact.punch`):
+periodic ones) and :mod:`roughcontact.bem.punch`):
 force-controlled constrained conjugate gradients of Polonsky & Keer, Wear 231,
 206 (1999), with the box ``0 ≤ p ≤ H`` when a hardness is given; the exact
 unloading stiffness as the force of a rigid flat punch with the current
@@ -39,7 +39,8 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from ._validate import check_finite_positive, check_grid_size
+from .._validate import check_finite_positive, check_grid_size
+from ..errors import ConvergenceError, DomainTooSmallError
 from .active_sets import equilibrium
 from .operators import operator_for
 from .plastic import plastic_flow
@@ -48,7 +49,6 @@ from .solver import capped_kernel, polonsky_keer
 
 __all__ = [
     "ContactState",
-    "DomainTooSmallError",
     "displacement",
     "iter_load_path",
     "load_path",
@@ -58,10 +58,6 @@ __all__ = [
 
 #: Default maximum number of conjugate-gradient iterations per solve.
 DEFAULT_MAXITER = 10_000
-
-
-class DomainTooSmallError(RuntimeError):
-    """Pressure reached the edge of a non-periodic grid: the domain is too small."""
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -85,7 +81,7 @@ class ContactState:
     gap_error : float
         Final ``max(max_c |g|, max_(not c) (−g)) / d``: the relative violation
         of complementarity that the stopping test bounds by ``tol``.
-    heights, length, e_star, periodic, tol, edge_contact :
+    heights, length, e_star, periodic, tol, maxiter, edge_contact :
         The problem that was solved (``heights`` is the caller's array, not a copy,
         without plastic flattening).
     window : tuple of slice
@@ -115,6 +111,7 @@ class ContactState:
     e_star: float
     periodic: bool
     tol: float
+    maxiter: int
     window: tuple[slice, slice]
     edge_contact: bool = False
     hardness: float | None = None
@@ -223,9 +220,19 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
         force=float(p.sum() * (length / n) ** 2), depth=float(depth), pressure=p,
         contact=p > 0, iterations=int(iterations), converged=bool(converged),
         gap_error=float(error), heights=heights, length=float(length), e_star=float(e_star),
-        periodic=bool(periodic), tol=float(tol), window=window, edge_contact=bool(edge_contact),
+        periodic=bool(periodic), tol=float(tol), maxiter=int(maxiter), window=window,
+        edge_contact=bool(edge_contact),
         hardness=None if hardness is None else float(hardness), plastic=flowed,
         plastic_displacement=plastic_displacement)
+
+
+def _converged(state: ContactState, method: str) -> ContactState:
+    """*state* if it met its stopping test, else the :class:`ConvergenceError` of an extra solve."""
+    if not state.converged:
+        raise ConvergenceError(f"the extra contact solve of stiffness(method={method!r}) at force "
+                               f"{state.force:g} did not converge in {state.iterations} iterations "
+                               f"(tol = {state.tol:g}); raise maxiter or loosen tol")
+    return state
 
 
 def _check_solver_args(length, e_star, tol, maxiter):
@@ -277,7 +284,7 @@ def solve(heights, *, force: float, length: float, e_star: float, periodic: bool
     hardness : float, optional
         Penetration hardness ``H`` (pressure unit, like ``e_star``): the
         pressure is capped at ``H`` and cells at the cap flow (module
-        :mod:`roughcontact.plastic`). The stopping test then reads, with ``f``
+        :mod:`roughcontact.bem.plastic`). The stopping test then reads, with ``f``
         the cells with ``0 < p < H``: ``max_f |g| ≤ tol·d``,
         ``min_(p=0) g ≥ −tol·d`` and ``max_(p=H) g ≤ tol·d``. The elastic
         solution is computed first and returned unchanged when its peak
@@ -396,7 +403,7 @@ def load_path(heights, forces, *, length: float, e_star: float, periodic: bool =
 
 
 def stiffness(state: ContactState, *, method: str = "punch", tol: float | None = None,
-              rel_step: float = 1e-3) -> float:
+              maxiter: int | None = None, rel_step: float = 1e-3) -> float:
     """Incremental normal stiffness ``k = dF/dd`` at ``state`` (force/length).
 
     Parameters
@@ -429,6 +436,11 @@ def stiffness(state: ContactState, *, method: str = "punch", tol: float | None =
     tol : float, optional
         Tolerance of the punch solve or of the extra solves (default:
         ``state.tol``), keyword-only.
+    maxiter : int, optional
+        Iteration limit of the extra contact solves of ``"difference"`` and
+        ``"loading"`` (default: ``state.maxiter``, the limit the state was solved
+        with), keyword-only. The punch solve has its own limits
+        (:mod:`roughcontact.bem.punch`).
     rel_step : float
         Relative force step of the difference quotients, keyword-only.
 
@@ -437,27 +449,35 @@ def stiffness(state: ContactState, *, method: str = "punch", tol: float | None =
     float
         Stiffness; ``inf`` for a periodic contact covering the whole grid
         (``"punch"``).
+
+    Raises
+    ------
+    ConvergenceError
+        If an extra solve of ``"difference"`` or ``"loading"`` does not meet its
+        stopping test within ``maxiter``, or the punch solve does not converge.
     """
     if method in ("difference", "loading"):
         check_finite_positive("rel_step", rel_step)
         if rel_step >= 1:
             raise ValueError(f"rel_step must be < 1, got {rel_step!r}")
         tol = state.tol if tol is None else tol
-        check_finite_positive("tol", tol)
+        maxiter = state.maxiter if maxiter is None else maxiter
+        _check_solver_args(state.length, state.e_star, tol, maxiter)
         if method == "loading":
             prior = None if state.hardness is None else state.plastic_displacement
-            upper = _solve(state.heights, state.force * (1 + rel_step), state.length,
-                           state.e_star, state.periodic, tol, DEFAULT_MAXITER, state.pressure,
-                           state.depth * (1 + rel_step), state.edge_contact, state.hardness, prior)
+            upper = _converged(_solve(state.heights, state.force * (1 + rel_step), state.length,
+                                      state.e_star, state.periodic, tol, maxiter, state.pressure,
+                                      state.depth * (1 + rel_step), state.edge_contact, state.hardness,
+                                      prior), method)
             return (upper.force - state.force) / (upper.depth - state.depth)
         if state.hardness is not None:
             raise ValueError("method='difference' needs an elastic state; with a hardness use "
                              "'punch' (unloading) or 'loading'")
         # d(F) is increasing and concave: d(F(1 ± ε)) ≤ d(F)·(1 + ε) bounds both windows.
         upper, lower = (
-            _solve(state.heights, state.force * (1 + sign * rel_step), state.length, state.e_star,
-                   state.periodic, tol, DEFAULT_MAXITER, state.pressure,
-                   state.depth * (1 + rel_step), state.edge_contact)
+            _converged(_solve(state.heights, state.force * (1 + sign * rel_step), state.length,
+                              state.e_star, state.periodic, tol, maxiter, state.pressure,
+                              state.depth * (1 + rel_step), state.edge_contact), method)
             for sign in (1, -1))
         return (upper.force - lower.force) / (upper.depth - lower.depth)
     if method != "punch":

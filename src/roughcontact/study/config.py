@@ -1,18 +1,18 @@
 """Configuration of the parameter study: resolution, cross-key checks, one-line errors.
 
 :func:`resolve_config` normalises a raw config (as Snakemake or ``yaml``
-loaded it), validates it against ``workflow/schemas/config.schema.yaml`` plus
+loaded it), validates it against the package's schema (``config.schema.yaml``) plus
 the checks a JSON schema cannot express, fills defaults and returns the
 resolved config.  Every problem is reported as one line (:class:`ConfigError`)
 naming the key, the value and what is allowed; :func:`error_line` is how the
 workflow and ``roughcontact check-config`` print it.  Nothing here runs a job
-(:mod:`roughcontact.study` does); ``jsonschema`` and ``yaml`` are imported
+(:mod:`roughcontact.study.indent` does); ``jsonschema`` and ``yaml`` are imported
 where they are used.
 
 The generic schema machinery (finding and parsing the schema, coercing
 command-line strings, wording errors, rejecting NaN and infinities, filling
-defaults) is :mod:`roughcontact.schema`; :class:`ConfigError`,
-:func:`find_schema` and :func:`finite_error` are re-exported here.
+defaults) is :mod:`roughcontact.study.schema`; errors are
+:class:`roughcontact.errors.ConfigError`.
 
 Cross-key checks
 ----------------
@@ -34,14 +34,13 @@ import sys
 
 import numpy as np
 
-from . import theory
+from ..errors import ConfigError
+from ..models import paper
+from .runs import kind_of
 from .schema import (
-    ConfigError,
     check_finite,
     coerce,
     fill_defaults,
-    find_schema,
-    finite_error,
     key_text,
     load_schema,
     printable,
@@ -49,10 +48,7 @@ from .schema import (
 )
 
 __all__ = [
-    "ConfigError",
     "error_line",
-    "find_schema",
-    "finite_error",
     "full_contact_slope",
     "load_config",
     "resolve_config",
@@ -139,22 +135,16 @@ def resolve_config(raw: dict, schema=None) -> dict:
         cfg[axis] = sorted((None if v is None else float(v) for v in cfg[axis]), key=lambda v: (v is not None, v))
     seeds = cfg["seeds"]
     cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)
-    for rng in cfg.get("forces", {}).values():
+    for rng in cfg["forces"].values():
         rng["from"], rng["to"], rng["count"] = float(rng["from"]), float(rng["to"]), int(rng["count"])
 
     # checks a JSON schema cannot express
-    window = cfg["fit"]["slopes"].get("window", 3)
+    window = cfg["fit"]["slopes"]["window"]
     if window % 2 == 0:
         raise ConfigError(f"config key 'fit.slopes.window' = {window} is not allowed; allowed: an odd integer >= 3")
-    kinds = {"sphere" if math.isfinite(r) else "flat" for r in cfg["radius"]}
-    for kind in sorted(kinds):
-        if kind not in cfg.get("forces", {}):
-            what = "a finite radius (sphere)" if kind == "sphere" else "radius .inf (flat surface)"
-            raise ConfigError(
-                f"missing config key 'forces.{kind}': radius lists {what}; allowed: a mapping with keys from, to, count"
-            )
+    kinds = {kind_of(r) for r in cfg["radius"]}
     n, length = cfg["grid"]["n"], cfg["grid"]["length"]
-    for kind, rng in cfg.get("forces", {}).items():
+    for kind, rng in cfg["forces"].items():
         if not rng["from"] < rng["to"]:
             raise ConfigError(
                 f"config key 'forces.{kind}': from = {rng['from']:g} must be smaller than to = {rng['to']:g}; "
@@ -168,7 +158,7 @@ def resolve_config(raw: dict, schema=None) -> dict:
                     f"grid.length^2 = {force:g}, outside the range of floating-point numbers; allowed: "
                     f"{sys.float_info.min:.3g} <= F <= {sys.float_info.max:.3g}"
                 )
-    if "flat" in kinds and "flat" in cfg["forces"]:
+    if "flat" in kinds:
         slope = min(full_contact_slope(h, n, length) for h in cfg["hurst"]) * min(cfg["h_rms"])
         limit = 0.5 * slope
         if cfg["forces"]["flat"]["to"] >= limit:
@@ -177,14 +167,14 @@ def resolve_config(raw: dict, schema=None) -> dict:
                 f"full contact (rms slope ~ {slope:.3g} for H = {max(cfg['hurst']):g}, h_rms = {min(cfg['h_rms']):g}, "
                 f"n = {n}); allowed: to < {limit:.3g}"
             )
-    if "sphere" in kinds and "sphere" in cfg["forces"]:
+    if "sphere" in kinds:
         to = cfg["forces"]["sphere"]["to"]
         for exponent in cfg["exponent"]:
             rmax = max(r for r in cfg["radius"] if math.isfinite(r))
             # smooth body (eq. 7 with H -> m): F ∝ a^(m+1), so a/L = (F/F(a = L))^(1/(m+1));
             # for m = 2 Hertz, a^3 = 3 F R / (4 E*). numpy floats: extreme sizes give inf or 0, no exception
             with np.errstate(all="ignore"):
-                force_at_l = np.float64(theory.body_indentation(length, rmax, 1.0, exponent=exponent).force)
+                force_at_l = np.float64(paper.body_indentation(length, radius=rmax, e_star=1.0, exponent=exponent).force)
                 force_to = np.float64(to) * np.float64(length) ** 2
                 a_over_l = float((force_to / force_at_l) ** (1 / (exponent + 1)))
                 limit = float(force_at_l * 0.25 ** (exponent + 1) / np.float64(length) ** 2)

@@ -25,10 +25,11 @@ from pathlib import Path
 
 import numpy as np
 
-from . import study
-from .verdicts import interval, verdict, verdict_bound
+from . import runs
+from .statistics import interval, verdict, verdict_bound
+from .tables import write_html_table
 
-__all__ = ["claims_table", "run_claims", "EQ16_TOLERANCE"]
+__all__ = ["claims_table", "run_claims", "EQ16_TOLERANCE", "CLAIMS_LEAD"]
 
 log = logging.getLogger(__name__)
 
@@ -52,7 +53,7 @@ def _claim(claim, statement, measured, low, high, paper, verdict_text, *, sweep=
 
 def _paper_values(length: float) -> dict:
     """The paper's setting of the optional axes as merged-file coordinates."""
-    return {axis: study.coordinate(axis, default, length) for axis, default in study.DEFAULTS.items()}
+    return {axis: runs.coordinate(axis, default, length) for axis, default in runs.DEFAULTS.items()}
 
 
 def _describe(r, length: float, n: int, seeds: int) -> str:
@@ -174,7 +175,7 @@ def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None):
 def _scaling_claims(cross, reps, cfg):
     """Claim (g): F_tr ∝ R^((H+1)/(2−H)) h^(3/(2−H)) (eq. 17), exponents fitted per H."""
     rows = []
-    level = float(cfg["fit"]["zeta"].get("confidence", 0.95))
+    level = float(cfg["fit"]["zeta"]["confidence"])
     for hurst in cfg["hurst"]:
         sub = cross[(cross["hurst"] == hurst) & np.isfinite(cross["Ftr_ci_low"])] if len(cross) else cross
         for axis, theory_value in (("radius", (hurst + 1) / (2 - hurst)), ("h_rms", 3 / (2 - hurst))):
@@ -209,7 +210,7 @@ def _lambda_claims(cross, cfg):
     if not small or not len(cross):
         return [_claim("h", statement, math.nan, math.nan, math.nan, LAMBDA_EQ17,
                        f"untested: the sweep's smallest H is {min(cfg['hurst']):g} (needs H <= 0.2 with spheres)")]
-    from .greenwood_tripp import self_affine_sphere_curve
+    from ..models.greenwood_tripp import self_affine_sphere_curve
     from .verdicts import fit_eq16
 
     rows = []
@@ -239,15 +240,26 @@ def _lambda_claims(cross, cfg):
     return rows
 
 
-def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, stiffness_nc, out_csv):
-    """``claims`` rule: crossover.csv, its replicates, zeta.csv and the runs -> claims.csv."""
+#: the lead paragraph of the claims page of the report
+CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
+               "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
+               "paper's value and the verdict: consistent (the paper's value lies inside the interval, or for a "
+               "bound the interval lies on the claimed side), differs (it is excluded) or untested (the sweep "
+               "cannot decide it; the reason says why). claims.csv holds every digit.")
+
+
+def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, stiffness_nc, out_csv, out_html):
+    """``claims`` rule: crossover.csv, its replicates, zeta.csv and the runs -> claims.csv and
+    the same table as an HTML page for the report (:mod:`roughcontact.study.tables`)."""
     import pandas as pd
     import xarray as xr
 
-    from . import analysis
+    from .merge import read_groups, write_csv
 
     cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
     with xr.open_dataset(crossover_nc, engine="netcdf4") as reps:
-        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, analysis.read_groups(stiffness_nc))
-    analysis.write_csv(table, out_csv)
+        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, read_groups(stiffness_nc))
+    write_csv(table, out_csv)
+    write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
+                     first=("claim", "statement", "verdict", "measured", "ci_low", "ci_high", "paper_value", "reason"))
     log.info("claims:\n%s", table.to_string())

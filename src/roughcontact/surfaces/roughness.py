@@ -1,4 +1,4 @@
-"""Indenter height maps: self-affine roughness, bodies of revolution, rough spheres.
+"""Self-affine random roughness on a periodic grid (the paper's eqs. 1–3).
 
 All maps live on an ``n × n`` grid of nodes ``x_i = i·Δ``, ``Δ = length/n``,
 periodic over ``length``. Heights are the indenter's shape ``z``, measured
@@ -17,23 +17,14 @@ Fractal to Hertzian Behavior", Adv. Tribol. 2013, 974178 (2013).
 
 from __future__ import annotations
 
-import math
 import numbers
 
 import numpy as np
 
-from . import theory
-from ._validate import check_finite_positive, check_hurst, check_grid_size
+from .._validate import check_finite_positive, check_grid_size, check_hurst
 
-__all__ = [
-    "wavevectors",
-    "self_affine",
-    "body_of_revolution",
-    "paraboloid",
-    "rough_sphere",
-    "equivalent_profile",
-    "radial_distance",
-]
+__all__ = ["wavevectors", "self_affine", "row_blocks"]
+
 
 
 def wavevectors(n: int, length: float) -> np.ndarray:
@@ -52,7 +43,7 @@ _BLOCK_CELLS = 1 << 16
 _SLACK = 1e-9
 
 
-def _row_blocks(stop: int, n: int, start: int = 0):
+def row_blocks(stop: int, n: int, start: int = 0):
     """Consecutive slices of ``max(1, _BLOCK_CELLS // n)`` indices covering ``[start, stop)``."""
     step = max(1, _BLOCK_CELLS // n)
     return [slice(i, min(i + step, stop)) for i in range(start, stop, step)]
@@ -100,14 +91,14 @@ def _spectrum(n: int, length: float, hurst: float, seed, q_r, q_c) -> np.ndarray
     spectrum = np.empty((n, n), dtype=complex)
     phase = spectrum.real
     rng = np.random.default_rng(seed)
-    for rows in _row_blocks(n, n):
+    for rows in row_blocks(n, n):
         phase[rows] = rng.uniform(0.0, 2.0 * np.pi, size=(rows.stop - rows.start, n))
     flip = -np.arange(n) % n                               # column of −q
     for row in [0] + ([n // 2] if n % 2 == 0 else []):     # rows that are their own mirror
         own = phase[[row]]
         spectrum[[row]] = (_amplitude(q1, [row], hurst, q_r, q_c)
                            * np.exp(1j * (own - own[:, flip])))
-    for block in _row_blocks((n + 1) // 2, n, start=1):    # rows i and n − i together
+    for block in row_blocks((n + 1) // 2, n, start=1):    # rows i and n − i together
         rows = np.arange(block.start, block.stop)
         mirrors = n - rows
         own, other = phase[rows], phase[mirrors]
@@ -125,9 +116,9 @@ def _ifft2_in_place(a: np.ndarray) -> None:
     line on its own, so doing the lines block by block gives identical bytes.
     (``numpy.fft.ifft2`` ignores ``out=`` up to numpy 2.4, numpy issue 30909.)
     """
-    for rows in _row_blocks(a.shape[0], a.shape[1]):
+    for rows in row_blocks(a.shape[0], a.shape[1]):
         np.fft.ifft(a[rows], axis=1, out=a[rows])
-    for cols in _row_blocks(a.shape[1], a.shape[0]):
+    for cols in row_blocks(a.shape[1], a.shape[0]):
         np.fft.ifft(a[:, cols], axis=0, out=a[:, cols])
 
 
@@ -194,114 +185,3 @@ def self_affine(n: int, *, hurst: float, h_rms: float, length: float = 1.0,
     heights = spectrum.real
     heights -= heights.mean()
     return heights * (h_rms / np.sqrt(np.mean(heights**2)))
-
-
-def _coordinates(n: int, length: float) -> np.ndarray:
-    """Node coordinates ``x_i − x_(n//2)`` along one side."""
-    return (np.arange(n) - n // 2) * (length / n)
-
-
-def _body(r, radius: float, exponent: float):
-    """``z = (R/m)(r/R)^m``, evaluated as ``r^m/(m R^(m−1))`` (``r²/(2R)`` for ``m = 2``)."""
-    return r**exponent / (exponent * radius ** (exponent - 1.0))
-
-
-def radial_distance(n: int, length: float = 1.0) -> np.ndarray:
-    """Distance ``r`` of every node from the centre node ``(n//2, n//2)``."""
-    check_grid_size(n)
-    check_finite_positive("length", length)
-    x = _coordinates(n, length)
-    return np.hypot(x[:, None], x[None, :])
-
-
-def body_of_revolution(n: int, *, radius: float, exponent: float,
-                       length: float = 1.0) -> np.ndarray:
-    """Smooth body of revolution ``z = (R/m)(r/R)^m = Q r^m``, ``Q = R^(1−m)/m``.
-
-    The profile of eq. 6 with ``H`` replaced by ``m`` and ``Q3D = Q`` (the paper's
-    Conclusions: "arbitrary bodies of revolution"). ``m = 2`` is the paraboloid
-    ``r²/(2R)`` of Sec. 2 (same bytes as :func:`paraboloid`), ``m = 1`` a cone of slope 1;
-    ``R`` is the radius of curvature of the apex for ``m = 2`` and a length scale
-    otherwise. ``r`` is measured from the node ``(n//2, n//2)``, the exact centre of the
-    grid for odd ``n``.
-
-    Parameters
-    ----------
-    n : int
-        Grid points per side (≥ 8).
-    radius : float
-        ``R`` (length unit), finite and > 0.
-    exponent : float
-        ``m``, finite and > 0.
-    length : float
-        Side ``L`` of the grid (length unit).
-
-    Returns
-    -------
-    numpy.ndarray
-        ``(n, n)`` heights (length unit), 0 at the apex.
-    """
-    check_grid_size(n)
-    check_finite_positive("radius", radius)
-    check_finite_positive("exponent", exponent)
-    check_finite_positive("length", length)
-    x = _coordinates(n, length)
-    heights = np.empty((n, n))
-    for rows in _row_blocks(n, n):
-        heights[rows] = _body(np.hypot(x[rows, None], x[None, :]), radius, exponent)
-    return heights
-
-
-def paraboloid(n: int, *, radius: float, length: float = 1.0) -> np.ndarray:
-    """Parabolic approximation of a sphere, ``z_p = r²/(2R)`` (Sec. 2).
-
-    :func:`body_of_revolution` with ``m = 2``. The apex (``z = 0``) is the node
-    ``(n//2, n//2)``; for odd ``n`` that is the exact centre of the grid.
-    """
-    check_finite_positive("radius", radius)
-    return body_of_revolution(n, radius=radius, exponent=2.0, length=length)
-
-
-def rough_sphere(n: int, *, radius: float, hurst: float, h_rms: float,
-                 length: float = 1.0, seed: int | None = 0, exponent: float = 2.0,
-                 rolloff: float | None = None, cutoff: float | None = None) -> np.ndarray:
-    """Rough sphere ``z = z_p + z_r``: paraboloid plus self-affine roughness (Fig. 2).
-
-    ``z_p`` is :func:`body_of_revolution` with ``exponent`` (default 2: the paraboloid),
-    ``z_r`` is :func:`self_affine` with the other arguments; the body is added in place,
-    row block by row block, so the peak memory is that of :func:`self_affine`. The
-    defaults give the same bytes as before ``exponent``, ``rolloff`` and ``cutoff`` existed.
-    """
-    check_finite_positive("radius", radius)
-    check_finite_positive("exponent", exponent)
-    heights = self_affine(n, hurst=hurst, h_rms=h_rms, length=length, seed=seed,
-                          rolloff=rolloff, cutoff=cutoff)
-    x = _coordinates(n, length)
-    for rows in _row_blocks(n, n):
-        heights[rows] += _body(np.hypot(x[rows, None], x[None, :]), radius, exponent)
-    return heights
-
-
-def equivalent_profile(n: int, *, radius: float, hurst: float, h_rms: float,
-                       length: float = 1.0, zeta: float | None = None,
-                       exponent: float = 2.0) -> np.ndarray:
-    """Axisymmetric profile equivalent to a rough sphere (eq. 15).
-
-    ``z_c(r) = r²/(2R) + Q3D |r|^H`` with ``Q3D`` from eq. 14; with ``exponent = m``
-    the body term is that of :func:`body_of_revolution`, ``(R/m)(r/R)^m``.
-    ``radius=inf`` gives the roughness-equivalent profile ``z_s`` of eq. 6 alone.
-    ``zeta`` defaults to the estimate 1.7/(H+1) (eq. 13).
-    """
-    check_hurst(hurst)
-    if not (radius > 0):
-        raise ValueError(f"radius must be > 0 (inf allowed), got {radius!r}")
-    check_finite_positive("exponent", exponent)
-    if zeta is None:
-        zeta = theory.zeta_estimate(hurst)
-    check_finite_positive("zeta", zeta)
-    r = radial_distance(n, length)
-    q3d = theory.profile_prefactor(hurst, h_rms, length, zeta)
-    profile = q3d * r**hurst
-    if math.isfinite(radius):
-        profile = profile + _body(r, radius, exponent)
-    return profile

@@ -3,7 +3,7 @@
 A run with a short-wavelength cutoff, a roll-off or a hardness is compared with
 the run of the same seed without it (equal seeds give the same random phases,
 so the pair differs only by the axis); intervals resample the seeds of both
-sides together (:func:`roughcontact.verdicts.bootstrap_indices`).
+sides together (:func:`roughcontact.study.statistics.bootstrap_indices`).
 
 (i) "the contact stiffness ... is determined by the large wavelength in the
     power spectrum" (Conclusions): a cutoff changes k by less than
@@ -25,8 +25,8 @@ import math
 
 import numpy as np
 
-from . import study
-from .verdicts import bootstrap_indices, interval, verdict, verdict_bound
+from . import runs
+from .statistics import bootstrap_indices, interval, verdict, verdict_bound
 
 __all__ = ["effect_claims", "INSENSITIVE_TOLERANCE"]
 
@@ -51,16 +51,16 @@ def _untested(axis, why, paper):
 def effect_claims(ds, cross, cfg: dict) -> list[dict]:
     """Rows of claims (i)–(k) from the sphere Dataset *ds* (merged runs) and the
     crossover table *cross* (for the low-force window); keyword dicts of
-    :func:`roughcontact.claims._claim`."""
+    :func:`roughcontact.study.claims._claim`."""
     L, E = cfg["grid"]["length"], cfg["e_star"]
     fit = cfg["fit"]
-    level = float(fit["zeta"].get("confidence", 0.95))
-    indices = bootstrap_indices(ds.sizes["seed"], int(fit["zeta"].get("bootstrap", 1000)))
+    level = float(fit["zeta"]["confidence"])
+    indices = bootstrap_indices(ds.sizes["seed"], int(fit["zeta"]["bootstrap"]))
     force = ds["force"].values / (E * L**2)
     rows = []
     for axis in ("cutoff", "rolloff", "hardness"):
         paper = 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
-        baseline = study.coordinate(axis, None, L)
+        baseline = runs.coordinate(axis, None, L)
         values = ds[axis].values.tolist()
         if baseline not in values or len(values) < 2:
             rows.append(_untested(axis, f"no {axis} swept" if values == [baseline]

@@ -32,49 +32,12 @@ import math
 
 import numpy as np
 
-from . import theory
+from ..models import paper
+from .statistics import BOOTSTRAP_SEED, bootstrap_indices, interval, verdict
 
-__all__ = ["Eq16Fit", "fit_eq16", "bootstrap_indices", "SphereVerdicts", "sphere_verdicts", "verdict",
-           "verdict_bound", "interval", "crossover_table", "run_crossover"]
+__all__ = ["Eq16Fit", "fit_eq16", "SphereVerdicts", "sphere_verdicts", "crossover_table", "run_crossover"]
 
 log = logging.getLogger(__name__)
-
-#: random state of every bootstrap (the paper's acceptance date)
-BOOTSTRAP_SEED = 20130702
-
-
-def verdict(value: float, low: float, high: float) -> str:
-    """``consistent`` if ``low ≤ value ≤ high``, ``differs`` otherwise (``untested`` for a NaN interval)."""
-    if not (math.isfinite(low) and math.isfinite(high) and math.isfinite(value)):
-        return "untested"
-    return "consistent" if low <= value <= high else "differs"
-
-
-def verdict_bound(bound: float, low: float, high: float, *, side: str) -> str:
-    """Verdict on a one-sided claim ``value < bound`` (``side="below"``) from its interval:
-    ``consistent`` if the whole interval lies on the claimed side, ``differs`` if it lies
-    wholly on the other, ``untested`` (with the reason) if it contains the bound."""
-    if not (math.isfinite(low) and math.isfinite(high)):
-        return "untested: no interval"
-    inside, outside = (high < bound, low > bound) if side == "below" else (low > bound, high < bound)
-    if inside:
-        return "consistent"
-    return "differs" if outside else f"untested: the interval contains {bound:g}"
-
-
-def bootstrap_indices(n_seeds: int, resamples: int, *, seed: int = BOOTSTRAP_SEED) -> np.ndarray:
-    """``(resamples, n_seeds)`` seed indices drawn with replacement (fixed random state)."""
-    return np.random.default_rng(seed).integers(0, n_seeds, size=(resamples, n_seeds))
-
-
-def interval(samples: np.ndarray, level: float) -> tuple[float, float]:
-    """Percentile interval of the finite *samples* (NaN, NaN if fewer than half are finite)."""
-    finite = samples[np.isfinite(samples)]
-    if finite.size < max(2, samples.size // 2):
-        return math.nan, math.nan
-    low, high = np.percentile(finite, [50 * (1 - level), 50 * (1 + level)])
-    return float(low), float(high)
-
 
 # --------------------------------------------------------------------------
 # eq. 16 with free prefactors
@@ -223,13 +186,13 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
     cells = np.asarray(contact_cells, dtype=float).mean(0)
     L = length
     notes = []
-    z_est = float(theory.zeta_estimate(hurst))
+    z_est = float(paper.zeta_estimate(hurst))
     z_used = zeta_fit if math.isfinite(zeta_fit) else z_est
     if not math.isfinite(zeta_fit):
         notes.append("no fitted zeta: 1.7/(H+1) used for eq. 16 and the slope windows")
     m = exponent
-    f_pred_fit = theory.crossover_force(radius, hurst, h_rms, L, 1.0, zeta_fit, exponent=m) / L**2
-    f_pred_est = theory.crossover_force(radius, hurst, h_rms, L, 1.0, z_est, exponent=m) / L**2
+    f_pred_fit = paper.crossover_force(radius, hurst=hurst, h_rms=h_rms, length=L, e_star=1.0, zeta=zeta_fit, exponent=m) / L**2
+    f_pred_est = paper.crossover_force(radius, hurst=hurst, h_rms=h_rms, length=L, e_star=1.0, zeta=z_est, exponent=m) / L**2
     f_window = f_pred_fit if math.isfinite(f_pred_fit) else f_pred_est
     resolved = cells >= min_cells
     k_mean = k_seeds.mean(0)
@@ -266,7 +229,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
                     "hertz_coefficient": a, "hertz_coefficient_ci_low": a_lo,
                     "hertz_coefficient_ci_high": a_hi,
                     # k/(E* L) = 1 is the contact radius a = L/2 (k = 2 E* a)
-                    "hertz_coefficient_theory": float(theory.body_indentation(L / 2, radius, 1.0, exponent=m).force)
+                    "hertz_coefficient_theory": float(paper.body_indentation(L / 2, radius=radius, e_star=1.0, exponent=m).force)
                     / L**2,
                     "rough_coefficient": b, "rough_coefficient_ci_low": b_lo,
                     "rough_coefficient_ci_high": b_hi,
@@ -294,7 +257,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
             log_f = np.log(F[mask])
             value = float(_slopes(log_f, np.log(k_mean[mask])))
             s_lo, s_hi = interval(_slopes(log_f, np.log(k_boot[:, mask])), level)
-            k16 = theory.stiffness_from_force(F[mask] * L**2, radius, hurst, h_rms, L, 1.0, z_used, exponent=m) / L
+            k16 = paper.stiffness_from_force(F[mask] * L**2, radius=radius, hurst=hurst, h_rms=h_rms, length=L, e_star=1.0, zeta=z_used, exponent=m) / L
             row.update({name: value, f"{name}_ci_low": s_lo, f"{name}_ci_high": s_hi,
                         f"{name}_eq16": float(_slopes(log_f, np.log(k16))),
                         f"{name}_verdict": verdict(theory_value, s_lo, s_hi)})
@@ -305,7 +268,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
 
     # eq. 16 (fitted zeta, no free parameter) against the ensemble, and k against Hertz below F_tr
     if resolved.any():
-        k16 = theory.stiffness_from_force(Fr * L**2, radius, hurst, h_rms, L, 1.0, z_used, exponent=m) / L
+        k16 = paper.stiffness_from_force(Fr * L**2, radius=radius, hurst=hurst, h_rms=h_rms, length=L, e_star=1.0, zeta=z_used, exponent=m) / L
         dev = np.abs(k_boot[:, resolved] / k16 - 1).max(-1)
         d_lo, d_hi = interval(dev, level)
         log_dev = np.abs(np.log10(k_mean[resolved] / k16))
@@ -317,7 +280,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
     soft = resolved & (F < f_split)
     row["n_loads_below_Ftr"] = int(soft.sum())
     if soft.any():
-        k_h = theory.body_stiffness(F[soft] * L**2, radius, 1.0, exponent=m) / L
+        k_h = paper.body_stiffness(F[soft] * L**2, radius=radius, e_star=1.0, exponent=m) / L
         ratio = (k_boot[:, soft] / k_h).max(-1)
         r_lo, r_hi = interval(ratio, level)
         row.update({"k_over_hertz_below_Ftr": float((k_mean[soft] / k_h).max()),
@@ -345,7 +308,7 @@ def crossover_table(groups: dict, zeta_df, cfg: dict):
     ds = groups["sphere"]
     L, E = cfg["grid"]["length"], cfg["e_star"]
     fit = cfg["fit"]
-    resamples = int(fit["zeta"].get("bootstrap", 1000))
+    resamples = int(fit["zeta"]["bootstrap"])
     indices = bootstrap_indices(ds.sizes["seed"], resamples)
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
@@ -360,7 +323,7 @@ def crossover_table(groups: dict, zeta_df, cfg: dict):
             hurst=combo["hurst"], radius=combo["radius"], h_rms=combo["h_rms"], length=L,
             exponent=combo.get("exponent", 2.0), zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)),
             indices=indices, min_cells=fit["zeta"]["min_cells"], low_max_ratio=fit["slopes"]["low_max_ratio"],
-            high_min_ratio=fit["slopes"]["high_min_ratio"], level=float(fit["zeta"].get("confidence", 0.95)))
+            high_min_ratio=fit["slopes"]["high_min_ratio"], level=float(fit["zeta"]["confidence"]))
         rows.append({**combo, **result.row})
         replicates[position] = result.crossover_replicates
     reps = xr.Dataset(
@@ -378,10 +341,11 @@ def run_crossover(cfg, stiffness_nc, zeta_csv, out_csv, out_nc):
     bootstrap replicates of F_tr in crossover.nc."""
     import pandas as pd
 
-    from . import analysis, provenance
+    from . import provenance
+    from .merge import read_groups, write_csv, write_netcdf
 
-    table, reps = crossover_table(analysis.read_groups(stiffness_nc), pd.read_csv(zeta_csv), cfg)
+    table, reps = crossover_table(read_groups(stiffness_nc), pd.read_csv(zeta_csv), cfg)
     reps.attrs.update(provenance.provenance_attrs(config=cfg, title="roughcontact: crossover force replicates"))
-    analysis.write_csv(table, out_csv)
-    analysis.write_netcdf(reps, out_nc)
+    write_csv(table, out_csv)
+    write_netcdf(reps, out_nc)
     log.info("crossover:\n%s", table.to_string())

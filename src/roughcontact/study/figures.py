@@ -11,34 +11,34 @@ import dataclasses
 import logging
 import math
 
-from . import study
+from .. import surfaces
+from ..models import paper
+from . import runs
 
 log = logging.getLogger(__name__)
-
-FIG_DIR = "results/figures"
-CAPTIONS = "../report"  # relative to workflow/rules/
-
 
 def _sphere_combos(cfg: dict) -> list[dict]:
     """Sphere combinations as merged-file coordinates (optional axes as numbers)."""
     L = cfg["grid"]["length"]
     out = []
-    for c in study.combinations(cfg):
+    for c in runs.combinations(cfg):
         if c["kind"] == "sphere":
-            name = study.combo_name(c)
-            out.append({**{a: study.coordinate(a, c[a], L) if a in study.DEFAULTS else c[a]
-                           for a in study.AXES["sphere"]},
+            name = runs.combo_name(c)
+            out.append({**{a: runs.coordinate(a, c[a], L) if a in runs.DEFAULTS else c[a]
+                           for a in runs.AXES["sphere"]},
                         # the tags of the optional axes off the paper's setting ("" at the paper's setting)
                         "name": name, "variant": name.split("_", 3)[3] if name.count("_") > 2 else ""})
     return out
 
 
 def figure_specs(cfg: dict) -> list[dict]:
-    """One dict per figure: key, path, caption (relative to workflow/rules), category, labels."""
+    """One dict per figure: key, file (a PNG name), caption (an ``.rst`` name), category, labels.
+
+    The workflow places the files and finds the captions; nothing here knows its folders."""
     specs = [
-        {"key": ("fig1",), "path": f"{FIG_DIR}/fig1_surface.png", "caption": "fig1.rst",
+        {"key": ("fig1",), "file": "fig1_surface.png", "caption": "fig1.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 1 self-affine surface"}},
-        {"key": ("fig2",), "path": f"{FIG_DIR}/fig2_rough_sphere.png", "caption": "fig2.rst",
+        {"key": ("fig2",), "file": "fig2_rough_sphere.png", "caption": "fig2.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 2 rough sphere"}},
     ]
     for combo in _sphere_combos(cfg):
@@ -46,19 +46,17 @@ def figure_specs(cfg: dict) -> list[dict]:
                   "h_rms": f"{combo['h_rms']:g}"}
         if combo["variant"]:
             labels["variant"] = combo["variant"]
-        specs.append({"key": ("fig3", combo), "path": f"{FIG_DIR}/fig3_{combo['name']}.png", "caption": "fig3.rst",
+        specs.append({"key": ("fig3", combo), "file": f"fig3_{combo['name']}.png", "caption": "fig3.rst",
                       "category": "Fig. 3 stiffness vs force", "labels": labels})
     specs += [
-        {"key": ("fig4",), "path": f"{FIG_DIR}/fig4_profiles.png", "caption": "fig4.rst",
+        {"key": ("fig4",), "file": "fig4_profiles.png", "caption": "fig4.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 4 equivalent profiles"}},
-        {"key": ("zeta",), "path": f"{FIG_DIR}/zeta.png", "caption": "zeta.rst",
+        {"key": ("zeta",), "file": "zeta.png", "caption": "zeta.rst",
          "category": "zeta(H) and collapse", "labels": {"figure": "zeta(H)"}},
     ]
     if any(math.isfinite(r) for r in cfg["radius"]):
-        specs.append({"key": ("collapse",), "path": f"{FIG_DIR}/collapse.png", "caption": "collapse.rst",
+        specs.append({"key": ("collapse",), "file": "collapse.png", "caption": "collapse.rst",
                       "category": "zeta(H) and collapse", "labels": {"figure": "collapse"}})
-    for spec in specs:
-        spec["caption"] = f"{CAPTIONS}/{spec['caption']}"
     return specs
 
 
@@ -82,17 +80,14 @@ class Inputs:
 
     def zeta_used(self, hurst):
         """Fitted ζ(H), or 1.7/(H+1) (eq. 13) where none was fitted."""
-        from . import theory
 
         z = dict(zip(self.zeta["hurst"], self.zeta["zeta"])).get(hurst, math.nan)
-        return z if math.isfinite(z) else float(theory.zeta_estimate(hurst))
+        return z if math.isfinite(z) else float(paper.zeta_estimate(hurst))
 
 
 def fig1(plt, inputs: Inputs, _key):
     """Fig. 1: (a) a self-affine surface, (b) a cut through it."""
     import numpy as np
-
-    from . import surfaces
 
     cfg, H0, h0, seed = inputs.cfg, inputs.hurst, inputs.h_rms, inputs.seed
     L, n = cfg["grid"]["length"], cfg["grid"]["n"]
@@ -110,8 +105,6 @@ def fig1(plt, inputs: Inputs, _key):
 def fig2(plt, inputs: Inputs, _key):
     """Fig. 2: the rough sphere, central half of the grid."""
     import numpy as np
-
-    from . import surfaces
 
     cfg, H0, h0, R0 = inputs.cfg, inputs.hurst, inputs.h_rms, inputs.radius
     L, n = cfg["grid"]["length"], cfg["grid"]["n"]
@@ -134,13 +127,11 @@ def fig3(plt, inputs: Inputs, key):
     both asymptotes and the crossover force predicted and measured (95 % interval)."""
     import numpy as np
 
-    from . import theory
-
     combo = key[1]
     cfg = inputs.cfg
     L, E, n = cfg["grid"]["length"], cfg["e_star"], cfg["grid"]["n"]
     hurst, radius, h, m = combo["hurst"], combo["radius"], combo["h_rms"], combo["exponent"]
-    sub = inputs.ensemble.sel({a: combo[a] for a in study.AXES["sphere"]})
+    sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
     F = sub["force"].values / (E * L**2)
     k = sub["k_mean"].values / (E * L)
     err = np.nan_to_num(sub["k_sem"].values / (E * L))
@@ -158,15 +149,15 @@ def fig3(plt, inputs: Inputs, key):
     Fg = np.geomspace(F.min() / 3, F.max() * 3, 200)
     body = "Hertz, eq. 9" if m == 2 else f"smooth body m = {m:g}, eq. 7"
     for zeta, style, text in ((zf, "k-", f"eq. 16, fitted zeta = {zf:.3g}"),
-                              (float(theory.zeta_estimate(hurst)), "k:", "eq. 16, zeta = 1.7/(H+1)")):
-        ax.plot(Fg, theory.stiffness_from_force(Fg * E * L**2, radius, hurst, h, L, E, zeta, exponent=m) / (E * L),
+                              (float(paper.zeta_estimate(hurst)), "k:", "eq. 16, zeta = 1.7/(H+1)")):
+        ax.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zeta, exponent=m) / (E * L),
                 style, lw=1.5 if style == "k-" else 1, label=text)
-    ax.plot(Fg, theory.body_stiffness(Fg * E * L**2, radius, E, exponent=m) / (E * L), "--", color="C0",
+    ax.plot(Fg, paper.body_stiffness(Fg * E * L**2, radius=radius, e_star=E, exponent=m) / (E * L), "--", color="C0",
             label=f"{body} (slope {1 / (m + 1):.3g})")
-    ax.plot(Fg, theory.fractal_stiffness(Fg * E * L**2, hurst, h, L, E, zf) / (E * L), "--", color="C2",
+    ax.plot(Fg, paper.fractal_stiffness(Fg * E * L**2, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf) / (E * L), "--", color="C2",
             label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
     if not combo["variant"]:  # the paper's setting: Greenwood-Tripp on the same spectrum
-        from .greenwood_tripp import self_affine_sphere_curve
+        from ..models.greenwood_tripp import self_affine_sphere_curve
 
         gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
         shown = (gt.force >= Fg[0] * E * L**2) & (gt.force <= Fg[-1] * E * L**2)
@@ -175,7 +166,7 @@ def fig3(plt, inputs: Inputs, key):
     cross = inputs.crossover
     if len(cross):
         row = cross
-        for a in study.AXES["sphere"]:
+        for a in runs.AXES["sphere"]:
             if a in row:
                 row = row[np.isclose(row[a], combo[a], rtol=1e-12, atol=0) | (np.isinf(row[a]) & np.isinf(combo[a]))]
         if len(row):
@@ -198,14 +189,13 @@ def fig4(plt, inputs: Inputs, _key):
     """Fig. 4: the parabola, the equivalent profile of the roughness (eqs. 6, 14) and their sum (eq. 15)."""
     import numpy as np
 
-    from . import theory
-
     H0, h0, R0, L = inputs.hurst, inputs.h_rms, inputs.radius, inputs.cfg["grid"]["length"]
     r = np.linspace(-0.2 * L, 0.2 * L, 801)  # where z_p and z_s are of similar size
-    zp = r**2 / (2 * R0)
-    zs = theory.profile_prefactor(H0, h0, L, inputs.zeta_used(H0)) * np.abs(r) ** H0
+    profile = {"hurst": H0, "h_rms": h0, "length": L, "zeta": inputs.zeta_used(H0)}
+    zs = paper.equivalent_height(r, radius=math.inf, **profile)
+    zc = paper.equivalent_height(r, radius=R0, **profile)
     fig, axes = plt.subplots(1, 3, figsize=(10, 3.2))
-    for ax, zz, title in zip(axes, (zp, zs, zp + zs),
+    for ax, zz, title in zip(axes, (zc - zs, zs, zc),
                              ("(a) z_p = r²/(2R)", "(b) z_s = Q3D |r|^H (eq. 6, 14)", "(c) z_c = z_p + z_s (eq. 15)")):
         ax.plot(r, zz)
         ax.set(title=title, xlabel="r")
@@ -219,15 +209,13 @@ def zeta(plt, inputs: Inputs, _key):
     """ζ(H) with its bootstrap interval against 1.7/(H+1) (eq. 13)."""
     import numpy as np
 
-    from . import theory
-
     d = inputs.zeta.sort_values("hurst")
     fig, ax = plt.subplots(figsize=(5.5, 4))
     yerr = np.array([d["zeta"] - d["zeta_ci_low"], d["zeta_ci_high"] - d["zeta"]])
     ax.errorbar(d["hurst"], d["zeta"], yerr=np.nan_to_num(np.abs(yerr)), fmt="o", capsize=3, color="C3",
                 label=f"fit ({d['source'].iloc[0]}), {100 * d['confidence'].iloc[0]:.0f}% bootstrap CI")
     hg = np.linspace(0.05, 1.95, 200)
-    ax.plot(hg, theory.zeta_estimate(hg), "k-", label="1.7/(H+1), eq. 13")
+    ax.plot(hg, paper.zeta_estimate(hg), "k-", label="1.7/(H+1), eq. 13")
     ax.set(xlabel="H", ylabel="zeta(H)", xlim=(0, 2) if d["hurst"].max() > 1 else (0, 1))
     ax.legend(fontsize=7)
     fig.tight_layout()
@@ -237,8 +225,6 @@ def zeta(plt, inputs: Inputs, _key):
 def collapse(plt, inputs: Inputs, _key):
     """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16."""
     import numpy as np
-
-    from . import theory
 
     cfg = inputs.cfg
     L, E = cfg["grid"]["length"], cfg["e_star"]
@@ -253,9 +239,9 @@ def collapse(plt, inputs: Inputs, _key):
             ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "-" if m == 2 else "--", color=f"C{j}", lw=1,
                     label=f"eq. 16, H = {hurst:g}, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
         zf = inputs.zeta_used(hurst)
-        ftr = theory.crossover_force(combo["radius"], hurst, combo["h_rms"], L, E, zf, exponent=m)
-        ktr = theory.body_stiffness(ftr, combo["radius"], E, exponent=m)
-        sub = inputs.ensemble.sel({a: combo[a] for a in study.AXES["sphere"]})
+        ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
+        ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
+        sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
         ok = sub["contact_cells_mean"].values >= cfg["fit"]["zeta"]["min_cells"]
         ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{j}", alpha=0.7)
     ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
@@ -269,8 +255,8 @@ def collapse(plt, inputs: Inputs, _key):
 DRAW = {"fig1": fig1, "fig2": fig2, "fig3": fig3, "fig4": fig4, "zeta": zeta, "collapse": collapse}
 
 
-def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs=None):
-    """Draw every figure of :func:`figure_specs` (to *outputs*, same order, if given)."""
+def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs):
+    """Draw every figure of :func:`figure_specs` to *outputs* (paths, in the same order)."""
     from pathlib import Path
 
     import matplotlib
@@ -279,13 +265,16 @@ def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs=None):
     import matplotlib.pyplot as plt
     import pandas as pd
 
-    from . import analysis, provenance
+    from . import provenance
+    from .merge import read_groups
 
     specs = figure_specs(cfg)
-    paths = list(outputs) if outputs is not None else [s["path"] for s in specs]
+    paths = list(outputs)
+    if len(paths) != len(specs):
+        raise ValueError(f"make_figures got {len(paths)} output paths for {len(specs)} figures")
     finite = [r for r in cfg["radius"] if math.isfinite(r)]
     inputs = Inputs(
-        cfg=cfg, ensemble=analysis.read_groups(ensemble_nc).get("sphere"), zeta=pd.read_csv(zeta_csv),
+        cfg=cfg, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=pd.read_csv(zeta_csv),
         crossover=pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame(),
         hurst=_pick(cfg["hurst"], 0.7), h_rms=_pick(cfg["h_rms"], 9e-3),
         radius=_pick(finite, 0.5) if finite else 0.5, seed=cfg["seeds"][0])

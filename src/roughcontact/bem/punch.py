@@ -19,6 +19,7 @@ import math
 import numpy as np
 from scipy.sparse.linalg import LinearOperator, cg
 
+from ..errors import ConvergenceError
 from .active_sets import dense_limit
 
 __all__ = ["INNER_RTOL", "punch_stiffness"]
@@ -51,7 +52,7 @@ def _system(operator, footprint, convolve):
 def _cg(system, rhs, start, rtol, maxiter):
     solution, info = cg(system, rhs, x0=start, rtol=rtol, atol=0.0, maxiter=maxiter)
     if info != 0:
-        raise RuntimeError(f"the flat-punch stiffness solve did not converge in {info} iterations")
+        raise ConvergenceError(f"the flat-punch stiffness solve did not converge in {info} iterations")
     return solution
 
 
@@ -76,7 +77,7 @@ def punch_stiffness(operator, footprint: np.ndarray, tol: float) -> float:
 
     Notes
     -----
-    On at most :func:`~roughcontact.active_sets.dense_limit` cells the system is a
+    On at most :func:`~roughcontact.bem.active_sets.dense_limit` cells the system is a
     dense matrix. Otherwise products are FFT convolutions, for the free
     half-space on the bounding box of the footprint (about half the window a
     load's solve needs). When the operator offers single-precision products

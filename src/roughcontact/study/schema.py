@@ -1,11 +1,11 @@
 """JSON-schema machinery of the configuration: load, coerce, describe, one-line errors.
 
-:func:`find_schema` locates ``workflow/schemas/config.schema.yaml`` and
+The schema is package data (:data:`SCHEMA_PATH`, ``config.schema.yaml`` beside this module);
 ``load_schema`` parses it once per modification of the file.  Nothing here
-knows the keys of this project's config: :mod:`roughcontact.config` resolves
+knows the keys of this project's config: :mod:`roughcontact.study.config` resolves
 the config with these helpers and adds the checks a JSON schema cannot
 express.  ``yaml`` is imported where it is used; ``jsonschema`` is imported
-by :mod:`roughcontact.config`, which validates.
+by :mod:`roughcontact.study.config`, which validates.
 
 Errors
 ------
@@ -32,19 +32,18 @@ import functools
 import json
 import math
 import numbers
-import os
 from collections.abc import Mapping
 from pathlib import Path
 
-from . import _validate
+from .. import _validate
+from ..errors import ConfigError
 
 __all__ = [
+    "default_of",
     "ALLOW_INF",
-    "SCHEMA_RELPATH",
-    "ConfigError",
+    "SCHEMA_PATH",
     "check_finite",
     "coerce",
-    "find_schema",
     "fill_defaults",
     "finite_error",
     "key_text",
@@ -59,34 +58,14 @@ __all__ = [
 ALLOW_INF = "x-allow-inf"
 
 
-class ConfigError(ValueError):
-    """An invalid configuration; ``str(err)`` is one line naming the key."""
-
-
-#: the schema file, relative to the checkout (see :func:`find_schema`)
-SCHEMA_RELPATH = Path("workflow/schemas/config.schema.yaml")
-
-
-def find_schema(start: str | os.PathLike | None = None) -> Path:
-    """Locate ``workflow/schemas/config.schema.yaml``: above *start* (a file or
-    directory), the current directory, or the checkout holding this module."""
-    candidates = []
-    for base in (start, Path.cwd(), Path(__file__).resolve()):
-        if base is None:
-            continue
-        base = Path(base).resolve()
-        candidates += [base, *base.parents]
-    for base in candidates:
-        path = base / SCHEMA_RELPATH
-        if path.is_file():
-            return path
-    raise FileNotFoundError(f"cannot find {SCHEMA_RELPATH} (run from the roughcontact checkout)")
+#: the configuration's JSON schema, shipped as package data beside this module
+SCHEMA_PATH = Path(__file__).with_name("config.schema.yaml")
 
 
 def load_schema(schema) -> dict:
     if isinstance(schema, dict):
         return schema
-    path = Path(schema if schema is not None else find_schema()).resolve()
+    path = Path(schema if schema is not None else SCHEMA_PATH).resolve()
     return _parse_schema(str(path), path.stat().st_mtime_ns)
 
 
@@ -215,6 +194,14 @@ def _node(schema: dict, root: dict, path) -> dict:
                 break
         node = found
     return _deref(node, root)
+
+
+def default_of(root: dict, path):
+    """A deep copy of the schema's ``default`` at *path* (a sequence of keys); ``KeyError`` if none."""
+    node = _node(root, root, list(path))
+    if "default" not in node:
+        raise KeyError(f"the schema gives no default for '{key_text(list(path))}'")
+    return copy.deepcopy(node["default"])
 
 
 def _deref(node: dict, root: dict) -> dict:

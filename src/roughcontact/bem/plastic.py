@@ -185,7 +185,7 @@ def bounded_polonsky_keer(lift, operator, total, hardness, pressure, tol, maxite
     -------
     tuple
         ``(pressure, depth, iterations, converged, error)`` as
-        :func:`roughcontact.solver.polonsky_keer` (``error`` the left side of
+        :func:`roughcontact.bem.solver.polonsky_keer` (``error`` the left side of
         the stopping test divided by ``|d|``).
 
     Notes

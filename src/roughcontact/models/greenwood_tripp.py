@@ -48,7 +48,7 @@ Limits (tested in ``tests/test_greenwood_tripp.py``):
   (``stiffness_star``).
 
 Summit statistics (``η``, ``β``, ``σ``) from a surface's spectral moments:
-:mod:`roughcontact.asperities` (re-exported here).
+:mod:`roughcontact.models.asperities` on the moments of :mod:`roughcontact.surfaces.moments`.
 """
 
 from __future__ import annotations
@@ -61,30 +61,19 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.special import ellipk, gamma, pbdv
 
-from ._validate import check_finite_positive, check_grid_size
-from .asperities import (
-    AsperityParameters,
-    SpectralMoments,
-    asperity_parameters,
-    mu_parameter,
-    self_affine_moments,
-    spectral_moments,
-)
+from .._validate import check_finite_positive, check_grid_size
+from ..errors import ConvergenceError
+from ..surfaces.moments import self_affine_moments
+from .asperities import AsperityParameters, asperity_parameters, mu_parameter
 
 __all__ = [
-    "AsperityParameters",
     "GreenwoodTrippCurve",
     "GreenwoodTrippSolution",
-    "SpectralMoments",
-    "asperity_parameters",
     "greenwood_tripp",
     "greenwood_tripp_curve",
     "self_affine_sphere_curve",
     "gt_function",
     "influence_matrix",
-    "mu_parameter",
-    "self_affine_moments",
-    "spectral_moments",
 ]
 
 #: Gauss–Legendre nodes per half of a hat function for the smooth influence integrals.
@@ -281,7 +270,7 @@ def greenwood_tripp(depth_star: float, mu: float, *, rho_max: float = 5.0, point
     ValueError
         For bad arguments, or a pressure at ``rho_max`` above
         ``edge_pressure_tol · max p`` (enlarge ``rho_max``).
-    RuntimeError
+    ConvergenceError
         If Newton's method does not meet ``pressure_tol`` in ``max_newton`` steps.
 
     Notes
@@ -333,7 +322,7 @@ def greenwood_tripp(depth_star: float, mu: float, *, rho_max: float = 5.0, point
         pressure, residual, separation = trial, trial_residual, trial_separation
     size = float(np.abs(residual).max()) / float(pressure.max())
     if size > pressure_tol:
-        raise RuntimeError(f"Greenwood-Tripp Newton iteration did not converge "
+        raise ConvergenceError(f"Greenwood-Tripp Newton iteration did not converge "
                            f"(residual {size:.2e} > {pressure_tol:g})")
     if pressure[-1] > edge_pressure_tol * pressure.max():
         raise ValueError(f"pressure at rho_max = {rho_max:g} is {pressure[-1] / pressure.max():.2e} "

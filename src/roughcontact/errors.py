@@ -1,0 +1,47 @@
+"""The package's exceptions: one base class, one child per kind of failure.
+
+Every error the package raises on purpose is a :class:`RoughContactError`, so a caller can
+catch them all at once; each child also derives from the built-in exception it refines
+(``ValueError`` for bad input, ``RuntimeError`` for a computation that cannot finish), so
+code that catches those keeps working. ``str(err)`` is one line that names what to change.
+"""
+from __future__ import annotations
+
+__all__ = [
+    "RoughContactError",
+    "ConfigError",
+    "InputFileError",
+    "ConvergenceError",
+    "DomainTooSmallError",
+    "IndentError",
+    "MergeError",
+]
+
+
+class RoughContactError(Exception):
+    """Base class of every error raised on purpose by :mod:`roughcontact`."""
+
+
+class ConfigError(RoughContactError, ValueError):
+    """An invalid configuration; ``str(err)`` is one line naming the key."""
+
+
+class InputFileError(RoughContactError, ValueError):
+    """An input file (a measured topography, a spectrum table) that cannot be used."""
+
+
+class ConvergenceError(RoughContactError, RuntimeError):
+    """An iterative solve that did not reach its stopping test within its iteration limit."""
+
+
+class DomainTooSmallError(RoughContactError, RuntimeError):
+    """The contact reached the edge of the free-space (non-periodic) grid."""
+
+
+class IndentError(RoughContactError, RuntimeError):
+    """A run that cannot produce trustworthy numbers (no convergence, or the contact
+    reached the edge of the free-space grid); the message names the run and what to change."""
+
+
+class MergeError(RoughContactError, RuntimeError):
+    """A run file that cannot be merged; the message names the file and the cause."""

@@ -1,0 +1,169 @@
+"""The runs of a study: the sweep's combinations, run names and scheduler resources.
+
+One run is one (H, R, h_rms, optional axes, seed) of a resolved configuration
+(:func:`roughcontact.study.config.resolve_config`).  ``radius = inf`` is a nominally flat
+self-affine surface on the periodic half-space; a finite radius is a rough sphere on the
+free (non-periodic) half-space.  A run's name is :func:`combo_name` plus its seed; the
+workflow turns names into paths with its own patterns (:func:`run_path`).
+:mod:`roughcontact.study.settings` gives everything one run needs.
+"""
+from __future__ import annotations
+
+import math
+import re
+import string
+
+import numpy as np
+
+__all__ = [
+    "format_value",
+    "parse_value",
+    "runs",
+    "run_path",
+    "run_paths",
+    "combinations",
+    "indent_resources",
+    "force_grid",
+    "parse_run_path",
+    "combo_name",
+    "parse_combo",
+    "AXES",
+    "kind_of",
+]
+
+#: sweep axes of the runs of each surface kind, in the order of the merged
+#: file's dimensions (then ``seed`` and ``force``); a flat surface has no
+#: radius and no body exponent
+AXES = {"sphere": ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness"),
+        "flat": ("hurst", "h_rms", "rolloff", "cutoff", "hardness")}
+#: the paper's setting of the optional axes: a paraboloid (m = 2), a spectrum from L
+#: down to the grid (no roll-off, no cutoff), an elastic half-space. Runs with these
+#: values have the names and settings they had before the axes existed.
+DEFAULTS = {"exponent": 2.0, "rolloff": None, "cutoff": None, "hardness": None}
+#: tag of each axis in a run's name, ``H0.7_R0.5_h0.009[_m4][_rolloff0.25][_cutoff0.01][_hardness0.01]``
+TAGS = {"hurst": "H", "radius": "R", "h_rms": "h", "exponent": "_m", "rolloff": "_rolloff",
+        "cutoff": "_cutoff", "hardness": "_hardness"}
+
+
+# --------------------------------------------------------------------------
+# runs and file names
+# --------------------------------------------------------------------------
+def format_value(x) -> str:
+    """Text of a sweep value in a run name: shortest round-trip repr, ``inf``."""
+    x = float(x)
+    return "inf" if math.isinf(x) else repr(x)
+
+
+def parse_value(text: str) -> float:
+    return float(text)
+
+
+def kind_of(radius) -> str:
+    """``"sphere"`` for a finite radius (free half-space), ``"flat"`` for ``inf`` (periodic)."""
+    return "sphere" if math.isfinite(radius) else "flat"
+
+
+def coordinate(axis: str, value, length: float) -> float:
+    """Value of a run's axis as a coordinate of the merged files: the paper's
+    settings as numbers with the same meaning (rolloff null = the system size L,
+    cutoff null = 0, i.e. no short wavelength removed, hardness null = inf, elastic)."""
+    if value is None:
+        return {"rolloff": float(length), "cutoff": 0.0, "hardness": math.inf}[axis]
+    return float(value)
+
+
+def combinations(cfg: dict) -> list[dict]:
+    """One dict per (H, R, h_rms and the optional axes) in sweep order; flat
+    surfaces (R = inf) take only the default body exponent (they have no body)."""
+    out = []
+    for hurst in cfg["hurst"]:
+        for radius in cfg["radius"]:
+            exponents = cfg["exponent"] if math.isfinite(radius) else [DEFAULTS["exponent"]]
+            for exponent in exponents:
+                for h_rms in cfg["h_rms"]:
+                    for rolloff in cfg["rolloff"]:
+                        for cutoff in cfg["cutoff"]:
+                            for hardness in cfg["hardness"]:
+                                out.append({"hurst": hurst, "radius": radius, "exponent": exponent, "h_rms": h_rms,
+                                            "rolloff": rolloff, "cutoff": cutoff, "hardness": hardness,
+                                            "kind": kind_of(radius)})
+    return out
+
+
+def runs(cfg: dict) -> list[dict]:
+    """One dict per run: the axes of :func:`combinations`, ``seed`` and ``kind``."""
+    return [{**combo, "seed": seed} for combo in combinations(cfg) for seed in cfg["seeds"]]
+
+
+def combo_name(run: dict) -> str:
+    """Name of a run's (H, R, h_rms, ...) directory: ``H0.7_R0.5_h0.009``, plus a tag
+    for every optional axis off its default (``_m4``, ``_rolloff0.25``, ...)."""
+    name = "_".join(f"{TAGS[a]}{format_value(run[a])}" for a in ("hurst", "radius", "h_rms"))
+    for axis, default in DEFAULTS.items():
+        if run.get(axis, default) != default:
+            name += f"{TAGS[axis]}{format_value(run[axis])}"
+    return name
+
+
+_COMBO = re.compile(r"H(?P<hurst>[^_/]+)_R(?P<radius>[^_/]+)_h(?P<h_rms>[^_/]+?)"
+                    + "".join(rf"(?:{TAGS[a]}(?P<{a}>[^_/]+?))?" for a in DEFAULTS) + "$")
+
+
+def parse_combo(name: str) -> dict:
+    """The axes of a run directory name (:func:`combo_name`); ``ValueError`` if it is not one."""
+    match = _COMBO.match(name)
+    if not match:
+        raise ValueError(f"{name!r} is not a run name like H0.7_R0.5_h0.009[_m4][_rolloff0.25]...")
+    out = {axis: parse_value(match.group(axis)) for axis in ("hurst", "radius", "h_rms")}
+    for axis, default in DEFAULTS.items():
+        text = match.group(axis)
+        out[axis] = default if text is None else parse_value(text)
+    return out
+
+
+def run_path(run: dict, pattern: str) -> str:
+    """Path of one run (a dict of :func:`runs`) after *pattern*, a format string with the
+    fields ``{combo}`` (:func:`combo_name`) and ``{seed}`` (the workflow owns the patterns)."""
+    return pattern.format(combo=combo_name(run), seed=int(run["seed"]))
+
+
+#: what the fields of a run path pattern match (:func:`parse_run_path`)
+_PATH_FIELDS = {"combo": r"(?P<combo>[^/]+)", "seed": r"(?P<seed>\d+)"}
+
+
+def parse_run_path(path: str, pattern: str) -> dict:
+    """The axes and seed of a path made by :func:`run_path` with *pattern* (its inverse);
+    *path* may carry a leading directory (an absolute path, a ``--directory``)."""
+    regex = "".join(re.escape(literal) + (_PATH_FIELDS[field] if field else "")
+                    for literal, field, _, _ in string.Formatter().parse(pattern))
+    match = re.search(f"(?:^|/){regex}$", str(path).replace("\\", "/"))
+    if not match:
+        raise ValueError(f"{path!r} is not a run file path like {pattern}")
+    return {**parse_combo(match.group("combo")), "seed": int(match.group("seed"))}
+
+
+def run_paths(cfg: dict, pattern: str) -> list[str]:
+    """:func:`run_path` of every run of the resolved config *cfg*, in sweep order."""
+    return [run_path(r, pattern) for r in runs(cfg)]
+
+
+def force_grid(force_from: float, force_to: float, count: int) -> np.ndarray:
+    """The log-spaced load path ``F/(E* L²)`` of a force range ``{from, to, count}``."""
+    return np.geomspace(force_from, force_to, int(count))
+
+
+def indent_resources(cfg: dict) -> dict:
+    """Generous per-job estimates for schedulers (SLURM): ``mem_mb`` and
+    ``runtime`` (minutes) of one ``indent`` job, from the grid and load count.
+
+    Memory: surface generation (24 bytes per cell), the heights and two states
+    alive at a time (pressure, contact set: ~17 bytes per cell each), FFT
+    kernels up to the doubled grid, over a ~250 MB interpreter; times 1.5.
+    Runtime: measured ~10 s for a 513^2 flat run of 13 loads on one core,
+    scaled by n^2 log n and the load count, times 10.
+    """
+    n = cfg["grid"]["n"]
+    count = max(cfg["forces"][kind_of(r)]["count"] for r in cfg["radius"])
+    mem = 250 + (n * n * (24 + 8 + 2 * 17) + 8 * (2 * n) ** 2 * 16) / 1e6
+    scale = (n * n * math.log(n)) / (513 * 513 * math.log(513)) * count / 13
+    return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100), "runtime": int(max(5, math.ceil(10 * scale * 10 / 60)))}

@@ -1,0 +1,81 @@
+"""Result tables as self-contained HTML pages, for the report: verdicts readable on the page.
+
+Snakemake's report shows an HTML result inside the page (an ``iframe``), where a CSV result is
+only offered as a download; :func:`write_html_table` turns a table such as ``claims.csv`` into
+such a page, one row per table row, with the verdict cells colour-coded. The page carries its
+provenance (package version, git commit, date) in a footer and needs no script or network.
+"""
+from __future__ import annotations
+
+import html
+import math
+import numbers
+
+from . import provenance
+
+__all__ = ["VERDICT_COLOURS", "html_table", "write_html_table"]
+
+#: background colour of a verdict cell, by the verdict's first word
+VERDICT_COLOURS = {"consistent": "#d6f5d6", "differs": "#f8d0d0", "untested": "#e6e6e6"}
+
+_STYLE = """
+body { font-family: system-ui, sans-serif; font-size: 13px; margin: 12px; }
+h1 { font-size: 16px; }
+p.lead { max-width: 70em; }
+table { border-collapse: collapse; }
+th, td { border: 1px solid #bbb; padding: 3px 6px; text-align: left; vertical-align: top; }
+th { background: #f2f2f2; position: sticky; top: 0; }
+td.text { min-width: 14em; }
+td.number { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+footer { margin-top: 1em; color: #555; font-size: 11px; }
+"""
+
+
+def _cell_text(value) -> str:
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return ""
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return f"{value:.4g}"
+    return str(value)
+
+
+def html_table(rows, *, title: str, lead: str, verdict_columns=("verdict",), first=()) -> str:
+    """One HTML page: *title*, a *lead* paragraph and *rows* (a pandas DataFrame) as a table.
+
+    The columns named in *first* come first, in that order, then the others. Cells of the
+    *verdict_columns* are coloured by :data:`VERDICT_COLOURS` and carry the class
+    ``verdict-<word>``; numbers are shown with four significant digits (the CSV beside the
+    page keeps every digit).
+    """
+    rows = rows[[c for c in first if c in rows.columns] + [c for c in rows.columns if c not in first]]
+    head = "".join(f"<th>{html.escape(str(c))}</th>" for c in rows.columns)
+    body = []
+    for record in rows.itertuples(index=False):
+        cells = []
+        for column, value in zip(rows.columns, record):
+            text = html.escape(_cell_text(value))
+            if column in verdict_columns:
+                word = text.split(":")[0].split(" ")[0]
+                colour = VERDICT_COLOURS.get(word, "#ffffff")
+                cells.append(f'<td class="verdict-{word}" style="background:{colour}">{text}</td>')
+            elif isinstance(value, numbers.Real) and not isinstance(value, bool):
+                cells.append(f'<td class="number">{text}</td>')
+            else:
+                wide = ' class="text"' if len(text) > 40 else ""
+                cells.append(f"<td{wide}>{text}</td>")
+        body.append("<tr>" + "".join(cells) + "</tr>")
+    stamp = provenance.provenance_attrs()
+    footer = (f"roughcontact {html.escape(str(stamp['roughcontact_version']))}, git commit "
+              f"{html.escape(str(stamp['git_commit']))}, written {html.escape(str(stamp['created_utc']))}")
+    return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
+            f"<style>{_STYLE}</style></head><body><h1>{html.escape(title)}</h1>"
+            f'<p class="lead">{html.escape(lead)}</p>'
+            f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+            f"<footer>{footer}</footer></body></html>\n")
+
+
+def write_html_table(rows, path, **kwargs) -> None:
+    """:func:`html_table` written to *path* atomically (temp file, then rename)."""
+    with provenance.atomic_path(path) as tmp:
+        with open(tmp, "w", encoding="utf-8") as fh:
+            fh.write(html_table(rows, **kwargs))
