@@ -214,7 +214,7 @@ def test_indent_rejects_non_finite_flags(tmp_path, flag, value):
 
 
 def test_indent_radius_inf_is_a_flat_run():
-    args = cli._parser().parse_args(["indent", "--hurst", "0.7", "--radius", "inf", "--h-rms", "9e-3", "-o", "x.nc"])
+    args = cli.build_parser().parse_args(["indent", "--hurst", "0.7", "--radius", "inf", "--h-rms", "9e-3", "-o", "x.nc"])
     settings = cli.settings_from_args(args)
     assert settings.kind == "flat", f"--radius inf gave {settings.kind}"
     assert settings.periodic is True, "--radius inf is not periodic"

@@ -17,7 +17,7 @@ ST = pytest.importorskip("SurfaceTopography")
 from roughcontact import bem, surfaces
 from roughcontact.errors import InputFileError
 from roughcontact.surfaces.measured import MeasuredSurface, from_topography
-from roughcontact.surfaces.tiles import edge_jump, tiles
+from roughcontact.surfaces.subwindows import edge_jump, tiles
 
 _DEFAULT = Path(__file__).resolve().parents[1].parent / "shared" / "topographies"
 SHARED = Path(os.environ.get("ROUGHCONTACT_TOPOGRAPHIES", _DEFAULT))

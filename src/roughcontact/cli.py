@@ -34,7 +34,12 @@ _NUMBER_FLAGS = {
     "tol": ("solver", "tol"), "rel_step": ("solver", "rel_step"),
     "exponent": ("exponent", 0), "rolloff": ("rolloff", 0), "cutoff": ("cutoff", 0), "hardness": ("hardness", 0),
 }
-def _parser() -> argparse.ArgumentParser:
+#: the subcommands of :func:`build_parser`
+COMMANDS = ("indent", "check-config")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The ``roughcontact`` argument parser (subcommands :data:`COMMANDS`)."""
     p = argparse.ArgumentParser(prog="roughcontact", description=__doc__.split("\n\n")[0])
     sub = p.add_subparsers(dest="command", required=True)
 
@@ -139,7 +144,7 @@ def _flagged(message: str) -> str:
 
 
 def main(argv=None) -> int:
-    args = _parser().parse_args(argv)
+    args = build_parser().parse_args(argv)
     if args.command == "check-config":
         try:
             cfg = config.resolve_config(config.load_config(args.config))

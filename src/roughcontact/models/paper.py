@@ -130,7 +130,7 @@ def fractal_stiffness(force, *, hurst, h_rms, length, e_star, zeta):
     * Roll-off, λ_r < L. Neither the paper nor this package establishes
       eq. 11 here. The reading that keeps the amplitude of the power law is
       eq. 11 with (h, L) → (h_r, λ_r), h_r the rms of the self-affine band
-      q_r ≤ |q| ≤ q_c alone (not of the whole surface, whose plateau adds
+      ``q_r ≤ |q| ≤ q_c`` alone (not of the whole surface, whose plateau adds
       long-wavelength height); it is a conjecture, and can at most apply
       while the load is carried within about one roll-off wavelength. Once
       the contact spreads over many roll-off patches, a nominally flat
@@ -154,7 +154,7 @@ def fractal_stiffness(force, *, hurst, h_rms, length, e_star, zeta):
 
 
 def profile_prefactor(hurst, *, h_rms, length, zeta):
-    """Q3D of the axisymmetric profile z_s = Q3D |r|^H equivalent to the roughness (eq. 14).
+    """Q3D of the axisymmetric profile ``z_s = Q3D |r|^H`` equivalent to the roughness (eq. 14).
 
     Q3D = (2/(ζ L))^(H+1) (H+1) L h / (2 H κ(H)); unit length^(1−H).
     """
@@ -171,7 +171,7 @@ class Indentation(NamedTuple):
 
 
 def profile_indentation(contact_radius, *, q3d, hurst, e_star):
-    """Rigid axisymmetric indenter z = Q3D |r|^H at contact radius a (the law behind eq. 7).
+    """Rigid axisymmetric indenter ``z = Q3D |r|^H`` at contact radius a (the law behind eq. 7).
 
     With the method of dimensionality reduction (the paper's refs. 15, 17) or
     Sneddon's solution, an axisymmetric indenter f(r) pressed to contact radius
@@ -235,7 +235,7 @@ def body_indentation(contact_radius, *, radius, e_star, exponent=2.0):
 
 
 def profile_stiffness(force, *, q3d, hurst, e_star):
-    """Stiffness of a rigid axisymmetric indenter z = Q3D |r|^H (eq. 7).
+    """Stiffness of a rigid axisymmetric indenter ``z = Q3D |r|^H`` (eq. 7).
 
     k = 2 E* ((H+1) F / (2 Q3D E* H κ(H)))^(1/(H+1)).
     """

@@ -5,16 +5,16 @@ the run of the same seed without it (equal seeds give the same random phases,
 so the pair differs only by the axis); intervals resample the seeds of both
 sides together (:func:`roughcontact.study.statistics.bootstrap_indices`).
 
-(i) "the contact stiffness ... is determined by the large wavelength in the
-    power spectrum" (Conclusions): a cutoff changes k by less than
-    :data:`INSENSITIVE_TOLERANCE` at every resolved load whose apparent contact
-    radius ``a = k/(2E*)`` (without the cutoff) exceeds the cutoff wavelength.
-(j) a roll-off's effect on the low-force slope (the paper expects none for
-    "arbitrary power spectrum"; Pastewka et al., Phys. Rev. E 87, 062809
-    (2013) find a linear k(F) for a flat surface with a roll-off at small loads).
-(k) "the assumption of elasticity on all scales does not play a crucial role":
-    a hardness cap changes the unloading and the loading stiffness by less than
-    :data:`INSENSITIVE_TOLERANCE` at every resolved load.
+* (i) "the contact stiffness ... is determined by the large wavelength in the
+  power spectrum" (Conclusions): a cutoff changes k by less than
+  :data:`INSENSITIVE_TOLERANCE` at every resolved load whose apparent contact
+  radius ``a = k/(2E*)`` (without the cutoff) exceeds the cutoff wavelength.
+* (j) a roll-off's effect on the low-force slope (the paper expects none for
+  "arbitrary power spectrum"; Pastewka et al., Phys. Rev. E 87, 062809
+  (2013) find a linear k(F) for a flat surface with a roll-off at small loads).
+* (k) "the assumption of elasticity on all scales does not play a crucial role":
+  a hardness cap changes the unloading and the loading stiffness by less than
+  :data:`INSENSITIVE_TOLERANCE` at every resolved load.
 
 Forces F/(E* L²), stiffnesses k/(E* L).
 """

@@ -40,6 +40,7 @@ from ..errors import ConfigError
 
 __all__ = [
     "default_of",
+    "deref",
     "ALLOW_INF",
     "SCHEMA_PATH",
     "check_finite",
@@ -172,7 +173,7 @@ def short_text(value) -> str:
 
 def _branches(node: dict, root: dict):
     """*node* and the sub-schemas of its oneOf/anyOf/allOf, dereferenced."""
-    node = _deref(node, root)
+    node = deref(node, root)
     yield node
     for key in ("oneOf", "anyOf", "allOf"):
         for branch in node.get(key, []):
@@ -193,7 +194,7 @@ def _node(schema: dict, root: dict, path) -> dict:
                 found = branch["properties"][part]
                 break
         node = found
-    return _deref(node, root)
+    return deref(node, root)
 
 
 def default_of(root: dict, path):
@@ -204,7 +205,8 @@ def default_of(root: dict, path):
     return copy.deepcopy(node["default"])
 
 
-def _deref(node: dict, root: dict) -> dict:
+def deref(node: dict, root: dict) -> dict:
+    """*node* with its ``$ref`` (a ``#/...`` pointer into *root*) resolved and merged in."""
     ref = node.get("$ref")
     if ref and ref.startswith("#/"):
         target = root
@@ -221,7 +223,7 @@ _NOUNS = {"integer": ("an integer", "integers"), "number": ("a number", "numbers
 def _describe(node: dict, root: dict, with_doc: bool = True, finite: bool = False, plural: bool = False) -> str:
     """What *node* allows, in words.  *finite*: say that numbers must be finite
     (the message of a NaN or an infinity); *plural*: for list items."""
-    node = _deref(node, root)
+    node = deref(node, root)
     if "oneOf" in node or "anyOf" in node:
         text = " or ".join(_describe(b, root, False, finite, plural) for b in node.get("oneOf", node.get("anyOf")))
     elif "enum" in node:
@@ -345,10 +347,10 @@ def finite_error(path, value, schema: dict | None = None, allow_inf: bool | None
 
 
 def fill_defaults(instance, node, root):
-    node = _deref(node, root)
+    node = deref(node, root)
     if isinstance(instance, dict):
         for name, sub in node.get("properties", {}).items():
-            sub = _deref(sub, root)
+            sub = deref(sub, root)
             if name not in instance and "default" in sub:
                 instance[name] = copy.deepcopy(sub["default"])
             if name in instance:

@@ -46,16 +46,21 @@ log = logging.getLogger(__name__)
 class Eq16Fit:
     """Least-squares fit of ``F = A k³ + B k^(H+1)`` (eq. 16 with free prefactors).
 
-    Attributes (arrays of the leading shape of the fitted stiffnesses;
-    normalised units F/(E* L²) and k/(E* L))
+    Arrays of the leading shape of the fitted stiffnesses, in normalised units
+    F/(E* L²) and k/(E* L).
+
+    Attributes
     ----------
-    hertz_coefficient : A; Hertz (eq. 10) gives ``A = L/(6R)``, i.e. ``1/(6 R E*²)``
-        in physical units (a body ``z ∝ r^m``: eq. 7 with H → m).
-    rough_coefficient : B; eq. 12 gives ``B = (h/L) ζ^−(H+1)``.
-    crossover_stiffness : ``k_tr = (B/A)^(1/(m−H))``, where the two terms are equal.
-    crossover_force : ``F_tr = A k_tr^(m+1)``, the force where the asymptotes
-        (eqs. 10 and 12) intersect: eq. 17's quantity. The fitted curve itself
-        passes ``k_tr`` at ``2 F_tr``.
+    hertz_coefficient : numpy.ndarray
+        A; Hertz (eq. 10) gives ``A = L/(6R)``, i.e. ``1/(6 R E*²)`` in physical units
+        (a body ``z ∝ r^m``: eq. 7 with H → m).
+    rough_coefficient : numpy.ndarray
+        B; eq. 12 gives ``B = (h/L) ζ^−(H+1)``.
+    crossover_stiffness : numpy.ndarray
+        ``k_tr = (B/A)^(1/(m−H))``, where the two terms are equal.
+    crossover_force : numpy.ndarray
+        ``F_tr = A k_tr^(m+1)``, the force where the asymptotes (eqs. 10 and 12)
+        intersect: eq. 17's quantity. The fitted curve itself passes ``k_tr`` at ``2 F_tr``.
     """
 
     hertz_coefficient: np.ndarray

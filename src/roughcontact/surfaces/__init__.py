@@ -5,7 +5,7 @@ indenter's shape ``z``, measured from the undeformed half-space towards the inde
 starts where ``z`` is lowest). Self-affine roughness is :mod:`.roughness` (eqs. 1–3 of the
 paper), smooth bodies and rough spheres :mod:`.bodies`, spectral moments :mod:`.moments`.
 A user's own surface comes in through :mod:`.measured` (an instrument's scan, read with
-SurfaceTopography: the ``measured`` extra), :mod:`.tiles` (its sub-windows) and :mod:`.psd`
+SurfaceTopography: the ``measured`` extra), :mod:`.subwindows` (its sub-windows) and :mod:`.psd`
 (a measured power spectrum, e.g. contact.engineering's export, as seeded random-phase
 surfaces).
 """
@@ -15,7 +15,7 @@ from .measured import MeasuredSurface, from_topography
 from .moments import SpectralMoments, self_affine_moments, spectral_moments
 from .psd import PsdTable, read_psd, surface_from_psd
 from .roughness import self_affine, wavevectors
-from .tiles import EdgeJump, edge_jump, tiles
+from .subwindows import EdgeJump, edge_jump, tiles
 
 __all__ = [
     "EdgeJump",

@@ -65,7 +65,7 @@ class PsdTable:
     q : numpy.ndarray
         Angular wavenumbers, strictly increasing, > 0 (rad per ``unit``).
     c : numpy.ndarray
-        ``C²ᴰ(q)`` > 0 (``unit``⁴).
+        ``C²ᴰ(q) > 0`` (``unit`` to the fourth power).
     unit : str or None
         Length unit of the table (``None``: the file names none).
     source : str
