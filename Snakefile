@@ -26,6 +26,7 @@ localrules:
     fit_zeta,
     crossover,
     claims,
+    models,
     figures,
 
 
@@ -36,4 +37,5 @@ rule all:
         rules.fit_zeta.output,
         rules.crossover.output,
         rules.claims.output,
+        rules.models.output,
         rules.figures.output,

@@ -162,33 +162,51 @@ def test_report_and_figures(run):
     assert sum(n.startswith("fig3_") for n in names) == len(cfg["hurst"]) * len(cfg["h_rms"])
 
 
+def test_model_scorecard(run):
+    """models.csv: every model that applies to a sphere combination has a row with a deviation
+    inside its interval's span, one rank-1 model per combination, and a figure per combination."""
+    work, cfg = run
+    table = pd.read_csv(work / "results/models.csv")
+    spheres = [c for c in runs.combinations(cfg) if c["kind"] == "sphere"]
+    assert set(table["model"]) == {"eq16_paper", "eq16_fitted", "greenwood_tripp"}, set(table["model"])
+    assert len(table) == 3 * len(spheres), f"{len(table)} rows for {len(spheres)} sphere combinations"
+    assert (table["max_rel_dev"] >= table["rms_rel_dev"]).all(), "rms deviation above the largest"
+    assert (table.groupby("combination")["rank"].min() == 1).all(), "a combination without a best model"
+    figures = sorted(p.name for p in (work / "results/models").iterdir())
+    assert figures == sorted(f"{runs.combo_name(c)}.png" for c in spheres), figures
+
+
 def _chromium() -> str | None:
     return shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
 
 
 @pytest.mark.skipif(_chromium() is None, reason="no Chromium on this machine (.ci/run installs it)")
-def test_report_shows_the_claims_as_a_table_on_the_page(run):
-    """In headless Chromium the landing page's link opens the claims as an HTML table inside the
-    report (not a download), with one coloured verdict cell per row of claims.csv."""
+@pytest.mark.parametrize("link, table, cell", [
+    ("claims table", "claims.csv", "td.verdict-consistent, td.verdict-differs, td.verdict-untested"),
+    ("model scorecard", "models.csv", "tbody tr"),
+])
+def test_report_shows_its_tables_on_the_page(run, link, table, cell):
+    """In headless Chromium the landing page's link opens the table inside the report (not a
+    download), one row (for the claims: one coloured verdict cell) per row of the CSV."""
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright (the test extra) is not installed")
     work, _ = run
-    rows = len(pd.read_csv(work / "results/claims.csv"))
+    rows = len(pd.read_csv(work / "results" / table))
     with sync_api.sync_playwright() as pw:
         browser = pw.chromium.launch(executable_path=_chromium(), args=["--no-sandbox"])
         try:
             page = browser.new_page()
             page.goto((work / "results/report.html").resolve().as_uri())
-            page.get_by_text("claims table", exact=True).first.click()
+            page.get_by_text(link, exact=True).first.click()
             page.wait_for_function("document.querySelector('iframe') !== null", timeout=20_000)
             frame = page.frame_locator("iframe")
-            cells = frame.locator("td.verdict-consistent, td.verdict-differs, td.verdict-untested")
+            cells = frame.locator(cell)
             cells.first.wait_for(timeout=20_000)
             count = cells.count()
             header = frame.locator("th").all_inner_texts()
         finally:
             browser.close()
-    assert count == rows, f"{count} verdict cells on the page for {rows} rows of claims.csv"
-    assert "verdict" in header, f"the table's header {header} has no verdict column"
+    assert count == rows, f"{count} rows ({cell}) on the page for {rows} rows of {table}"
+    assert header, f"the {table} page has no table header"
 
 
 def test_logs_and_run_provenance(run):

@@ -85,3 +85,40 @@ rule claims:
         cfg=config,
     script:
         "../scripts/claims.py"
+
+
+rule models:
+    input:
+        stiffness=rules.merge.output.stiffness,
+        zeta=rules.fit_zeta.output.csv,
+    output:
+        csv=report(
+            "results/models.csv",
+            caption="../report/models_table.rst",
+            category="Tables",
+            labels={"table": "model scorecard (CSV)"},
+        ),
+        nc="results/models.nc",
+        html=report(
+            "results/models.html",
+            caption="../report/models_page.rst",
+            category="2. Model scorecard",
+            labels={"table": "model scorecard"},
+        ),
+        figures=[
+            report(
+                f"results/models/{name}",
+                caption="../report/models_figure.rst",
+                category="2. Model scorecard",
+                labels={"figure": name.removesuffix(".png")},
+            )
+            for name in scorecard.figure_names(config)
+        ],
+    log:
+        "logs/models.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/models.py"

@@ -1,0 +1,75 @@
+"""The scorecard's deviations against ensembles built from a model itself (closed forms)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+
+from roughcontact.models import paper
+from roughcontact.study import scorecard
+
+CFG = {"grid": {"n": 129, "length": 1.0}, "e_star": 1.0,
+       "fit": {"zeta": {"min_cells": 20, "bootstrap": 200, "confidence": 0.95}}}
+HURST, RADIUS, H_RMS, ZETA = 0.7, 0.5, 9e-3, 1.05
+FORCE = np.geomspace(1e-6, 1e-2, 9)
+
+
+def _groups(scale_per_seed: np.ndarray) -> dict:
+    """A merged sphere group of one combination whose seed s has k = scale[s] × eq. 16 (fitted ζ)."""
+    k16 = paper.stiffness_from_force(FORCE, radius=RADIUS, hurst=HURST, h_rms=H_RMS, length=1.0, e_star=1.0,
+                                     zeta=ZETA)
+    seeds = len(scale_per_seed)
+    k = scale_per_seed[:, None] * k16[None, :]
+    cells = np.where(FORCE >= 1e-5, 100, 5)[None, :].repeat(seeds, 0)   # loads below 1e-5 are not resolved
+    axes = {"hurst": [HURST], "radius": [RADIUS], "exponent": [2.0], "h_rms": [H_RMS], "rolloff": [1.0],
+            "cutoff": [0.0], "hardness": [math.inf]}
+    dims = (*axes, "seed", "force")
+    shape = (1,) * len(axes)
+    ds = xr.Dataset({"stiffness": (dims, k.reshape(shape + k.shape)),
+                     "contact_cells": (dims, cells.reshape(shape + cells.shape))},
+                    coords={**axes, "seed": np.arange(seeds), "force": FORCE})
+    return {"sphere": ds}
+
+
+def _row(table, model):
+    return table[table["model"] == model].iloc[0]
+
+
+def test_a_model_equal_to_the_ensemble_has_no_deviation():
+    table, _ = scorecard.scorecard(_groups(np.ones(4)), pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    row = _row(table, "eq16_fitted")
+    assert row["max_rel_dev"] == pytest.approx(0.0, abs=1e-12), "eq16_fitted against itself"
+    assert row["n_loads"] == int((FORCE >= 1e-5).sum()), "the unresolved loads are left out"
+    assert row["rank"] == 1, "the exact model ranks first"
+
+
+def test_a_uniform_offset_gives_its_relative_deviation():
+    """Every seed 10 % stiffer than eq. 16: |k16/(1.1 k16) − 1| = 1/11 at every load, exactly,
+    and every bootstrap resample has the same mean, so the interval is that point."""
+    table, curves = scorecard.scorecard(_groups(np.full(5, 1.1)), pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    row = _row(table, "eq16_fitted")
+    assert row["max_rel_dev"] == pytest.approx(1 / 11, rel=1e-12), "max deviation of a 10 % offset"
+    assert row["rms_rel_dev"] == pytest.approx(1 / 11, rel=1e-12), "rms deviation of a 10 % offset"
+    assert row["max_rel_dev_ci_low"] == pytest.approx(1 / 11, rel=1e-12), "interval of identical seeds"
+    band = curves["H0.7_R0.5_h0.009"]
+    assert float(np.abs(band["band_high"]).max()) == pytest.approx(0.0, abs=1e-12), "no scatter, no band"
+
+
+def test_the_interval_widens_with_the_scatter_of_the_seeds():
+    rng = np.random.default_rng(3)
+    table, _ = scorecard.scorecard(_groups(1 + 0.1 * rng.standard_normal(20)),
+                                   pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    row = _row(table, "eq16_fitted")
+    assert row["max_rel_dev_ci_low"] <= row["max_rel_dev"] <= row["max_rel_dev_ci_high"], "point inside its interval"
+    assert row["max_rel_dev_ci_high"] - row["max_rel_dev_ci_low"] > 0.01, "20 seeds of 10 % scatter: a real interval"
+
+
+def test_models_that_do_not_apply_have_no_row():
+    groups = _groups(np.ones(3))
+    groups["sphere"] = groups["sphere"].assign_coords(cutoff=[0.05])
+    table, _ = scorecard.scorecard(groups, pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    assert "greenwood_tripp" not in set(table["model"]), "GT on a spectrum with a cutoff"
+    assert {"eq16_paper", "eq16_fitted"} <= set(table["model"]), set(table["model"])

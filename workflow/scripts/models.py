@@ -1,0 +1,8 @@
+"""Snakemake `models` job: stiffness + zeta -> results/models.csv, .nc, .html and one figure per sphere combination."""
+from roughcontact.study.logs import log_to
+from roughcontact.study.scorecard import run_models
+
+snakemake = globals()["snakemake"]
+with log_to(snakemake.log[0]):
+    run_models(snakemake.params.cfg, snakemake.input.stiffness, snakemake.input.zeta, snakemake.output.csv,
+               snakemake.output.nc, snakemake.output.html, list(snakemake.output.figures))
