@@ -224,7 +224,7 @@ def test_array_moments_equal_the_discrete_spectrum(n, hurst):
     (deterministic amplitudes, random phases): equal to round-off, any seed."""
     z = surfaces.self_affine(n, hurst=hurst, h_rms=3e-3, length=2.0, seed=11)
     measured = surfaces.spectral_moments(z, length=2.0)
-    expected = surfaces.self_affine_moments(hurst, 3e-3, n, 2.0)
+    expected = surfaces.self_affine_moments(hurst, h_rms=3e-3, n=n, length=2.0)
     for name in ("m0", "m2", "m4"):
         assert getattr(measured, name) == pytest.approx(getattr(expected, name), rel=1e-10), \
             f"{name} of the array differs from the discrete spectrum"
@@ -245,8 +245,8 @@ def test_moments_of_two_cosines(n):
 
 def test_asperities_scale_with_the_heights():
     """Heights scaled by c: α and η unchanged, β ∝ 1/c, σ_s ∝ c (Nayak's formulas)."""
-    base = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, 1e-3, 65, 1.0))
-    scaled = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, 3e-3, 65, 1.0))
+    base = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, h_rms=1e-3, n=65, length=1.0))
+    scaled = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, h_rms=3e-3, n=65, length=1.0))
     assert scaled.bandwidth == pytest.approx(base.bandwidth, rel=1e-12), "bandwidth"
     assert scaled.density == pytest.approx(base.density, rel=1e-12), "density"
     assert scaled.summit_radius == pytest.approx(base.summit_radius / 3, rel=1e-12), "radius"
@@ -263,7 +263,7 @@ def test_isotropic_bandwidth_minimum_rejected():
 
 def curve(scale, e_star):
     """GT curve of the paper's rough sphere on 128² (μ ≈ 4.0), lengths scaled by ``scale``."""
-    summits = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, 9e-3 * scale, 128, scale))
+    summits = asperities.asperity_parameters(surfaces.self_affine_moments(0.7, h_rms=9e-3 * scale, n=128, length=scale))
     return greenwood_tripp.greenwood_tripp_curve([-1.0, -2.0], radius=0.5 * scale, e_star=e_star,
                                                  asperities=summits, rho_max=8.0, points=160)
 

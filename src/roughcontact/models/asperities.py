@@ -70,7 +70,7 @@ def asperity_parameters(moments: SpectralMoments) -> AsperityParameters:
         bandwidth=bandwidth)
 
 
-def mu_parameter(asperities: AsperityParameters, radius: float) -> float:
+def mu_parameter(asperities: AsperityParameters, *, radius: float) -> float:
     """GT's ``μ = (8/3) η σ √(2Bβ)`` for a sphere of radius ``B = radius``."""
     check_finite_positive("radius", radius)
     return (8.0 / 3.0 * asperities.density * asperities.summit_sigma

@@ -382,7 +382,7 @@ def greenwood_tripp_curve(depths_star, *, radius: float, e_star: float,
     Pohrt & Popov (2013) or a BEM load path.
     """
     check_finite_positive("e_star", e_star)
-    mu = mu_parameter(asperities, radius)
+    mu = mu_parameter(asperities, radius=radius)
     depths = np.atleast_1d(np.asarray(depths_star, dtype=float))
     solutions = [greenwood_tripp(float(d), mu, rho_max=rho_max, points=points) for d in depths]
     return _curve(depths, solutions, radius=radius, e_star=e_star, asperities=asperities)
@@ -390,7 +390,7 @@ def greenwood_tripp_curve(depths_star, *, radius: float, e_star: float,
 
 def _curve(depths, solutions, *, radius, e_star, asperities) -> GreenwoodTrippCurve:
     """GT solutions at ``depths`` (d*) in physical units."""
-    mu, sigma = mu_parameter(asperities, radius), asperities.summit_sigma
+    mu, sigma = mu_parameter(asperities, radius=radius), asperities.summit_sigma
     force_unit = e_star * sigma**1.5 * math.sqrt(radius / 2.0)
     return GreenwoodTrippCurve(
         depth_star=depths,
@@ -415,8 +415,8 @@ def self_affine_sphere_curve(*, hurst: float, h_rms: float, n: int, length: floa
     √(2Bσ), ``points_per_unit`` nodes per unit, keyword-only) until the pressure
     has died out at ``rho_max``; separations whose load spreads beyond
     ``rho_limit`` are left out of the curve."""
-    asperities = asperity_parameters(self_affine_moments(hurst, h_rms, n, length))
-    mu = mu_parameter(asperities, radius)
+    asperities = asperity_parameters(self_affine_moments(hurst, h_rms=h_rms, n=n, length=length))
+    mu = mu_parameter(asperities, radius=radius)
     depths, solutions = [], []
     for depth in np.atleast_1d(np.asarray(depths_star, dtype=float)):
         rho_max = 5.0

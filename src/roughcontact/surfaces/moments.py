@@ -70,7 +70,7 @@ def spectral_moments(heights, *, length: float) -> SpectralMoments:
     return _moments_from_spectrum(wavevectors(n, length), np.abs(spectrum) ** 2)
 
 
-def self_affine_moments(hurst: float, h_rms: float, n: int, length: float) -> SpectralMoments:
+def self_affine_moments(hurst: float, *, h_rms: float, n: int, length: float) -> SpectralMoments:
     """Profile spectral moments of :func:`roughcontact.surfaces.self_affine`, exactly.
 
     That surface has ``|ĥ(q)|² ∝ q^(−2H−2)`` on every grid mode ``q ≠ 0``
