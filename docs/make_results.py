@@ -23,6 +23,8 @@ import xarray as xr
 DOCS = Path(__file__).resolve().parent
 #: the figure shown for each preset (a file of results/figures/, first match)
 FIGURE = {"zeta": ["zeta.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"]}
+SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
+                 "rms_rel_dev", "n_loads"]
 #: Fig. 3 at the paper's setting, the figure of a preset that has it
 PAPER_FIG3 = "fig3_H0.7_R0.5_h0.009.png"
 CLAIM_COLUMNS = ["claim", "statement", "measured", "ci_low", "ci_high", "paper_value", "verdict", "reason", "sweep"]
@@ -94,6 +96,12 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
         _table(claims[[c for c in CLAIM_COLUMNS if c in claims.columns]]),
         "",
     ]
+    if (results / "models.csv").is_file() and (results / "models.csv").stat().st_size > 1:
+        models = pd.read_csv(results / "models.csv").sort_values(["combination", "rank"])
+        lines += ["## Model scorecard", "",
+                  "Largest relative deviation `|k_model/k_BEM - 1|` over the resolved loads of the ensemble "
+                  "mean, with its 95 % bootstrap-over-seeds interval; rank 1 is the best model of its combination.",
+                  "", _table(models[SCORE_COLUMNS]), ""]
     figure = _figure(preset, results)
     if figure is not None:
         target = out_dir / f"{preset}_{figure.name}"
