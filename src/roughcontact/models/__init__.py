@@ -2,11 +2,12 @@
 
 :mod:`.paper` holds the analytic model of Pohrt & Popov (2013), eqs. 7–18 (eq. 15's equivalent
 profile included); :mod:`.greenwood_tripp` the rough sphere of Greenwood & Tripp (1967) on the
-summit statistics of :mod:`.asperities`; :mod:`.mdr` the method of dimensionality reduction.
+summit statistics of :mod:`.asperities`; :mod:`.mdr` the method of dimensionality reduction;
+:mod:`.persson` Persson's theory, flat and (through :mod:`.axisymmetric`) under a sphere.
 Models use the spectra and profiles of :mod:`roughcontact.surfaces` and never the
 boundary-element method.
 """
 
-from . import asperities, greenwood_tripp, mdr, paper
+from . import asperities, axisymmetric, greenwood_tripp, mdr, paper, persson
 
-__all__ = ["asperities", "greenwood_tripp", "mdr", "paper"]
+__all__ = ["asperities", "axisymmetric", "greenwood_tripp", "mdr", "paper", "persson"]

@@ -22,6 +22,8 @@ import numpy as np
 
 from ..models import mdr as mdr_model
 from ..models import paper
+from ..models import persson as persson_model
+from ..surfaces.spectra import self_affine_spectrum
 from ..models.greenwood_tripp import self_affine_sphere_curve
 from . import provenance, runs
 from .statistics import bootstrap_indices, interval
@@ -95,8 +97,22 @@ def mdr(force, c: Combination):
         cutoff=None if c["cutoff"] == 0.0 else c["cutoff"], realizations=MDR_REALIZATIONS, seed=0).stiffness
 
 
+def persson(force, c: Combination):
+    """Persson's interfacial law ū(p) from the grid's own discrete spectrum, acting over the
+    nominal pressure of the paraboloid (an axisymmetric compliant layer in series with the
+    half-space; :func:`roughcontact.models.persson.sphere_stiffness`, ``method="axisymmetric"``,
+    γ = 0.42). Paraboloid only."""
+    if c["exponent"] != 2.0:
+        return None
+    spectrum = self_affine_spectrum(hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"],
+                                    rolloff=None if c["rolloff"] == c["length"] else c["rolloff"],
+                                    cutoff=None if c["cutoff"] == 0.0 else c["cutoff"])
+    return persson_model.sphere_stiffness(force, spectrum, radius=c["radius"], e_star=c["e_star"]).stiffness
+
+
 #: model name -> function ``(force, combination) -> stiffness`` (``None``: does not apply)
-MODELS = {"eq16_paper": eq16_paper, "eq16_fitted": eq16_fitted, "greenwood_tripp": greenwood_tripp, "mdr": mdr}
+MODELS = {"eq16_paper": eq16_paper, "eq16_fitted": eq16_fitted, "greenwood_tripp": greenwood_tripp, "mdr": mdr,
+          "persson": persson}
 
 
 def _combinations(ds, cfg: dict, zeta_of: dict):
@@ -184,7 +200,9 @@ SCORECARD_LEAD = ("Each model predicts the rough sphere's stiffness k(F) from th
                   "deviations; rank 1 is the best model of its combination. eq16_paper: eq. 16 with "
                   "zeta = 1.7/(H+1); eq16_fitted: with the zeta fitted on this study; greenwood_tripp: "
                   "Greenwood & Tripp (1967) on the grid's spectral moments; mdr: the method of dimensionality "
-                  "reduction, 1000 seeded 1D profiles on a Winkler foundation. models.csv holds every digit.")
+                  "reduction, 1000 seeded 1D profiles on a Winkler foundation; persson: Persson's interfacial "
+                  "law from the grid's spectrum as a compliant layer under the paraboloid. models.csv holds "
+                  "every digit.")
 
 
 def _figure(path, label: str, curve, table) -> None:

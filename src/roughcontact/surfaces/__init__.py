@@ -7,7 +7,9 @@ paper), smooth bodies and rough spheres :mod:`.bodies`, spectral moments :mod:`.
 A user's own surface comes in through :mod:`.measured` (an instrument's scan, read with
 SurfaceTopography: the ``measured`` extra), :mod:`.subwindows` (its sub-windows) and :mod:`.psd`
 (a measured power spectrum, e.g. contact.engineering's export, as seeded random-phase
-surfaces).
+surfaces). :mod:`.spectra` is the one representation of an isotropic spectrum that the models
+read (the grid's own modes, an analytic band, or a table); :mod:`.profiles` the 1D profiles of
+the method of dimensionality reduction.
 """
 
 from .bodies import body_of_revolution, paraboloid, radial_distance, rough_sphere
