@@ -118,6 +118,28 @@ class Spectrum:
         """Root-mean-square gradient ``|∇h|``, ``√Σ q² variance`` (dimensionless)."""
         return math.sqrt(self.moment(2))
 
+    def rebinned(self, bins_per_decade: int = 100) -> "Spectrum":
+        """The same spectrum on at most ``bins_per_decade`` logarithmic bins per decade of ``q``.
+
+        Bins of the grid's many high-``q`` shells are merged: their variances and areas add, and
+        the merged wavenumber is ``√(Σ q² variance / Σ variance)`` (areas' mean where the
+        variance is zero), so ``h_rms`` and the rms slope are kept exactly; a bin that holds one
+        shell (the lowest modes of a finite cell) stays as it is. For the models whose cost grows
+        with the number of bins (:mod:`roughcontact.models.persson`).
+        """
+        if isinstance(bins_per_decade, bool) or not isinstance(bins_per_decade, int) or bins_per_decade < 1:
+            raise ValueError(f"bins_per_decade must be a positive integer, got {bins_per_decade!r}")
+        edges = np.floor(np.log10(self.q / self.q0) * bins_per_decade).astype(int)
+        groups, index = np.unique(edges, return_inverse=True)
+        variance = np.bincount(index, weights=self.variance, minlength=groups.size)
+        area = np.bincount(index, weights=self.bin_area, minlength=groups.size)
+        second = np.bincount(index, weights=self.q**2 * self.variance, minlength=groups.size)
+        mean_q = np.bincount(index, weights=self.q * self.bin_area, minlength=groups.size) / area
+        with np.errstate(invalid="ignore", divide="ignore"):
+            q = np.where(variance > 0, np.sqrt(second / np.where(variance > 0, variance, 1.0)), mean_q)
+        return Spectrum(q=q, variance=variance, length=self.length, bin_area=area,
+                        source=f"{self.source}, {bins_per_decade} bins per decade")
+
     def persson_c(self) -> np.ndarray:
         """Persson's ``C(q)`` on the bins, ``variance / bin_area`` (length⁴).
 
