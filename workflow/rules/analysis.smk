@@ -58,12 +58,39 @@ rule crossover:
         "../scripts/crossover.py"
 
 
+rule exponents:
+    input:
+        stiffness=rules.merge.output.stiffness,
+    output:
+        csv=report(
+            "results/exponents.csv",
+            caption="../report/exponents_table.rst",
+            category="Tables",
+            labels={"table": "local exponents"},
+        ),
+        png=report(
+            "results/exponents/local_exponents.png",
+            caption="../report/exponents.rst",
+            category="zeta(H) and collapse",
+            labels={"figure": "local exponents"},
+        ),
+    log:
+        "logs/exponents.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/exponents.py"
+
+
 rule claims:
     input:
         crossover=rules.crossover.output.csv,
         replicates=rules.crossover.output.nc,
         zeta=rules.fit_zeta.output.csv,
         stiffness=rules.merge.output.stiffness,
+        exponents=rules.exponents.output.csv,
     output:
         csv=report(
             "results/claims.csv",

@@ -19,6 +19,7 @@ leaves the unloading and the loading stiffness unchanged).
 """
 from __future__ import annotations
 
+import itertools
 import logging
 import math
 from pathlib import Path
@@ -29,7 +30,7 @@ from . import runs
 from .statistics import interval, verdict, verdict_bound
 from .tables import write_html_table
 
-__all__ = ["claims_table", "run_claims", "EQ16_TOLERANCE", "CLAIMS_LEAD"]
+__all__ = ["claims_table", "run_claims", "prl2012_exponent", "EQ16_TOLERANCE", "CLAIMS_LEAD"]
 
 log = logging.getLogger(__name__)
 
@@ -89,7 +90,7 @@ def _is_paper_setting(frame, length):
     return frame[keep]
 
 
-def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None):
+def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, exponents=None):
     """``claims.csv``: one row per quantitative claim of the paper (and per
     combination it is tested on), with the measured value, its 95 % interval,
     the paper's value, the verdict and the sweep and loads it rests on."""
@@ -169,6 +170,8 @@ def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None):
         from .effects import effect_claims
 
         rows += [_claim(**row) for row in effect_claims(groups["sphere"], cross, cfg)]
+    if exponents is not None:
+        rows += _exponent_claims(exponents, zeta_df, cfg)
     return pd.DataFrame(rows).sort_values("claim", kind="stable", ignore_index=True)
 
 
@@ -240,6 +243,62 @@ def _lambda_claims(cross, cfg):
     return rows
 
 
+def prl2012_exponent(hurst: float) -> float:
+    """The free stiffness exponent of nominally flat fractal surfaces of Pohrt & Popov, Phys. Rev.
+    Lett. 108, 104301 (2012), doi 10.1103/PhysRevLett.108.104301: 0.77 at fractal dimension
+    D = 3 (H → 0) and 0.51 at D = 2 (H = 1), interpolated linearly in H = 3 − D."""
+    return 0.77 - 0.26 * hurst
+
+
+def _exponent_claims(exponents, zeta_df, cfg) -> list[dict]:
+    """Claims (l) and (m) from the local exponents (:mod:`.exponents`) and the ζ fit.
+
+    (l) With a roll-off below the system size, ``K ∝ p`` over a range of pressures (Pastewka et
+    al., Phys. Rev. E 87, 062809 (2013)): per H and roll-off ``λ_r < L``, the largest local
+    exponent of the flat runs with its interval; consistent when the interval of some load
+    contains 1 (the number of such loads is the reason). (m) The free exponent of the flat runs
+    at the paper's setting (``zeta.csv``) against :func:`prl2012_exponent`.
+    """
+    L = cfg["grid"]["length"]
+    n, seeds = cfg["grid"]["n"], len(cfg["seeds"])
+    flat_swept = any(not math.isfinite(r) for r in cfg["radius"])
+    rolled = sorted(r for r in cfg["rolloff"] if r is not None and r < L)
+    statement = "with a roll-off lambda_r < L, K ~ p (local exponent 1) over a range of loads (Pastewka et al. 2013)"
+    rows = []
+    if not (flat_swept and rolled):
+        why = "no flat runs" if not flat_swept else "no roll-off below L swept"
+        rows.append(_claim("l", statement, math.nan, math.nan, math.nan, 1.0, f"untested: {why}"))
+    for hurst, rolloff in itertools.product(cfg["hurst"], rolled if flat_swept else []):
+        sub = exponents[(exponents["kind"] == "flat") & (exponents["hurst"] == hurst)
+                        & (exponents["rolloff"] == rolloff)] if len(exponents) else exponents
+        sweep = f"flat H = {hurst:g}, rolloff = {rolloff:g} L, {seeds} seeds, n = {n}"
+        if not len(sub):
+            rows.append(_claim("l", statement, math.nan, math.nan, math.nan, 1.0,
+                               "untested: no load with a resolved window", sweep=sweep, hurst=hurst, rolloff=rolloff))
+            continue
+        top = sub.loc[sub["local_exponent"].idxmax()]
+        covered = int(((sub["ci_low"] <= 1.0) & (sub["ci_high"] >= 1.0)).sum())
+        text = (f"consistent: the interval contains 1 at {covered} of {len(sub)} loads" if covered
+                else verdict(1.0, top["ci_low"], top["ci_high"]))
+        rows.append(_claim("l", statement, float(top["local_exponent"]), float(top["ci_low"]), float(top["ci_high"]), 1.0,
+                           text, sweep=sweep, hurst=hurst, rolloff=rolloff,
+                           loads=f"{len(sub)} loads with a resolved window, F/(E*L^2) = {sub['force'].min():.3g}..."
+                                 f"{sub['force'].max():.3g}; the largest exponent at {top['force']:.3g}",
+                           note="measured: the largest local exponent d ln k/d ln F (exponents.csv)"))
+    statement = ("free stiffness exponent of flat surfaces 0.77 (H -> 0) to 0.51 (H = 1), linear in H "
+                 "(Pohrt & Popov, PRL 2012)")
+    flat = zeta_df[zeta_df["source"].astype(str).str.startswith("flat")] if len(zeta_df) else zeta_df
+    if not len(flat):
+        rows.append(_claim("m", statement, math.nan, math.nan, math.nan, math.nan, "untested: no flat runs"))
+    for _, z in flat.iterrows():
+        value = prl2012_exponent(z["hurst"])
+        rows.append(_claim("m", statement, z["exponent"], z["exponent_ci_low"], z["exponent_ci_high"], value,
+                           verdict(value, z["exponent_ci_low"], z["exponent_ci_high"]), hurst=z["hurst"],
+                           sweep=f"flat H = {z['hurst']:g}, {int(z['n_seeds'])} seeds, n = {n}", loads=z["window"],
+                           note="measured: the free exponent of the zeta fit (zeta.csv)"))
+    return rows
+
+
 #: the lead paragraph of the claims page of the report
 CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
                "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
@@ -248,7 +307,7 @@ CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per s
                "cannot decide it; the reason says why). claims.csv holds every digit.")
 
 
-def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, stiffness_nc, out_csv, out_html):
+def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, stiffness_nc, exponents_csv, out_csv, out_html):
     """``claims`` rule: crossover.csv, its replicates, zeta.csv and the runs -> claims.csv and
     the same table as an HTML page for the report (:mod:`roughcontact.study.tables`)."""
     import pandas as pd
@@ -258,7 +317,8 @@ def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, stiffness_nc, out_csv
 
     cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
     with xr.open_dataset(crossover_nc, engine="netcdf4") as reps:
-        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, read_groups(stiffness_nc))
+        exponents = pd.read_csv(exponents_csv) if Path(exponents_csv).stat().st_size > 1 else pd.DataFrame()
+        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, read_groups(stiffness_nc), exponents)
     write_csv(table, out_csv)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
                      first=("claim", "statement", "verdict", "measured", "ci_low", "ci_high", "paper_value", "reason"))
