@@ -134,12 +134,12 @@ rule models:
         ),
         figures=[
             report(
-                f"results/models/{name}",
+                f"results/models/{name}.png",
                 caption="../report/models_figure.rst",
                 category="2. Model scorecard",
-                labels={"figure": name.removesuffix(".png")},
+                labels={"figure": name},
             )
-            for name in scorecard.figure_names(config)
+            for name in study_runs.sphere_names(config)
         ],
     log:
         "logs/models.log",

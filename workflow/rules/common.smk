@@ -18,7 +18,6 @@ from roughcontact.study import (
     config as rc_config,
     runs as study_runs,
     schema,
-    scorecard,
     settings as study_settings,
 )  # noqa: E402
 

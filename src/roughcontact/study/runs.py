@@ -26,6 +26,7 @@ __all__ = [
     "force_grid",
     "parse_run_path",
     "combo_name",
+    "sphere_names",
     "parse_combo",
     "AXES",
     "kind_of",
@@ -119,6 +120,11 @@ def parse_combo(name: str) -> dict:
         text = match.group(axis)
         out[axis] = default if text is None else parse_value(text)
     return out
+
+
+def sphere_names(cfg: dict) -> list[str]:
+    """:func:`combo_name` of every sphere combination of the resolved config *cfg*, in sweep order."""
+    return [combo_name(c) for c in combinations(cfg) if c["kind"] == "sphere"]
 
 
 def run_path(run: dict, pattern: str) -> str:

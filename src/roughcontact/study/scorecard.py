@@ -29,7 +29,7 @@ from . import provenance, runs
 from .statistics import bootstrap_indices, interval
 from .tables import write_html_table
 
-__all__ = ["MODELS", "Combination", "scorecard", "figure_names", "run_models"]
+__all__ = ["MODELS", "Combination", "scorecard", "run_models"]
 
 log = logging.getLogger(__name__)
 
@@ -139,11 +139,6 @@ def combo_label(c: Combination) -> str:
     return runs.combo_name(run)
 
 
-def figure_names(cfg: dict) -> list[str]:
-    """The scorecard figure of every sphere combination, ``<run name>.png``, in sweep order."""
-    return [f"{runs.combo_name(c)}.png" for c in runs.combinations(cfg) if c["kind"] == "sphere"]
-
-
 def scorecard(groups: dict, zeta_df, cfg: dict):
     """``models.csv`` as a DataFrame (one row per model and sphere combination), and a Dataset of
     the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band."""
@@ -237,7 +232,8 @@ def _figure(path, label: str, curve, table) -> None:
 
 def run_models(cfg, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures):
     """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
-    per combination) and one figure per sphere combination (*figures*, in :func:`figure_names` order)."""
+    per combination) and one figure per sphere combination (*figures*, in the order of
+    :func:`roughcontact.study.runs.sphere_names`)."""
     import pandas as pd
 
     from .merge import read_groups, write_csv, write_groups
@@ -250,11 +246,10 @@ def run_models(cfg, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures):
     write_html_table(table, out_html, title="Model scorecard", lead=SCORECARD_LEAD, verdict_columns=(),
                      first=("combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low",
                             "max_rel_dev_ci_high", "rms_rel_dev", "n_loads"))
-    names = figure_names(cfg)
+    names = runs.sphere_names(cfg)
     if len(names) != len(figures):
         raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
-    for name, path in zip(names, figures):
-        label = name.removesuffix(".png")
+    for label, path in zip(names, figures):
         if label not in curves:
             raise ValueError(f"no sphere combination {label} in {stiffness_nc} for the figure {path}")
         _figure(path, label, curves[label], table)
