@@ -22,7 +22,7 @@ import xarray as xr
 
 DOCS = Path(__file__).resolve().parent
 #: the figure shown for each preset (a file of results/figures/, first match)
-FIGURE = {"zeta": ["zeta.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"]}
+FIGURE = {"zeta": ["zeta.png"], "finite-size": ["../exponents/local_exponents.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"]}
 SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
                  "rms_rel_dev", "n_loads"]
 #: Fig. 3 at the paper's setting, the figure of a preset that has it
@@ -63,6 +63,10 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
     with xr.open_dataset(results / "zeta.nc") as zeta_ds:
         attrs = dict(zeta_ds.attrs)
     config = json.loads(attrs["config"])
+    later = {}
+    if (results / "models.nc").is_file():  # the analysis may be newer than the runs
+        with xr.open_datatree(results / "models.nc") as tree:
+            later = dict(tree.attrs)
     zeta = pd.read_csv(results / "zeta.csv")
     claims = pd.read_csv(results / "claims.csv")
     out_dir = DOCS / "results" / "presets"
@@ -78,8 +82,9 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
         "| | |",
         "|---|---|",
         f"| command | `snakemake --cores 2 --configfile {cfgfile}` |",
-        f"| git commit | `{attrs.get('git_commit', 'unknown')}` |",
-        f"| date (UTC) | {attrs.get('created_utc', 'unknown')} |",
+        f"| git commit (runs, ζ) | `{attrs.get('git_commit', 'unknown')}`, {attrs.get('created_utc', 'unknown')} |",
+        *([f"| git commit (scorecard, claims) | `{later['git_commit']}`, {later['created_utc']} |"]
+          if later and later.get("git_commit") != attrs.get("git_commit") else []),
         f"| machine | {_machine()} |",
         f"| runs | {runs} indentation jobs on {config['grid']['n']}² |",
         *([f"| wall time | {wall / 60:.1f} min (run, merge, analysis and report; other work on the machine) |"]

@@ -88,3 +88,12 @@ def test_claim_m_compares_the_free_exponent_with_the_prl_law():
     row = _claim(claims._exponent_claims(pd.DataFrame(), ZETA, _cfg([None])), "m")
     assert row["paper_value"] == pytest.approx(0.562, abs=1e-12), "PRL 2012 interpolated at H = 0.8"
     assert row["verdict"] == "consistent", row
+
+
+def test_the_figure_draws_flat_surfaces_that_have_no_radius():
+    """Flat rows carry NaN radius and body exponent; every (H, roll-off) is still a curve."""
+    flat = pd.concat([_table([0.6, 0.7], 0.05).assign(radius=np.nan, exponent=np.nan, rolloff=r)
+                      for r in (0.25, 1.0)])
+    drawn = exponents.curves(flat, "flat")
+    assert len(drawn) == 2, f"{len(drawn)} curves for two roll-offs"
+    assert all("rolloff" in label for label, _ in drawn), [label for label, _ in drawn]

@@ -20,7 +20,7 @@ import numpy as np
 from . import provenance
 from .statistics import bootstrap_indices, interval
 
-__all__ = ["local_exponents", "exponent_table", "run_exponents"]
+__all__ = ["local_exponents", "exponent_table", "curves", "run_exponents"]
 
 log = logging.getLogger(__name__)
 
@@ -103,6 +103,15 @@ def run_exponents(cfg, stiffness_nc, out_csv, out_png):
     log.info("local exponents: %d rows", len(table))
 
 
+def curves(table, kind: str) -> list:
+    """``(label, rows)`` of every combination of one surface kind in *table*, for the figure; the
+    label names H and the axes that vary (a flat surface has no radius and no body exponent)."""
+    sub = table[table["kind"] == kind].dropna(axis=1, how="all")
+    keys = [c for c in sub.columns if c not in ("kind", "force", "local_exponent", "ci_low", "ci_high")]
+    return [(", ".join(f"{k} {v:g}" for k, v in zip(keys, values) if sub[k].nunique() > 1 or k == "hurst"), rows)
+            for values, rows in sub.groupby(keys, sort=True)]
+
+
 def _figure(table, cfg, path) -> None:
     import matplotlib
 
@@ -112,14 +121,10 @@ def _figure(table, cfg, path) -> None:
     kinds = sorted(set(table["kind"])) if len(table) else []
     fig, axes = plt.subplots(1, max(1, len(kinds)), figsize=(5.5 * max(1, len(kinds)), 4), squeeze=False)
     for ax, kind in zip(axes[0], kinds):
-        sub = table[table["kind"] == kind]
-        keys = [c for c in sub.columns if c not in ("kind", "force", "local_exponent", "ci_low", "ci_high")]
-        for values, curve in sub.groupby(keys, sort=True):
-            label = ", ".join(f"{k} {v:g}" for k, v in zip(keys, values)
-                              if sub[k].nunique() > 1 or k == "hurst")
+        for label, curve in curves(table, kind):
             line = ax.semilogx(curve["force"], curve["local_exponent"], "o-", ms=3, label=label)[0]
             ax.fill_between(curve["force"], curve["ci_low"], curve["ci_high"], color=line.get_color(), alpha=0.2)
-        for hurst in sorted(set(sub["hurst"])):
+        for hurst in sorted(set(table.loc[table["kind"] == kind, "hurst"])):
             ax.axhline(1 / (hurst + 1), ls=":", color="0.5", lw=0.8)
         ax.axhline(1.0, ls="--", color="0.3", lw=0.8)
         ax.set(xlabel="F / (E* L²)", ylabel="d ln k / d ln F", title=f"{kind}: local exponents (95 % band)")
