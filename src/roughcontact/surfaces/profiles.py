@@ -19,6 +19,7 @@ import numbers
 import numpy as np
 
 from .._validate import check_finite_positive, check_grid_size, check_hurst
+from .roughness import band
 
 __all__ = ["coordinates", "iter_profile_blocks", "profile_1d", "profile_ensemble", "profile_variance_ratio"]
 
@@ -32,19 +33,7 @@ def _check_spectrum(n, hurst, length, rolloff, cutoff):
     check_grid_size(n)
     check_hurst(hurst)
     check_finite_positive("length", length)
-    if rolloff is not None:
-        check_finite_positive("rolloff", rolloff)
-        if rolloff > length:
-            raise ValueError(f"rolloff must be a wavelength with 0 < rolloff <= length = "
-                             f"{length!r}, got {rolloff!r}")
-    if cutoff is not None:
-        check_finite_positive("cutoff", cutoff)
-        upper = length if rolloff is None else rolloff
-        if not 2.0 * length / n <= cutoff < upper:
-            raise ValueError(f"cutoff must be a wavelength with 2*length/n = {2.0 * length / n!r}"
-                             f" <= cutoff < {upper!r} (rolloff, else length), got {cutoff!r}")
-    return (None if rolloff is None else 2.0 * np.pi / rolloff,
-            None if cutoff is None else 2.0 * np.pi / cutoff)
+    return band(length, rolloff=rolloff, cutoff=cutoff, n=n)
 
 
 def _shape(q, hurst, q_r, q_c):

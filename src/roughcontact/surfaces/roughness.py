@@ -23,7 +23,7 @@ import numpy as np
 
 from .._validate import check_finite_positive, check_grid_size, check_hurst
 
-__all__ = ["wavevectors", "self_affine", "row_blocks"]
+__all__ = ["wavevectors", "band", "self_affine", "row_blocks"]
 
 
 
@@ -49,8 +49,13 @@ def row_blocks(stop: int, n: int, start: int = 0):
     return [slice(i, min(i + step, stop)) for i in range(start, stop, step)]
 
 
-def _band(n: int, length: float, rolloff, cutoff) -> tuple[float | None, float | None]:
-    """Validated roll-off and cutoff wavenumbers ``(q_r, q_c)``; ``None`` where not given."""
+def band(length: float, *, rolloff=None, cutoff=None, n: int | None = None) -> tuple[float | None, float | None]:
+    """Validated roll-off and cutoff wavelengths as wavenumbers ``(q_r, q_c) = (2π/λ_r, 2π/λ_c)``.
+
+    ``0 < rolloff ≤ length`` and ``2·length/n ≤ cutoff < rolloff`` (else ``< length``; without
+    ``n`` the lower bound is 0); ``None`` where not given. The one check of every function
+    that takes a roll-off or a cutoff.
+    """
     if rolloff is not None:
         check_finite_positive("rolloff", rolloff)
         if rolloff > length:
@@ -59,8 +64,9 @@ def _band(n: int, length: float, rolloff, cutoff) -> tuple[float | None, float |
     if cutoff is not None:
         check_finite_positive("cutoff", cutoff)
         upper = length if rolloff is None else rolloff
-        if not 2.0 * length / n <= cutoff < upper:
-            raise ValueError(f"cutoff must be a wavelength with 2*length/n = {2.0 * length / n!r}"
+        lower, lower_name = (0.0, "0") if n is None else (2.0 * length / n, "2*length/n")
+        if not lower <= cutoff < upper:
+            raise ValueError(f"cutoff must be a wavelength with {lower_name} = {lower!r}"
                              f" <= cutoff < {'rolloff' if rolloff is not None else 'length'}"
                              f" = {upper!r}, got {cutoff!r}")
     return (None if rolloff is None else 2.0 * np.pi / rolloff,
@@ -179,7 +185,7 @@ def self_affine(n: int, *, hurst: float, h_rms: float, length: float = 1.0,
     check_finite_positive("length", length)
     if seed is not None and not isinstance(seed, numbers.Integral):
         raise ValueError(f"seed must be an integer or None, got {seed!r}")
-    q_r, q_c = _band(n, length, rolloff, cutoff)
+    q_r, q_c = band(length, rolloff=rolloff, cutoff=cutoff, n=n)
     spectrum = _spectrum(n, length, hurst, seed, q_r, q_c)
     _ifft2_in_place(spectrum)
     heights = spectrum.real

@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from .._validate import check_finite_positive, check_grid_size, check_hurst
-from .roughness import wavevectors
+from .roughness import band, wavevectors
 
 __all__ = ["Spectrum", "from_heights", "from_psd", "self_affine_spectrum"]
 
@@ -219,24 +219,6 @@ def from_heights(heights, *, length: float) -> Spectrum:
     return _shell_spectrum(power, n, length, f"heights {n}x{n}")
 
 
-def _band(length: float, rolloff, cutoff, n=None):
-    """Validated ``(q_r, q_c)`` from the roll-off and cutoff wavelengths (``None`` if absent)."""
-    if rolloff is not None:
-        check_finite_positive("rolloff", rolloff)
-        if rolloff > length:
-            raise ValueError(f"rolloff must be a wavelength <= length = {length!r}, "
-                             f"got {rolloff!r}")
-    if cutoff is not None:
-        check_finite_positive("cutoff", cutoff)
-        upper = length if rolloff is None else rolloff
-        lower = 0.0 if n is None else 2.0 * length / n
-        if not lower <= cutoff < upper:
-            raise ValueError(f"cutoff must be a wavelength with {lower!r} <= cutoff < {upper!r},"
-                             f" got {cutoff!r}")
-    return (None if rolloff is None else 2.0 * np.pi / rolloff,
-            None if cutoff is None else 2.0 * np.pi / cutoff)
-
-
 def _power_integral(exponent: float, lower, upper):
     """``∫_lower^upper q^exponent dq`` (elementwise)."""
     if abs(exponent + 1.0) < 1e-12:
@@ -293,7 +275,7 @@ def self_affine_spectrum(*, hurst: float, h_rms: float, length: float, n: int | 
     check_finite_positive("length", length)
     if n is not None:
         check_grid_size(n)
-        q_r, q_c = _band(length, rolloff, cutoff, n)
+        q_r, q_c = band(length, rolloff=rolloff, cutoff=cutoff, n=n)
         q = wavevectors(n, length)
         power = np.zeros_like(q)
         nonzero = q > 0
@@ -310,7 +292,7 @@ def self_affine_spectrum(*, hurst: float, h_rms: float, length: float, n: int | 
     if isinstance(points_per_decade, bool) or not isinstance(points_per_decade, int) \
             or points_per_decade < 1:
         raise ValueError(f"points_per_decade must be an integer >= 1, got {points_per_decade!r}")
-    q_r, q_c = _band(length, rolloff, cutoff)
+    q_r, q_c = band(length, rolloff=rolloff, cutoff=cutoff)
     q0 = 2.0 * np.pi / length
     segments = [(q0, q_c)] if q_r is None or q_r <= q0 * (1 + _SLACK) else [(q0, q_r), (q_r, q_c)]
     lower, upper, plateau = [], [], []

@@ -1,0 +1,91 @@
+"""Grid convergence of one sphere combination run on several grids at the same loads.
+
+Each study directory holds a finished run of the same sphere (H, R, h_rms, L, E*) and force
+grid on a different ``n`` (``presets/convergence-*.yaml``, ``presets/paper-fine.yaml``).
+:func:`summary` collects, per grid, the quantities the verdicts rest on (ζ fitted from the
+sphere's fractal branch, eq. 16's ζ from the prefactor B, F_tr, the low-force slope, each with
+its 95 % bootstrap-over-seeds interval) and the cost of one indent job (Snakemake's
+benchmark files: wall seconds and peak resident memory). :func:`stiffness_ratios` compares
+the ensemble-mean stiffness of every grid with that of the finest grid at each common load,
+``k_n(F)/k_finest(F) − 1``, with a percentile interval from resampling the seeds of both
+grids independently (the surfaces of different grids are independent realisations). Forces
+are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .merge import read_groups
+from .statistics import BOOTSTRAP_SEED, interval
+
+__all__ = ["summary", "stiffness_ratios"]
+
+def _sphere(study: Path):
+    """The sphere group of *study*'s stiffness.nc, its axes of length one dropped, and the grid n."""
+    import xarray as xr
+
+    path = study / "results" / "stiffness.nc"
+    with xr.open_datatree(path, engine="netcdf4") as tree:
+        n = int(tree.attrs["grid_n"])
+    ds = read_groups(path)["sphere"]
+    axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
+    if any(ds.sizes[a] != 1 for a in axes):
+        raise ValueError(f"{study}: a convergence study holds one sphere combination, got axes {axes}")
+    return ds.isel({a: 0 for a in axes}).transpose("seed", "force"), n
+
+
+def summary(studies):
+    """One row per study (sorted by n): grid, seeds, the fitted quantities with their
+    intervals, the ζ fit window and the median wall time and largest peak memory of a job."""
+    import pandas as pd
+
+    rows = []
+    for study in map(Path, studies):
+        results = study / "results"
+        zeta = pd.read_csv(results / "zeta.csv").iloc[0]
+        cross = pd.read_csv(results / "crossover.csv").iloc[0]
+        ds, n = _sphere(study)
+        row = {"n": n, "seeds": ds.sizes["seed"]}
+        for name, table, ci in (("zeta", zeta, "zeta"), ("zeta_sphere", cross, "zeta_sphere"),
+                                ("Ftr_measured", cross, "Ftr"), ("slope_low", cross, "slope_low")):
+            row.update({name: table[name], f"{name}_ci_low": table[f"{ci}_ci_low"],
+                        f"{name}_ci_high": table[f"{ci}_ci_high"]})
+        row.update(zeta_window_force_min=zeta["force_min"], zeta_window_force_max=zeta["force_max"],
+                   zeta_window_points=int(zeta["n_points"]))
+        bench = [pd.read_csv(p, sep="\t").iloc[0] for p in sorted((results / "benchmarks" / "indent").glob("*.tsv"))]
+        row.update(job_wall_s_median=float(np.median([b["s"] for b in bench])) if bench else math.nan,
+                   job_peak_rss_mb_max=float(max(b["max_rss"] for b in bench)) if bench else math.nan)
+        row["study"] = study.name
+        rows.append(row)
+    return pd.DataFrame(rows).sort_values("n", ignore_index=True)
+
+
+def stiffness_ratios(studies, *, resamples: int = 1000, level: float = 0.95):
+    """``k_n/k_finest − 1`` of the ensemble means at every load a study shares with the finest
+    one, with its interval and the mean contact cells (module docstring); one row per (n, F)."""
+    import pandas as pd
+
+    data = {}
+    for study in map(Path, studies):
+        ds, n = _sphere(study)
+        data[n] = ds
+    finest = max(data)
+    rng = np.random.default_rng(BOOTSTRAP_SEED)
+    ref = data[finest]
+    rows = []
+    for n, ds in sorted(data.items()):
+        forces = np.intersect1d(np.round(ds["force"].values, 15), np.round(ref["force"].values, 15))
+        for force in forces:
+            k = ds["stiffness"].sel(force=force, method="nearest").values
+            k_ref = ref["stiffness"].sel(force=force, method="nearest").values
+            cells = float(ds["contact_cells"].sel(force=force, method="nearest").values.mean())
+            boot = (k[rng.integers(0, k.size, (resamples, k.size))].mean(1)
+                    / k_ref[rng.integers(0, k_ref.size, (resamples, k_ref.size))].mean(1) - 1)
+            low, high = interval(boot, level)
+            rows.append({"n": n, "force": float(force), "k_mean": float(k.mean()),
+                         "ratio_to_finest_minus_1": float(k.mean() / k_ref.mean() - 1),
+                         "ci_low": low, "ci_high": high, "contact_cells": cells, "finest_n": finest})
+    return pd.DataFrame(rows)

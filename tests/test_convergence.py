@@ -1,0 +1,52 @@
+"""Grid convergence tables (study.convergence) on synthetic studies with a known stiffness ratio."""
+import numpy as np
+import pytest
+import xarray as xr
+
+from roughcontact.study import convergence
+from roughcontact.study.merge import write_groups
+
+FORCES = np.array([1e-6, 1e-5, 1e-4])
+
+
+def _study(root, n, scale, seeds):
+    """A study directory whose sphere stiffness is scale · F^(1/3) times a per-seed factor
+    that averages to exactly 1 (so the ensemble-mean ratio of two studies is the ratio of scales)."""
+    factor = 1 + 0.2 * np.linspace(-1, 1, seeds)
+    k = scale * factor[:, None] * FORCES[None, :] ** (1 / 3)
+    shape = ("hurst", "radius", "seed", "force")
+    ds = xr.Dataset({"stiffness": (shape, k[None, None]),
+                     "contact_cells": (shape, np.full((1, 1, seeds, FORCES.size), 50))},
+                    coords={"hurst": [0.7], "radius": [0.5], "seed": np.arange(seeds), "force": FORCES})
+    (root / f"n{n}" / "results").mkdir(parents=True)
+    write_groups(root / f"n{n}" / "results" / "stiffness.nc", {"sphere": ds}, {"grid_n": n})
+    return root / f"n{n}"
+
+
+def test_ratio_to_finest_is_the_ratio_of_scales(tmp_path):
+    studies = [_study(tmp_path, 257, 1.1, 5), _study(tmp_path, 1025, 1.0, 8)]
+    table = convergence.stiffness_ratios(studies, resamples=200)
+    coarse = table[table["n"] == 257]["ratio_to_finest_minus_1"].to_numpy()
+    assert coarse == pytest.approx(0.1, abs=1e-12), "ensemble means 1.1 and 1.0 at every load"
+
+
+def test_finest_against_itself_is_zero(tmp_path):
+    studies = [_study(tmp_path, 257, 1.1, 5), _study(tmp_path, 1025, 1.0, 8)]
+    table = convergence.stiffness_ratios(studies, resamples=200)
+    assert table[table["n"] == 1025]["ratio_to_finest_minus_1"].abs().max() == pytest.approx(0.0, abs=1e-12)
+
+
+def test_interval_holds_the_ratio(tmp_path):
+    studies = [_study(tmp_path, 257, 1.1, 5), _study(tmp_path, 1025, 1.0, 8)]
+    row = convergence.stiffness_ratios(studies, resamples=400).iloc[0]
+    assert row["ci_low"] <= 0.1 <= row["ci_high"], f"interval {row['ci_low']}..{row['ci_high']}"
+
+
+def test_two_combinations_rejected(tmp_path):
+    study = _study(tmp_path, 257, 1.0, 3)
+    path = study / "results" / "stiffness.nc"
+    ds = xr.open_datatree(path)["sphere"].to_dataset().load()
+    two = xr.concat([ds, ds.assign_coords(hurst=[0.3])], dim="hurst")
+    write_groups(path, {"sphere": two}, {"grid_n": 257})
+    with pytest.raises(ValueError, match="one sphere combination"):
+        convergence.stiffness_ratios([study])
