@@ -53,7 +53,7 @@ def compute_run(s: JobSettings, progress=None) -> dict:
                 s.force_from, s.force_to, s.tol, s.stiffness_method)
     path = bem.iter_load_path(z, forces, length=L, e_star=E, periodic=s.periodic, tol=s.tol, maxiter=s.maxiter,
                               hardness=s.hardness)
-    i = 0
+    i = 0  # the load being solved: the generator raises while solving load i
     clock = time.perf_counter()
     try:
         for i, state in enumerate(path):
@@ -66,11 +66,13 @@ def compute_run(s: JobSettings, progress=None) -> dict:
             logger.info(text)
             if progress is not None:
                 progress(i + 1, total, text)
+            i += 1  # the next load (enumerate sets it again when its state is solved)
     except DomainTooSmallError as exc:
         fnorm = forces[i] / (E * L**2)
+        last = f"{forces[i - 1] / (E * L**2):.3g}" if i else "the first load"
         raise IndentError(
             f"indent {s.describe()}: the contact reached the edge of the free-space grid at load step "
-            f"{i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}); lower forces.sphere.to below {fnorm:.3g} "
+            f"{i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}); lower forces.sphere.to to {last} or below "
             f"or use more cells (grid.n) on a larger grid.length"
         ) from exc
     return out
@@ -107,7 +109,19 @@ def _record(s: JobSettings, out: dict, i: int, state, cell: float) -> None:
     out["iterations"][i] = state.iterations
     out["converged"][i] = int(bool(state.converged))
     if "loading_stiffness" in out:  # with a hardness: the loading tangent along the plastic path too
-        out["loading_stiffness"][i] = bem.stiffness(state, method="loading", rel_step=s.rel_step)
+        try:
+            loading = bem.stiffness(state, method="loading", rel_step=s.rel_step)
+        except (ConvergenceError, ValueError) as exc:
+            raise IndentError(
+                f"indent {s.describe()}: the loading stiffness failed at load step {i + 1}/{total} "
+                f"(F/(E*L^2) = {fnorm:.3g}): {exc}; use more cells (grid.n) or a smaller load (forces.{s.kind}.to)"
+            ) from exc
+        if not (np.isfinite(loading) and loading > 0):
+            raise IndentError(
+                f"indent {s.describe()}: non-positive loading stiffness {loading!r} at load step {i + 1}/{total} "
+                f"(F/(E*L^2) = {fnorm:.3g}); raise forces.{s.kind}.from or grid.n"
+            )
+        out["loading_stiffness"][i] = loading
         out["plastic_cells"][i] = int(np.count_nonzero(state.plastic))
 
 
