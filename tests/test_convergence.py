@@ -18,7 +18,7 @@ def _study(root, n, scale, seeds):
     ds = xr.Dataset({"stiffness": (shape, k[None, None]),
                      "contact_cells": (shape, np.full((1, 1, seeds, FORCES.size), 50))},
                     coords={"hurst": [0.7], "radius": [0.5], "seed": np.arange(seeds), "force": FORCES})
-    (root / f"n{n}" / "results").mkdir(parents=True)
+    (root / f"n{n}" / "results").mkdir(parents=True)  # parents: the "a"/"b" roots of one test
     write_groups(root / f"n{n}" / "results" / "stiffness.nc", {"sphere": ds}, {"grid_n": n})
     return root / f"n{n}"
 
@@ -30,10 +30,16 @@ def test_ratio_to_finest_is_the_ratio_of_scales(tmp_path):
     assert coarse == pytest.approx(0.1, abs=1e-12), "ensemble means 1.1 and 1.0 at every load"
 
 
-def test_finest_against_itself_is_zero(tmp_path):
+def test_finest_grid_has_no_rows(tmp_path):
     studies = [_study(tmp_path, 257, 1.1, 5), _study(tmp_path, 1025, 1.0, 8)]
     table = convergence.stiffness_ratios(studies, resamples=200)
-    assert table[table["n"] == 1025]["ratio_to_finest_minus_1"].abs().max() == pytest.approx(0.0, abs=1e-12)
+    assert set(table["n"]) == {257}, "the finest grid is the reference, not compared with itself"
+
+
+def test_two_studies_on_one_grid_rejected(tmp_path):
+    studies = [_study(tmp_path / "a", 257, 1.1, 5), _study(tmp_path / "b", 257, 1.0, 8)]
+    with pytest.raises(ValueError, match="two studies on 257"):
+        convergence.stiffness_ratios(studies)
 
 
 def test_interval_holds_the_ratio(tmp_path):
@@ -49,4 +55,4 @@ def test_two_combinations_rejected(tmp_path):
     two = xr.concat([ds, ds.assign_coords(hurst=[0.3])], dim="hurst")
     write_groups(path, {"sphere": two}, {"grid_n": 257})
     with pytest.raises(ValueError, match="one sphere combination"):
-        convergence.stiffness_ratios([study])
+        convergence.stiffness_ratios([study, _study(tmp_path, 513, 1.0, 3)])

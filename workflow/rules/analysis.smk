@@ -89,6 +89,7 @@ rule claims:
         crossover=rules.crossover.output.csv,
         replicates=rules.crossover.output.nc,
         zeta=rules.fit_zeta.output.csv,
+        zeta_replicates=rules.fit_zeta.output.nc,
         stiffness=rules.merge.output.stiffness,
         exponents=rules.exponents.output.csv,
     output:

@@ -5,5 +5,5 @@ from roughcontact.study.logs import log_to
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
     run_claims(snakemake.params.cfg, snakemake.input.crossover, snakemake.input.replicates, snakemake.input.zeta,
-               snakemake.input.stiffness, snakemake.input.exponents, snakemake.output.csv,
-               snakemake.output.html)
+               snakemake.input.zeta_replicates, snakemake.input.stiffness, snakemake.input.exponents,
+               snakemake.output.csv, snakemake.output.html)

@@ -90,7 +90,8 @@ def _is_paper_setting(frame, length):
     return frame[keep]
 
 
-def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, exponents=None):
+def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, exponents=None,
+                 zeta_replicates=None):
     """``claims.csv``: one row per quantitative claim of the paper (and per
     combination it is tested on), with the measured value, its 95 % interval,
     the paper's value, the verdict and the sweep and loads it rests on."""
@@ -163,6 +164,8 @@ def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, ex
             get("k_over_hertz_below_Ftr_ci_high", math.nan), 1.0, off_theory or softer,
             sweep=sweep, loads=f"{int(r['n_loads_below_Ftr'])} resolved loads below F_tr",
             note="measured: max over those loads of k/k_body(F) (eq. 9 for m = 2)", **where))
+    if zeta_replicates is not None:
+        rows += _zeta_law_claims(zeta_df, zeta_replicates, cfg)
     paper = _is_paper_setting(cross, L) if len(cross) else cross
     rows += _scaling_claims(paper, reps, cfg)
     rows += _lambda_claims(paper, cfg)
@@ -173,6 +176,57 @@ def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, ex
     if exponents is not None:
         rows += _exponent_claims(exponents, zeta_df, cfg)
     return pd.DataFrame(rows).sort_values("claim", kind="stable", ignore_index=True)
+
+
+def _flat_rows(zeta_df):
+    """Rows of zeta.csv fitted on flat runs at the paper's setting (not on a substituted roll-off,
+    cutoff or hardness: :func:`roughcontact.study.zeta.paper_setting` says so in the source)."""
+    if not len(zeta_df):
+        return zeta_df
+    return zeta_df[zeta_df["source"].astype(str) == "flat"]
+
+
+#: the paper's values of the parameters of the candidate ζ(H) laws, where eq. 13 is of that form
+EQ13_PARAMETERS = {"a/(H+1)": {"a": 1.7}, "a/(H+b)": {"a": 1.7, "b": 1.0}, "a*(H+1)^-b": {"a": 1.7, "b": 1.0}}
+
+
+def _zeta_law_claims(zeta_df, replicates, cfg) -> list[dict]:
+    """Claim (c'): a ζ(H) law whose form the data choose (:mod:`.zeta_law`) beside eq. 13,
+    from the flat runs: one row per parameter of the chosen law against eq. 13's value where
+    eq. 13 has that form, and one row for the law's largest deviation from the measured ζ(H)
+    against eq. 13's."""
+    from ..models.zeta_law import LAWS
+    from .zeta_law import MIN_HURST, fit_zeta_law
+
+    n = cfg["grid"]["n"]
+    flat = _flat_rows(zeta_df)
+    flat = flat[np.isfinite(flat["zeta_ci_low"].to_numpy(float))] if len(flat) else flat
+    statement = "zeta(H) follows a law whose form the data choose (eq. 13: 1.7/(H+1))"
+    if len(flat) < MIN_HURST:
+        return [_claim("c'", statement, math.nan, math.nan, math.nan, math.nan,
+                       f"untested: {len(flat)} H value(s) with flat runs and a zeta interval "
+                       f"(a law needs {MIN_HURST})")]
+    hurst = flat["hurst"].to_numpy(float)
+    law = fit_zeta_law(hurst, flat["zeta"], flat["zeta_ci_low"], flat["zeta_ci_high"],
+                       replicates.sel(hurst=hurst).values, level=float(cfg["fit"]["zeta"]["confidence"]))
+    aic = ", ".join(f"{form} {value:.1f}" for form, value in sorted(law.aic.items(), key=lambda kv: kv[1]))
+    sweep = (f"flat H = {hurst.min():g}...{hurst.max():g} ({hurst.size} values), "
+             f"{int(flat['n_seeds'].iloc[0])} seeds, n = {n}")
+    note = f"AIC of the {len(LAWS)} candidate forms (lower is better): {aic}"
+    rows = []
+    for name, value in law.parameters.items():
+        paper = EQ13_PARAMETERS.get(law.form, {}).get(name, math.nan)
+        text = (verdict(paper, law.ci_low[name], law.ci_high[name]) if math.isfinite(paper)
+                else "untested: eq. 13 is not of this form")
+        rows.append(_claim("c'", f"zeta(H) = {law.form} chosen by the data: parameter {name}", value,
+                           law.ci_low[name], law.ci_high[name], paper, text, sweep=sweep, note=note))
+    rows.append(_claim(
+        "c'", f"the law zeta = {law.form} deviates less from the measured zeta(H) than eq. 13",
+        law.max_rel_dev, law.max_rel_dev_ci_low, law.max_rel_dev_ci_high, law.eq13_max_rel_dev,
+        verdict_bound(0.0, law.difference_ci_low, law.difference_ci_high, side="below"), sweep=sweep,
+        note=(f"measured: max over H of |law/zeta - 1|; paper value: the same for 1.7/(H+1); verdict on the "
+              f"paired difference law - eq. 13, interval {law.difference_ci_low:.3g}...{law.difference_ci_high:.3g}")))
+    return rows
 
 
 def _scaling_claims(cross, reps, cfg):
@@ -271,25 +325,33 @@ def _exponent_claims(exponents, zeta_df, cfg) -> list[dict]:
     for hurst, rolloff in itertools.product(cfg["hurst"], rolled if flat_swept else []):
         sub = exponents[(exponents["kind"] == "flat") & (exponents["hurst"] == hurst)
                         & (exponents["rolloff"] == rolloff)] if len(exponents) else exponents
-        sweep = f"flat H = {hurst:g}, rolloff = {rolloff:g} L, {seeds} seeds, n = {n}"
+        for axis in ("cutoff", "hardness"):  # the other optional axes at the paper's setting
+            if len(sub) and axis in sub:
+                sub = sub[sub[axis].to_numpy(float) == runs.coordinate(axis, runs.DEFAULTS[axis], L)]
+        sweep = f"flat H = {hurst:g}, rolloff = {rolloff:g} (length unit), {seeds} seeds, n = {n}"
         if not len(sub):
             rows.append(_claim("l", statement, math.nan, math.nan, math.nan, 1.0,
                                "untested: no load with a resolved window", sweep=sweep, hurst=hurst, rolloff=rolloff))
             continue
-        top = sub.loc[sub["local_exponent"].idxmax()]
-        covered = int(((sub["ci_low"] <= 1.0) & (sub["ci_high"] >= 1.0)).sum())
-        text = (f"consistent: the interval contains 1 at {covered} of {len(sub)} loads" if covered
-                else verdict(1.0, top["ci_low"], top["ci_high"]))
+        covers = (sub["ci_low"] <= 1.0) & (sub["ci_high"] >= 1.0)
+        covered = int(covers.sum())
+        # the row shows the load the verdict rests on: the largest exponent whose interval holds 1, else the largest
+        top = sub[covers].loc[sub[covers]["local_exponent"].idxmax()] if covered else \
+            sub.loc[sub["local_exponent"].idxmax()]
+        text = (f"consistent: the interval contains 1 at {covered} of {len(sub)} loads (no correction for "
+                f"testing several loads)" if covered else verdict(1.0, top["ci_low"], top["ci_high"]))
         rows.append(_claim("l", statement, float(top["local_exponent"]), float(top["ci_low"]), float(top["ci_high"]), 1.0,
                            text, sweep=sweep, hurst=hurst, rolloff=rolloff,
                            loads=f"{len(sub)} loads with a resolved window, F/(E*L^2) = {sub['force'].min():.3g}..."
-                                 f"{sub['force'].max():.3g}; the largest exponent at {top['force']:.3g}",
-                           note="measured: the largest local exponent d ln k/d ln F (exponents.csv)"))
+                                 f"{sub['force'].max():.3g}; the row's load {top['force']:.3g}",
+                           note=("measured: the largest local exponent d ln k/d ln F (exponents.csv) whose interval "
+                                 "holds 1, else the largest")))
     statement = ("free stiffness exponent of flat surfaces 0.77 (H -> 0) to 0.51 (H = 1), linear in H "
                  "(Pohrt & Popov, PRL 2012)")
-    flat = zeta_df[zeta_df["source"].astype(str).str.startswith("flat")] if len(zeta_df) else zeta_df
+    flat = _flat_rows(zeta_df)
     if not len(flat):
-        rows.append(_claim("m", statement, math.nan, math.nan, math.nan, math.nan, "untested: no flat runs"))
+        rows.append(_claim("m", statement, math.nan, math.nan, math.nan, math.nan,
+                           "untested: no flat runs at the paper's setting"))
     for _, z in flat.iterrows():
         value = prl2012_exponent(z["hurst"])
         rows.append(_claim("m", statement, z["exponent"], z["exponent_ci_low"], z["exponent_ci_high"], value,
@@ -307,18 +369,20 @@ CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per s
                "cannot decide it; the reason says why). claims.csv holds every digit.")
 
 
-def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, stiffness_nc, exponents_csv, out_csv, out_html):
-    """``claims`` rule: crossover.csv, its replicates, zeta.csv and the runs -> claims.csv and
-    the same table as an HTML page for the report (:mod:`roughcontact.study.tables`)."""
+def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html):
+    """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
+    runs and the local exponents -> claims.csv and the same table as an HTML page for the report
+    (:mod:`roughcontact.study.tables`)."""
     import pandas as pd
     import xarray as xr
 
     from .merge import read_groups, write_csv
 
     cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
-    with xr.open_dataset(crossover_nc, engine="netcdf4") as reps:
+    with xr.open_dataset(crossover_nc, engine="netcdf4") as reps, xr.open_dataset(zeta_nc, engine="netcdf4") as zds:
         exponents = pd.read_csv(exponents_csv) if Path(exponents_csv).stat().st_size > 1 else pd.DataFrame()
-        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, read_groups(stiffness_nc), exponents)
+        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, read_groups(stiffness_nc), exponents,
+                             zds["zeta_replicates"].load())
     write_csv(table, out_csv)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
                      first=("claim", "statement", "verdict", "measured", "ci_low", "ci_high", "paper_value", "reason"))

@@ -30,11 +30,17 @@ def _sphere(study: Path):
     path = study / "results" / "stiffness.nc"
     with xr.open_datatree(path, engine="netcdf4") as tree:
         n = int(tree.attrs["grid_n"])
-    ds = read_groups(path)["sphere"]
+        length, e_star = float(tree.attrs.get("grid_length", 1.0)), float(tree.attrs.get("e_star", 1.0))
+    groups = read_groups(path)
+    if "sphere" not in groups:
+        raise ValueError(f"{study}: no sphere runs in {path}")
+    ds = groups["sphere"]
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
     if any(ds.sizes[a] != 1 for a in axes):
         raise ValueError(f"{study}: a convergence study holds one sphere combination, got axes {axes}")
-    return ds.isel({a: 0 for a in axes}).transpose("seed", "force"), n
+    ds = ds.isel({a: 0 for a in axes}).transpose("seed", "force")
+    return ds.assign_coords(force=ds["force"] / (e_star * length**2)).assign(
+        stiffness=ds["stiffness"] / (e_star * length)), n
 
 
 def summary(studies):
@@ -56,8 +62,8 @@ def summary(studies):
         row.update(zeta_window_force_min=zeta["force_min"], zeta_window_force_max=zeta["force_max"],
                    zeta_window_points=int(zeta["n_points"]))
         bench = [pd.read_csv(p, sep="\t").iloc[0] for p in sorted((results / "benchmarks" / "indent").glob("*.tsv"))]
-        row.update(job_wall_s_median=float(np.median([b["s"] for b in bench])) if bench else math.nan,
-                   job_peak_rss_mb_max=float(max(b["max_rss"] for b in bench)) if bench else math.nan)
+        row.update(job_wall_s_median=float(np.nanmedian([b["s"] for b in bench])) if bench else math.nan,
+                   job_peak_rss_mb_max=float(np.nanmax([b["max_rss"] for b in bench])) if bench else math.nan)
         row["study"] = study.name
         rows.append(row)
     return pd.DataFrame(rows).sort_values("n", ignore_index=True)
@@ -65,18 +71,25 @@ def summary(studies):
 
 def stiffness_ratios(studies, *, resamples: int = 1000, level: float = 0.95):
     """``k_n/k_finest − 1`` of the ensemble means at every load a study shares with the finest
-    one, with its interval and the mean contact cells (module docstring); one row per (n, F)."""
+    one, with its interval and the mean contact cells (module docstring); one row per (n, F)
+    of every grid but the finest. One study per grid."""
     import pandas as pd
 
     data = {}
     for study in map(Path, studies):
         ds, n = _sphere(study)
+        if n in data:
+            raise ValueError(f"two studies on {n}^2 ({study.name} and another): give one study per grid")
         data[n] = ds
+    if len(data) < 2:
+        raise ValueError(f"a convergence table needs studies on at least two grids, got {len(data)}")
     finest = max(data)
     rng = np.random.default_rng(BOOTSTRAP_SEED)
     ref = data[finest]
     rows = []
     for n, ds in sorted(data.items()):
+        if n == finest:
+            continue
         forces = np.intersect1d(np.round(ds["force"].values, 15), np.round(ref["force"].values, 15))
         for force in forces:
             k = ds["stiffness"].sel(force=force, method="nearest").values

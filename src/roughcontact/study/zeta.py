@@ -110,7 +110,7 @@ def fit_zeta(groups, cfg):
     zc = cfg["fit"]["zeta"]
     n_boot = int(zc["bootstrap"])
     level = float(zc["confidence"])
-    rows = []
+    rows, replicates = [], []
     for hurst in cfg["hurst"]:
         points, source = _zeta_points(groups, cfg, hurst)
         zeta, slope = _zeta_stats(points, hurst)
@@ -119,7 +119,8 @@ def fit_zeta(groups, cfg):
         if len(points) > 1 and math.isfinite(zeta):
             boots = [_zeta_stats([points[i] for i in pick], hurst)
                      for pick in bootstrap_indices(len(points), n_boot)]
-        boots = np.array(boots) if boots else np.full((1, 2), np.nan)
+        boots = np.array(boots) if boots else np.full((n_boot, 2), np.nan)
+        replicates.append(boots[:, 0])
         q = [(1 - level) / 2 * 100, (1 + level) / 2 * 100]
         with np.errstate(all="ignore"):
             zlo, zhi = np.nanpercentile(boots[:, 0], q) if np.isfinite(boots[:, 0]).any() else (math.nan, math.nan)
@@ -147,6 +148,9 @@ def fit_zeta(groups, cfg):
         })
     df = pd.DataFrame(rows)
     zds = df.set_index("hurst").to_xarray()
+    zds["zeta_replicates"] = (("hurst", "replicate"), np.array(replicates), {
+        "long_name": "zeta of each bootstrap resample of the seeds (the same resamples for every H)",
+        "units": "1"})
     zds.attrs.update(provenance.provenance_attrs(
         config=cfg, title="zeta(H) fitted from eq. 11 (k/(E* L) = zeta (F/(E* h L))^(1/(H+1)))",
         bootstrap_resamples=n_boot, bootstrap_over="seeds", forces="F/(E* L^2)"))

@@ -4,36 +4,30 @@ The paper gives ζ(H) ≈ 1.7/(H+1) (eq. 13) from flat surfaces with H ≤ 1 and
 model for 0 < H < 2. Here every candidate of :data:`LAWS` is fitted to the study's ζ(H)
 (``zeta.csv``, flat runs) by weighted least squares in ln ζ,
 
-    minimise  Σ_H ((ln ζ_H − ln law(H; θ)) / σ_H)²,   σ_H = (ln ζ_hi − ln ζ_lo)/(2 · 1.96),
+    minimise  Σ_H ((ln ζ_H − ln law(H; θ)) / σ_H)²,   σ_H = (ln ζ_hi − ln ζ_lo)/(2 z),
 
-σ_H the half-width of ζ's 95 % bootstrap interval in ln ζ. The form with the smallest
+σ_H the standard error of ln ζ from ζ's bootstrap interval at level α (z = Φ⁻¹((1+α)/2),
+1.96 at 95 %). The form with the smallest
 Akaike information criterion AIC = χ² + 2p (p parameters; Akaike, IEEE Trans. Autom. Control
 19, 716 (1974), doi 10.1109/TAC.1974.1100705) is the one the data choose. Its parameters, and
 its largest relative deviation from the measured ζ(H), get 95 % intervals by refitting the
 chosen form to every bootstrap replicate of ζ(H) (``zeta.nc``: the same resampled seeds for
-every H, so the replicates keep the correlation between the H values).
+every H, so the replicates keep the correlation between the H values); the comparison with
+eq. 13 is paired on the same replicates.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import least_squares
+from scipy.stats import norm
 
+from ..models import paper
+from ..models.zeta_law import LAWS
 from .statistics import interval
 
-__all__ = ["LAWS", "ZetaLaw", "fit_law", "fit_zeta_law"]
-
-#: candidate forms: name -> (function of (H, parameters), parameter names, start values);
-#: "a/(H+1)" is eq. 13's form (a = 1.7 in the paper)
-LAWS = {
-    "a/(H+1)": (lambda h, a: a / (h + 1.0), ("a",), (1.7,)),
-    "a/(H+b)": (lambda h, a, b: a / (h + b), ("a", "b"), (1.7, 1.0)),
-    "a*(H+1)^-b": (lambda h, a, b: a * (h + 1.0) ** -b, ("a", "b"), (1.7, 1.0)),
-    "a*exp(-b*H)": (lambda h, a, b: a * np.exp(-b * h), ("a", "b"), (1.7, 0.5)),
-    "a+b*H": (lambda h, a, b: a + b * h, ("a", "b"), (1.7, -0.5)),
-}
+__all__ = ["MIN_HURST", "ZetaLaw", "fit_law", "fit_zeta_law"]
 
 #: fewest H values for a law with two parameters to be chosen and tested
 MIN_HURST = 4
@@ -71,6 +65,10 @@ class ZetaLaw:
         ``max_H |law(H)/ζ(H) − 1|`` over the swept H, with its interval.
     eq13_max_rel_dev : float
         The same for 1.7/(H+1) (eq. 13).
+    difference_ci_low, difference_ci_high : float
+        Interval of the law's largest deviation minus eq. 13's, both taken on the same
+        bootstrap replicate (paired): below 0 throughout means the law describes ζ(H)
+        better than eq. 13.
     aic : dict[str, float]
         AIC of every candidate (lower is better).
     hurst : tuple of float
@@ -85,6 +83,8 @@ class ZetaLaw:
     max_rel_dev_ci_low: float
     max_rel_dev_ci_high: float
     eq13_max_rel_dev: float
+    difference_ci_low: float
+    difference_ci_high: float
     aic: dict
     hurst: tuple
 
@@ -109,7 +109,7 @@ def fit_zeta_law(hurst, zeta, ci_low, ci_high, replicates, *, level: float = 0.9
     replicates = np.asarray(replicates, dtype=float)
     if hurst.size < MIN_HURST:
         raise ValueError(f"a zeta(H) law needs at least {MIN_HURST} Hurst exponents, got {hurst.size}")
-    sigma = np.log(ci_high / ci_low) / (2 * 1.959964)
+    sigma = np.log(ci_high / ci_low) / (2 * norm.ppf(0.5 + level / 2))
     sigma = np.where(np.isfinite(sigma) & (sigma > 0), sigma, np.nanmax(sigma))
     aic, fitted = {}, {}
     for form, (_, names, _) in LAWS.items():
@@ -118,16 +118,22 @@ def fit_zeta_law(hurst, zeta, ci_low, ci_high, replicates, *, level: float = 0.9
         aic[form] = _chi2(form, hurst, zeta, sigma, theta) + 2 * len(names)
     form = min(aic, key=aic.get)
     names = LAWS[form][1]
-    boot = np.array([fit_law(form, hurst, replicates[:, j], sigma) for j in range(replicates.shape[1])
-                     if np.all(np.isfinite(replicates[:, j]))])
-    devs = np.array([np.max(np.abs(LAWS[form][0](hurst, *theta) / replicates[:, j] - 1))
-                     for j, theta in zip(np.flatnonzero(np.all(np.isfinite(replicates), axis=0)), boot)])
+    # every replicate refitted (NaN where a replicate lacks an H, so interval() counts it as missing)
+    boot = np.full((replicates.shape[1], len(names)), np.nan)
+    devs, differences = np.full(replicates.shape[1], np.nan), np.full(replicates.shape[1], np.nan)
+    eq13 = paper.zeta_estimate(hurst)
+    for j in np.flatnonzero(np.all(np.isfinite(replicates), axis=0)):
+        boot[j] = fit_law(form, hurst, replicates[:, j], sigma)
+        devs[j] = np.max(np.abs(LAWS[form][0](hurst, *boot[j]) / replicates[:, j] - 1))
+        differences[j] = devs[j] - np.max(np.abs(eq13 / replicates[:, j] - 1))
     bounds = [interval(boot[:, i], level) for i in range(len(names))]
     dev_low, dev_high = interval(devs, level)
+    diff_low, diff_high = interval(differences, level)
     law = LAWS[form][0](hurst, *fitted[form])
     return ZetaLaw(form=form, parameters=dict(zip(names, map(float, fitted[form]))),
                    ci_low={k: b[0] for k, b in zip(names, bounds)}, ci_high={k: b[1] for k, b in zip(names, bounds)},
                    max_rel_dev=float(np.max(np.abs(law / zeta - 1))), max_rel_dev_ci_low=dev_low,
                    max_rel_dev_ci_high=dev_high,
-                   eq13_max_rel_dev=float(np.max(np.abs(1.7 / (hurst + 1) / zeta - 1))),
+                   eq13_max_rel_dev=float(np.max(np.abs(eq13 / zeta - 1))),
+                   difference_ci_low=diff_low, difference_ci_high=diff_high,
                    aic={k: float(v) for k, v in aic.items()}, hurst=tuple(map(float, hurst)))
