@@ -178,3 +178,25 @@ def test_rebinning_leaves_persson_sphere_stiffness_unchanged():
     exact = persson.sphere_stiffness(force, full, radius=0.5, e_star=1.0).stiffness
     coarse = persson.sphere_stiffness(force, full.rebinned(100), radius=0.5, e_star=1.0).stiffness
     assert np.allclose(coarse, exact, rtol=1e-5, atol=0), f"{coarse} against {exact}"
+
+
+def test_structure_function_of_one_mode_is_the_bessel_closed_form():
+    # one isotropic shell of wavenumber q and variance v: SF(r) = 2 v (1 - J0(q r)) exactly
+    from scipy.special import j0
+
+    one = spectra.Spectrum(q=np.array([20.0]), variance=np.array([4e-6]), length=1.0)
+    lag = np.array([0.01, 0.1, 0.3])
+    assert one.structure_function(lag) == pytest.approx(2 * 4e-6 * (1 - j0(20.0 * lag)), rel=1e-12)
+
+
+def test_structure_function_small_lag_is_half_the_slope_squared():
+    # 1 - J0(x) = x^2/4 + O(x^4): SF(r) -> rms_slope^2 r^2 / 2 for r much shorter than every wavelength
+    spectrum = spectra.self_affine_spectrum(hurst=0.8, h_rms=1e-2, length=1.0, n=65)
+    lag = 1e-5
+    assert spectrum.structure_function(lag) == pytest.approx(spectrum.rms_slope**2 * lag**2 / 2, rel=1e-4)
+
+
+def test_structure_function_long_lag_tends_to_twice_the_variance():
+    # J0(x) -> 0 (as x^-1/2) for x >> 1: one mode at q = 50, lag 1e4: |J0(5e5)| < 1.2e-3
+    one = spectra.Spectrum(q=np.array([50.0]), variance=np.array([1e-4]), length=1.0)
+    assert one.structure_function(1e4) == pytest.approx(2e-4, rel=2e-3)

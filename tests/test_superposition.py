@@ -3,6 +3,7 @@ import numpy as np
 import pytest
 
 from roughcontact.models import paper, superposition
+from roughcontact.surfaces.spectra import self_affine_spectrum
 
 SPHERE = dict(radius=0.5, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
 FORCES = np.logspace(-7, -2, 11)
@@ -46,3 +47,30 @@ def test_flat_is_eq11():
 def test_power_below_one_rejected():
     with pytest.raises(ValueError, match="power must be >= 1"):
         superposition.force_from_stiffness(1e-2, power=0.5, **SPHERE)
+
+
+def test_rough_force_with_its_own_reference_is_eq12():
+    # h_a = h sqrt(SF/SF_ref) = h when the spectrum is the reference: eq. 12 to round-off
+    reference = self_affine_spectrum(hurst=0.7, h_rms=9e-3, length=1.0, n=129).rebinned(100)
+    k = np.logspace(-3, 0, 7)
+    scaled = superposition.rough_force(k, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0,
+                                       spectrum=reference, reference=reference)
+    plain = superposition.rough_force(k, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    assert scaled == pytest.approx(plain, rel=1e-12), "spectrum = reference against eq. 12"
+
+
+def test_rolloff_raises_the_small_scale_roughness():
+    # at equal h_rms a roll-off at L/4 puts more variance into the power law: SF(0.01)/SF_ref(0.01) > 1,
+    # so the roughness carries more force at a small contact (a = 0.005) than eq. 12 says
+    reference = self_affine_spectrum(hurst=0.7, h_rms=9e-3, length=1.0, n=257).rebinned(100)
+    rolled = self_affine_spectrum(hurst=0.7, h_rms=9e-3, length=1.0, n=257, rolloff=0.25).rebinned(100)
+    kwargs = dict(hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    ratio = superposition.rough_force(0.01, spectrum=rolled, reference=reference, **kwargs) / \
+        superposition.rough_force(0.01, **kwargs)
+    assert ratio > 1.5, f"F_rough with roll-off / eq. 12 at a = 0.005: {ratio}"
+
+
+def test_spectrum_without_reference_rejected():
+    reference = self_affine_spectrum(hurst=0.7, h_rms=9e-3, length=1.0, n=33)
+    with pytest.raises(ValueError, match="both spectrum and reference"):
+        superposition.rough_force(0.1, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0, spectrum=reference)

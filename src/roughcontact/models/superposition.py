@@ -1,4 +1,5 @@
-"""Eq. 16 generalised: the forces of the body and of the roughness joined by a power mean.
+"""Eq. 16 generalised: the forces of the body and of the roughness joined by a p-norm, the roughness
+seen at the scale of the contact.
 
 Pohrt & Popov add, at a given stiffness k = 2 E* a, the forces of the two equivalent
 axisymmetric profiles (eq. 16): ``F = F_body(k) + F_rough(k)``, with
@@ -6,16 +7,35 @@ axisymmetric profiles (eq. 16): ``F = F_body(k) + F_rough(k)``, with
 ``F_rough = E* L h (k/(ζ E* L))^(H+1)`` (eq. 12). The sum is exact only for one profile that
 is the sum of the two, ``z = r²/2R + Q3D r^H`` (eq. 15), and eq. 15 itself is a model: the
 rough surface is not axisymmetric and its equivalent profile's prefactor ζ is fitted on flat
-surfaces. This module joins the two forces by the power mean
+surfaces. This module joins the two forces by their p-norm
 
     F = (F_body(k)^p + F_rough(k)^p)^(1/p),        p ≥ 1,
 
 which keeps both asymptotes (eqs. 9 and 11), is eq. 16 for ``p = 1`` and tends to
 ``max(F_body, F_rough)`` (``k = min(k_9, k_11)``) as ``p → ∞``. At the crossover stiffness
 (``F_body = F_rough``) the force is ``2^(1/p)`` times either term instead of twice it: a
-``p > 1`` makes the transition sharper. ``p`` and a factor on ζ are calibrated on the BEM
-ensembles of the presets (:mod:`roughcontact.models.calibrated`); the derivation and the
-calibration are in the documentation (guide, "Models").
+``p > 1`` makes the transition sharper.
+
+**The roughness seen at the scale of the contact.** Eq. 12 holds for the paper's spectrum,
+self-affine from L down to the grid, where it depends on h and L only through the amplitude
+``h/L^H`` of the power law (:func:`roughcontact.models.paper.fractal_stiffness`). A contact of
+radius ``a = k/(2E*)`` feels the roughness at wavelengths of about its size; longer ones move
+it as a whole. Given the surface's spectrum, this module replaces h in eq. 12 by
+
+    h_a = h · √(SF(λ)/SF_ref(λ)),   λ = min(w·a, L),
+
+``SF(λ)`` the spectrum's structure function (the mean square height difference over a distance
+λ, :meth:`roughcontact.surfaces.Spectrum.structure_function`) and ``SF_ref`` that of the pure
+self-affine spectrum of the same H, h and grid. For the paper's spectrum ``h_a = h`` and this is
+eq. 16 exactly. Below a roll-off λ_r < L, ``h_a > h`` (at equal h_rms the power law then carries
+more of the variance); above it the structure function saturates at ``2 h_rms²`` while
+``SF_ref`` grows as ``λ^(2H)``, so the roughness's force levels off, as that of an equivalent
+profile that is flat beyond λ_r; below a cutoff the surface is smooth and ``SF ∝ λ²``.
+``w`` (the window, 2 by default: the contact's diameter) is a modelling choice.
+
+:data:`CALIBRATED` holds p and a factor on ζ calibrated on the BEM ensembles of named presets
+(:mod:`roughcontact.study.calibration`); the derivation and the calibration are in the
+documentation (guide, "Models").
 
 Units are the caller's, consistent as in :mod:`roughcontact.models.paper`.
 """
@@ -27,11 +47,46 @@ import numpy as np
 
 from .paper import _body_coefficient, body_stiffness, fractal_stiffness
 
-__all__ = ["force_from_stiffness", "stiffness_from_force"]
+__all__ = ["rough_force", "force_from_stiffness", "stiffness_from_force"]
 
 
-def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zeta, power, exponent=2.0):
-    """Force at stiffness k: the power mean of order ``power`` of eqs. 10 and 12 (module docstring).
+def rough_force(stiffness, *, hurst, h_rms, length, e_star, zeta, spectrum=None, reference=None, window=2.0):
+    """The roughness's force at stiffness k: eq. 12, ``F = E* L h (k/(ζ E* L))^(H+1)``, with h
+    replaced by ``h_a`` of the scale of the contact when *spectrum* and *reference* are given
+    (module docstring).
+
+    Parameters
+    ----------
+    stiffness : array_like
+        k (force/length), > 0.
+    hurst, h_rms, length, e_star, zeta : float
+        H, h (length), L (length), E* (force/length²) and ζ of eq. 12.
+    spectrum, reference : roughcontact.surfaces.Spectrum, optional
+        The surface's spectrum and the pure self-affine spectrum of the same H, h and grid
+        (:func:`roughcontact.surfaces.spectra.self_affine_spectrum`); both or neither.
+    window : float
+        ``w`` of ``λ = min(w a, L)``, a = k/(2E*).
+
+    Returns
+    -------
+    numpy.ndarray
+        F (force).
+    """
+    k = np.asarray(stiffness, dtype=float)
+    h = h_rms
+    if (spectrum is None) != (reference is None):
+        raise ValueError("give both spectrum and reference, or neither")
+    if spectrum is not None:
+        lag = np.minimum(window * k / (2.0 * e_star), length)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ratio = spectrum.structure_function(lag) / reference.structure_function(lag)
+        h = h_rms * np.sqrt(np.where(np.isfinite(ratio), ratio, 0.0))
+    return e_star * length * h * (k / (zeta * e_star * length)) ** (hurst + 1.0)
+
+
+def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zeta, power, exponent=2.0,
+                         spectrum=None, reference=None, window=2.0):
+    """Force at stiffness k: the p-norm (``p = power``) of eqs. 10 and 12 (module docstring).
 
     Parameters
     ----------
@@ -45,6 +100,8 @@ def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zet
         p ≥ 1; 1 is eq. 16.
     exponent : float
         m of the body of revolution z = (R/m)(r/R)^m; 2 is the paraboloid.
+    spectrum, reference, window
+        The roughness at the contact's scale (:func:`rough_force`); ``None``: eq. 12.
 
     Returns
     -------
@@ -54,35 +111,38 @@ def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zet
     if not power >= 1.0:
         raise ValueError(f"power must be >= 1, got {power!r}")
     k = np.asarray(stiffness, dtype=float)
-    rough = length * h_rms * (k / (zeta * e_star * length)) ** (hurst + 1.0)
+    rough = rough_force(k, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta,
+                        spectrum=spectrum, reference=reference, window=window)
     if math.isinf(radius):
-        return e_star * rough
-    body = (k / e_star) ** (exponent + 1.0) / _body_coefficient(radius, exponent)
+        return rough
+    body = e_star * (k / e_star) ** (exponent + 1.0) / _body_coefficient(radius, exponent)
     top = np.maximum(body, rough)
-    # the power mean scaled by its larger term (no overflow for large p)
-    return e_star * top * ((body / top) ** power + (rough / top) ** power) ** (1.0 / power)
+    # the p-norm scaled by its larger term (no overflow for large p)
+    return top * ((body / top) ** power + (rough / top) ** power) ** (1.0 / power)
 
 
-def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, power, exponent=2.0):
-    """Invert :func:`force_from_stiffness` for k at given force(s) (bisection in log k).
+def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, power, exponent=2.0,
+                         spectrum=None, reference=None, window=2.0):
+    """Invert :func:`force_from_stiffness` for k at given force(s) (bisection in ln k).
 
-    The root lies between ``min(k_9, k_11)`` at ``F/2`` and at ``F`` (the power mean lies between
-    the larger term and twice it), as for :func:`roughcontact.models.paper.stiffness_from_force`;
-    100 halvings of that bracket reach machine precision.
+    F(k) increases with k, and the body's term alone bounds k from above by the body's
+    stiffness at F (eq. 9; for ``radius = inf`` by eq. 11 with h_a ≥ ... the bracket is widened
+    instead); 200 halvings of ``[ln k_top − 60, ln k_top]`` reach machine precision.
     """
     force = np.asarray(force, dtype=float)
-    if math.isinf(radius):
+    kwargs = dict(radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta, power=power,
+                  exponent=exponent, spectrum=spectrum, reference=reference, window=window)
+    if spectrum is None and math.isinf(radius):
         return fractal_stiffness(force, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta)
-
-    def asymptote_min(f):
-        return np.minimum(body_stiffness(f, radius=radius, e_star=e_star, exponent=exponent),
-                          fractal_stiffness(f, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta))
-
-    lo, hi = np.log(asymptote_min(force / 2.0)), np.log(asymptote_min(force))
-    for _ in range(100):
+    if math.isinf(radius):
+        top = np.log(fractal_stiffness(force, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
+                                       zeta=zeta)) + 30.0
+    else:
+        top = np.log(body_stiffness(force, radius=radius, e_star=e_star, exponent=exponent))
+    lo, hi = top - 60.0, top
+    for _ in range(200):
         mid = 0.5 * (lo + hi)
-        too_stiff = force_from_stiffness(np.exp(mid), radius=radius, hurst=hurst, h_rms=h_rms, length=length,
-                                         e_star=e_star, zeta=zeta, power=power, exponent=exponent) > force
+        too_stiff = force_from_stiffness(np.exp(mid), **kwargs) > force
         hi = np.where(too_stiff, mid, hi)
         lo = np.where(too_stiff, lo, mid)
     return np.exp(0.5 * (lo + hi))

@@ -29,6 +29,7 @@ import dataclasses
 import math
 
 import numpy as np
+from scipy.special import j0
 
 from .._validate import check_finite_positive, check_grid_size, check_hurst
 from .roughness import band, wavevectors
@@ -117,6 +118,16 @@ class Spectrum:
     def rms_slope(self) -> float:
         """Root-mean-square gradient ``|∇h|``, ``√Σ q² variance`` (dimensionless)."""
         return math.sqrt(self.moment(2))
+
+    def structure_function(self, lag) -> np.ndarray:
+        """Mean square height difference at distance *lag*, averaged over directions (length²).
+
+        ``SF(r) = ⟨(h(x + r) − h(x))²⟩ = Σ_bins 2 variance (1 − J0(q r))`` for an isotropic
+        spectrum (J0: Bessel function of the first kind); ``SF → 2 h_rms²`` for lags much longer
+        than the longest wavelength. Vectorised over *lag*.
+        """
+        lag = np.asarray(lag, dtype=float)
+        return 2.0 * np.sum(self.variance * (1.0 - j0(np.multiply.outer(lag, self.q))), axis=-1)
 
     def rebinned(self, bins_per_decade: int = 100) -> "Spectrum":
         """The same spectrum on at most ``bins_per_decade`` logarithmic bins per decade of ``q``.
