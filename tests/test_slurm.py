@@ -30,8 +30,6 @@ def test_trivial_job_runs_through_slurm(slurm_cluster, tmp_path):  # noqa: F811
 
 # ---------------------------------------------------------------------------
 # the pipeline through SLURM vs. a local --cores 2 run of the same config
-import copy  # noqa: E402
-import math  # noqa: E402
 import re  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
