@@ -136,3 +136,10 @@ def test_optional_axes_reject_nonsense_in_one_line(change, key):
     line = config.error_line(info.value)
     assert len(line.splitlines()) == 1 and line.startswith("Invalid configuration"), line
     assert key in line, line
+
+
+@pytest.mark.parametrize("axis, value", [("rolloff", None), ("rolloff", 0.25), ("cutoff", None), ("cutoff", 0.03),
+                                         ("hardness", None), ("hardness", 0.2)])
+def test_axis_value_inverts_coordinate(axis, value):
+    coordinate = runs.coordinate(axis, value, 1.0)
+    assert runs.axis_value(axis, coordinate, 1.0) == value, f"{axis} {value} -> {coordinate} and back"

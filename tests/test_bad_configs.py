@@ -104,6 +104,13 @@ def test_bad_config_rejected_with_one_line(key, value, named):
     assert "allowed" in msg, msg
 
 
+def test_difference_stiffness_with_hardness_rejected_with_one_line():
+    cfg = _set(_set(copy.deepcopy(GOOD), "hardness", [0.5]), "solver.stiffness", "difference")
+    with pytest.raises(errors.ConfigError, match=r"^config key 'solver.stiffness' = 'difference' is not allowed with "
+                                                 r"'hardness\[0\]'.*allowed: punch[^\n]*$"):
+        config.resolve_config(cfg)
+
+
 # A few through the real `snakemake -n`: the run stops before any job, one line names the key.
 @pytest.mark.parametrize("case", ["unknown-top-key", "radius-negative", "hurst-zero",
                                   "seeds-empty", "force-reversed"])

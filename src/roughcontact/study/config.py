@@ -216,6 +216,9 @@ def _check_spectrum_and_hardness(cfg: dict, kinds: set) -> None:
     for i, hardness in enumerate(cfg["hardness"]):
         if hardness is None:
             continue
+        if cfg["solver"]["stiffness"] == "difference":
+            raise ConfigError(f"config key 'solver.stiffness' = 'difference' is not allowed with 'hardness[{i}]' = "
+                              f"{hardness:g}; allowed: punch (the unloading stiffness of a plastic contact)")
         for kind in sorted(kinds):
             to = cfg["forces"][kind]["to"]
             # fully plastic: F = hardness * area; a sphere's contact must stay within L/4 of its apex

@@ -22,6 +22,7 @@ __all__ = [
     "run_path",
     "run_paths",
     "combinations",
+    "axis_value",
     "indent_resources",
     "force_grid",
     "parse_run_path",
@@ -71,6 +72,13 @@ def coordinate(axis: str, value, length: float) -> float:
     if value is None:
         return {"rolloff": float(length), "cutoff": 0.0, "hardness": math.inf}[axis]
     return float(value)
+
+
+def axis_value(axis: str, coordinate_value: float, length: float):
+    """The inverse of :func:`coordinate`: the run's value of an optional axis (``None`` for the
+    paper's setting: rolloff = L, cutoff = 0, hardness = inf), else the number."""
+    paper = coordinate(axis, None, length)
+    return None if coordinate_value == paper else float(coordinate_value)
 
 
 def combinations(cfg: dict) -> list[dict]:
