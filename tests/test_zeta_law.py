@@ -57,3 +57,9 @@ def test_law_callable_reproduces_fit():
 def test_too_few_hurst_values_raise():
     with pytest.raises(ValueError, match="at least 4 Hurst"):
         fit_zeta_law(HURST[:3], np.ones(3), np.full(3, 0.9), np.full(3, 1.1), np.ones((3, 10)))
+
+
+def test_inverse_h_term_chosen_and_recovered():
+    law = _fit(1.55 / (HURST + 1) + 0.11 / HURST)
+    assert law.form == "a/(H+1)+b/H", f"form of exact 1.55/(H+1) + 0.11/H data, AIC {law.aic}"
+    assert law.parameters["b"] == pytest.approx(0.11, rel=1e-6), "b of exact 1.55/(H+1) + 0.11/H data"

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["LAWS"]
+__all__ = ["LAWS", "CALIBRATED", "zeta_law"]
 
 #: candidate forms: name -> (function of (H, *parameters), parameter names, start values of a fit);
 #: "a/(H+1)" is eq. 13's form (a = 1.7 in the paper)
@@ -20,4 +20,11 @@ LAWS = {
     "a*(H+1)^-b": (lambda h, a, b: a * (h + 1.0) ** -b, ("a", "b"), (1.7, 1.0)),
     "a*exp(-b*H)": (lambda h, a, b: a * np.exp(-b * h), ("a", "b"), (1.7, 0.5)),
     "a+b*H": (lambda h, a, b: a + b * h, ("a", "b"), (1.7, -0.5)),
+    "a/(H+1)+b/H": (lambda h, a, b: a / (h + 1.0) + b / h, ("a", "b"), (1.7, 0.1)),
 }
+
+
+def zeta_law(hurst):
+    """ζ(H) of the law :data:`CALIBRATED` (eq. 11's prefactor for flat surfaces)."""
+    function = LAWS[CALIBRATED["form"]][0]
+    return function(np.asarray(hurst, dtype=float), *CALIBRATED["parameters"].values())

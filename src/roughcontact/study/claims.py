@@ -187,7 +187,8 @@ def _flat_rows(zeta_df):
 
 
 #: the paper's values of the parameters of the candidate ζ(H) laws, where eq. 13 is of that form
-EQ13_PARAMETERS = {"a/(H+1)": {"a": 1.7}, "a/(H+b)": {"a": 1.7, "b": 1.0}, "a*(H+1)^-b": {"a": 1.7, "b": 1.0}}
+EQ13_PARAMETERS = {"a/(H+1)": {"a": 1.7}, "a/(H+b)": {"a": 1.7, "b": 1.0}, "a*(H+1)^-b": {"a": 1.7, "b": 1.0},
+                   "a/(H+1)+b/H": {"a": 1.7, "b": 0.0}}
 
 
 def _zeta_law_claims(zeta_df, replicates, cfg) -> list[dict]:
