@@ -1,0 +1,125 @@
+# Measured inputs (docs/guide/measured.md): the scans of `topography` cut into tiles, and the
+# surfaces drawn from each `spectrum` per seed, pressed per radius; one merged file per surface.
+# Read, level and square one scan in units.length; count its tiles.
+checkpoint measured_surface:
+    input:
+        scan=lambda wc: TOPOGRAPHY[wc.topo]["file"],
+    output:
+        nc="results/measured_surface/{topo}.nc",
+    log:
+        "logs/measured_surface/{topo}.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        entry=lambda wc: TOPOGRAPHY[wc.topo],
+        cfg=config,
+    script:
+        "../scripts/measured_surface.py"
+
+
+# One tile of one scan under one radius (free half-space).
+rule measured_indent:
+    input:
+        surface=rules.measured_surface.output.nc,
+    output:
+        run="results/measured_indent/{topo}/R{radius}_tile{tile}.nc",
+    log:
+        "logs/measured_indent/{topo}/R{radius}_tile{tile}.log",
+    wildcard_constraints:
+        tile=r"\d+",
+    conda:
+        "../../envs/roughcontact.yaml"
+    threads: 1
+    params:
+        job=lambda wc: study_measured.job_of(
+            config, "topography", wc.topo, float(wc.radius), int(wc.tile)
+        ),
+    script:
+        "../scripts/measured_indent.py"
+
+
+# The tiles of one scan: NetCDF groups sphere (radius, tile, force) and flat (tile, force).
+rule measured_merge:
+    input:
+        surface=rules.measured_surface.output.nc,
+        runs=tiles_of,
+    output:
+        nc="results/measured_merge/{topo}.nc",
+    log:
+        "logs/measured_merge/{topo}.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/measured_merge.py"
+
+
+# One seeded surface of one measured spectrum under one radius.
+rule spectrum_indent:
+    input:
+        table=lambda wc: SPECTRUM[wc.spec]["file"],
+    output:
+        run="results/spectrum_indent/{spec}/R{radius}_seed{seed}.nc",
+    log:
+        "logs/spectrum_indent/{spec}/R{radius}_seed{seed}.log",
+    wildcard_constraints:
+        seed=r"\d+",
+    conda:
+        "../../envs/roughcontact.yaml"
+    threads: 1
+    params:
+        job=lambda wc: study_measured.job_of(
+            config, "spectrum", wc.spec, float(wc.radius), int(wc.seed)
+        ),
+    script:
+        "../scripts/measured_indent.py"
+
+
+# The seeds of one spectrum: groups sphere (radius, seed, force) and flat (seed, force).
+rule spectrum_merge:
+    input:
+        runs=expand(
+            rules.spectrum_indent.output.run,
+            radius=RADII,
+            seed=config.get("seeds", []),
+            allow_missing=True,
+        ),
+    output:
+        nc="results/spectrum_merge/{spec}.nc",
+    log:
+        "logs/spectrum_merge/{spec}.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/measured_merge.py"
+
+
+# The report section of one scan: its height map and k(F) with the 95 % band.
+rule measured_figures:
+    input:
+        surface=rules.measured_surface.output.nc,
+        merged=rules.measured_merge.output.nc,
+    output:
+        heights=report(
+            "results/measured_figures/{topo}/height_map.png",
+            caption="../report/measured_heights.rst",
+            category="Measured: {topo}",
+            labels={"figure": "height map"},
+        ),
+        kf=report(
+            "results/measured_figures/{topo}/stiffness.png",
+            caption="../report/measured_stiffness.rst",
+            category="Measured: {topo}",
+            labels={"figure": "k(F)"},
+        ),
+    log:
+        "logs/measured_figures/{topo}.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/measured_figures.py"
