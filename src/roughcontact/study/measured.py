@@ -305,16 +305,17 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
         for radius in radii:
             parts = [runs[order.index((radius, i))] for i in members]
             stacked.append(xr.concat(parts, dim=xr.DataArray(members, dims=ens, name=ens),
-                                     coords="minimal", combine_attrs="drop"))
+                                     coords="minimal", combine_attrs="override"))
         ds = xr.concat(stacked, dim=xr.DataArray(radii, dims="radius", name="radius"), coords="minimal",
-                       combine_attrs="drop") if kind == "sphere" else stacked[0]
+                       combine_attrs="override") if kind == "sphere" else stacked[0]
         ds = ds.assign_coords(force=ds["force"].isel({d: 0 for d in ds["force"].dims if d != "force"}, drop=True))
         ds[ens].attrs.update(long_name="tile of the scan (row by row)" if ens == "tile" else "random seed",
                              units="1")
         if kind == "sphere":
             ds["radius"].attrs.update(long_name="sphere radius R", units=cfg["units"]["length"])
         _add_interval(ds, ens, cfg["fit"]["zeta"])
-        ds.attrs.update(surface_kind=kind, half_space=runs[order.index((radii[0], members[0]))].attrs["half_space"])
+        ds.attrs = {"surface_kind": kind, "half_space": runs[order.index((radii[0], members[0]))].attrs["half_space"],
+                    "run_git_commits": provenance.canonical_json(sorted({r.attrs["git_commit"] for r in runs}))}
         groups[kind] = ds
     extra = {}
     if surface_file is not None:
