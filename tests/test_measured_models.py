@@ -75,11 +75,23 @@ def test_flat_surface():
     assert np.all(out["persson"] > 0) and np.all(np.diff(out["persson"]) > 0)
 
 
+def test_h_rms_override():
+    n, fit = 64, _fit(0.8, n=64)
+    out = predict(FORCES, fit, radius=0.5, e_star=1.0, length=1.0, n=n, h_rms=fit.h_rms)
+    expected = paper.stiffness_from_force(FORCES, radius=0.5, hurst=fit.hurst, h_rms=fit.h_rms, length=1.0,
+                                          e_star=1.0, zeta=float(paper.zeta_estimate(fit.hurst)))
+    np.testing.assert_allclose(out["eq16_paper"], expected, rtol=1e-12)
+    assert float(out["crossover_force"]) == pytest.approx(crossover_force(
+        fit, radius=0.5, e_star=1.0, length=1.0, n=n, h_rms=fit.h_rms), rel=1e-12)
+
+
 def test_bad_input():
     fit = _fit(0.8, n=64)
     with pytest.raises(ValueError, match="force must be"):
         predict([0.0, 1e-3], fit, radius=1.0, e_star=1.0, length=1.0, n=64)
     with pytest.raises(ValueError, match="radius must be"):
         predict(FORCES, fit, radius=-1.0, e_star=1.0, length=1.0, n=64)
+    with pytest.raises(ValueError, match="h_rms must be"):
+        predict(FORCES, fit, radius=1.0, e_star=1.0, length=1.0, n=64, h_rms=0.0)
     with pytest.raises(TypeError, match="SpectrumFit"):
         predict(FORCES, {"hurst": 0.8}, radius=1.0, e_star=1.0, length=1.0, n=64)

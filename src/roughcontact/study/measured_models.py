@@ -7,7 +7,8 @@ surfaces (the same functions where the inputs are parameters):
 
 * ``eq16_paper``: eq. 16 of Pohrt & Popov (2013) with ζ = 1.7/(H+1) (eq. 13), the fitted H and
   the fitted power law's rms height on the ``n × n`` grid of side ``length``
-  (:meth:`SpectrumFit.h_rms_for`); ``eq16_fitted`` the same with the caller's ``zeta``;
+  (:meth:`SpectrumFit.h_rms_for`, or the caller's ``h_rms``); ``eq16_fitted`` the same with the
+  caller's ``zeta``;
 * ``greenwood_tripp``: Greenwood & Tripp (1967) on the summit statistics (Nayak/McCool) of the
   spectral moments of the *measured* spectrum (``fit.moments``), on the scorecard's separations;
 * ``persson``: Persson's interfacial law from the *measured* spectrum (``fit.spectrum``,
@@ -47,11 +48,11 @@ __all__ = ["crossover_force", "predict", "GT_POINTS_PER_UNIT", "GT_RHO_LIMIT"]
 GT_POINTS_PER_UNIT, GT_RHO_LIMIT = 8, 80.0
 
 
-def _combination(fit: SpectrumFit, *, radius, e_star, length, n, zeta) -> scorecard.Combination:
+def _combination(fit: SpectrumFit, *, radius, e_star, length, n, zeta, h_rms) -> scorecard.Combination:
     """The scorecard's combination for the fitted self-affine surface (paraboloid, no roll-off,
     no cutoff, elastic): what :data:`scorecard.MODELS` reads."""
     return scorecard.Combination(
-        radius=float(radius), hurst=fit.hurst, h_rms=fit.h_rms_for(length, n), length=float(length),
+        radius=float(radius), hurst=fit.hurst, h_rms=float(h_rms), length=float(length),
         e_star=float(e_star), exponent=2.0, n=int(n), rolloff=float(length), cutoff=0.0,
         hardness=math.inf, zeta_fit=math.nan if zeta is None else float(zeta))
 
@@ -92,19 +93,20 @@ def _persson(force, fit: SpectrumFit, *, radius, e_star, length):
 
 
 def crossover_force(fit: SpectrumFit, *, radius: float, e_star: float, length: float, n: int,
-                    zeta: float | None = None) -> float:
-    """Eq. 17's crossover force ``F_tr`` (force) with the fitted H and ``h_rms_for(length, n)``,
-    ζ = ``zeta`` or 1.7/(H+1); NaN for ``radius = inf`` (no crossover)."""
+                    zeta: float | None = None, h_rms: float | None = None) -> float:
+    """Eq. 17's crossover force ``F_tr`` (force) with the fitted H and ``h_rms`` (default
+    ``fit.h_rms_for(length, n)``), ζ = ``zeta`` or 1.7/(H+1); NaN for ``radius = inf``."""
     check_radius(radius)
     if math.isinf(radius):
         return math.nan
     zeta = float(paper.zeta_estimate(fit.hurst)) if zeta is None else zeta
-    return float(paper.crossover_force(radius, hurst=fit.hurst, h_rms=fit.h_rms_for(length, n), length=length,
-                                       e_star=e_star, zeta=zeta))
+    h_rms = fit.h_rms_for(length, n) if h_rms is None else h_rms
+    return float(paper.crossover_force(radius, hurst=fit.hurst, h_rms=h_rms, length=length, e_star=e_star,
+                                       zeta=zeta))
 
 
 def predict(force, fit: SpectrumFit, *, radius: float, e_star: float, length: float, n: int,
-            zeta: float | None = None) -> dict[str, np.ndarray]:
+            zeta: float | None = None, h_rms: float | None = None) -> dict[str, np.ndarray]:
     """Stiffness ``k(F)`` of each model of the scorecard for the surface of ``fit`` (module docstring).
 
     Parameters
@@ -126,6 +128,10 @@ def predict(force, fit: SpectrumFit, *, radius: float, e_star: float, length: fl
     zeta : float, optional
         ζ of eq. 11 fitted elsewhere (e.g. the study's ζ(H)): adds ``eq16_fitted`` and is used
         for ``crossover_force``; ``None``: ζ = 1.7/(H+1).
+    h_rms : float, optional
+        Rms height (length) for eq. 16/17 and MDR instead of the fitted power law's
+        ``fit.h_rms_for(length, n)``, e.g. the measured ``fit.h_rms`` for a scan whose spectrum
+        rolls off inside ``L`` (the power law extrapolated to ``q0 = 2π/L`` then overestimates it).
 
     Returns
     -------
@@ -139,14 +145,16 @@ def predict(force, fit: SpectrumFit, *, radius: float, e_star: float, length: fl
     check_finite_positive("e_star", e_star)
     check_finite_positive("length", length)
     check_grid_size(n)
-    if zeta is not None:
-        check_finite_positive("zeta", zeta)
+    for name, value in (("zeta", zeta), ("h_rms", h_rms)):
+        if value is not None:
+            check_finite_positive(name, value)
     if not isinstance(fit, SpectrumFit):
         raise TypeError(f"fit must be a SpectrumFit, got {type(fit).__name__}")
     force = np.asarray(force, dtype=float)
     if force.ndim > 1 or not np.all(np.isfinite(force)) or np.any(force <= 0):
         raise ValueError("force must be a finite scalar or 1-D array of values > 0")
-    combo = _combination(fit, radius=radius, e_star=e_star, length=length, n=n, zeta=zeta)
+    h_rms = fit.h_rms_for(length, n) if h_rms is None else float(h_rms)
+    combo = _combination(fit, radius=radius, e_star=e_star, length=length, n=n, zeta=zeta, h_rms=h_rms)
     out = {}
     for name in scorecard.MODELS:
         if name == "greenwood_tripp":
@@ -158,5 +166,5 @@ def predict(force, fit: SpectrumFit, *, radius: float, e_star: float, length: fl
         if k is not None:
             out[name] = np.asarray(k, dtype=float)
     out["crossover_force"] = np.asarray(crossover_force(fit, radius=radius, e_star=e_star, length=length, n=n,
-                                                        zeta=zeta))
+                                                        zeta=zeta, h_rms=h_rms))
     return out
