@@ -122,6 +122,7 @@ def test_bad_input_raises_one_line():
     assert "window must be" in _one_line(fit_spectrum, h, length=1.0, window="welch")
     assert "detrend must be" in _one_line(fit_spectrum, h, length=1.0, detrend="quadric")
     assert "empty list" in _one_line(fit_spectrum, [], length=1.0)
+    assert "square 2-D arrays" in _one_line(fit_spectrum, 3.0, length=1.0)
     assert "confidence" in _one_line(fit_spectrum, h, length=1.0, confidence=95)
 
 

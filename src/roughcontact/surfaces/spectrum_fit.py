@@ -167,7 +167,7 @@ def _h_rms(prefactor, alpha, length, squares, counts):
 
 def _windows(heights, length, detrend="mean"):
     """The input as a ``(count, n, n)`` float array (each window levelled) and the windows' side."""
-    items = [heights] if isinstance(heights, np.ndarray) or hasattr(heights, "heights") else list(heights)
+    items = list(heights) if isinstance(heights, (list, tuple)) else [heights]
     if not items:
         raise SpectrumFitError("heights is an empty list: give at least one window")
     lengths = {float(item.length) for item in items if hasattr(item, "length")}
