@@ -32,6 +32,7 @@ localrules:
     figures,
     measured_surface,
     measured_merge,
+    measured_spectrum,
     spectrum_merge,
     measured_figures,
 

@@ -52,7 +52,7 @@ def _cfg(**extra):
     base = {"units": UNITS, "e_star": E_STAR, "radius": [20.0, float("inf")], "tile": 32,
             "forces": {"sphere": {"from": 1e-5, "to": 3e-3, "count": 4},
                        "flat": {"from": 1e-3, "to": 1e-2, "count": 3}},
-            "fit": {"zeta": {"bootstrap": 200}}}
+            "fit": {"zeta": {"bootstrap": 200}, "spectrum": {"band": [1.6, 0.25]}}}
     return {**base, **extra}
 
 
@@ -206,6 +206,26 @@ def test_merged_scan_has_units_dims_and_provenance(pipeline):
         assert np.all(ds["k_ci_low"] <= ds["k_mean"]) and np.all(ds["k_mean"] <= ds["k_ci_high"])
     assert (run_dir / "results/measured_figures/scan/stiffness.png").stat().st_size > 0
     assert (run_dir / "results/measured_figures/scan/height_map.png").stat().st_size > 0
+    assert (run_dir / "results/measured_figures/scan/spectrum.png").stat().st_size > 0
+
+
+def test_spectrum_fit_and_models(pipeline):
+    """The fit of the synthetic scan (H = 0.8) over its 4 tiles and the models at the runs' forces."""
+    import pandas as pd
+
+    _, run_dir, _, _ = pipeline
+    fit = pd.read_csv(run_dir / "results/measured_spectrum/scan.csv").iloc[0]
+    assert fit["tiles"] == 4 and fit["wavelength_max"] == 1.6 and fit["unit"] == "um"
+    assert fit["hurst_ci_low"] <= fit["hurst"] <= fit["hurst_ci_high"]
+    assert abs(fit["hurst"] - 0.8) < 0.3, fit["hurst"]   # 4 tiles of 32²: a loose check of the plumbing
+    models = read_groups(run_dir / "results/measured_spectrum/scan.nc")
+    merged = read_groups(run_dir / "results/measured_merge/scan.nc")
+    for kind in ("sphere", "flat"):
+        np.testing.assert_allclose(models[kind]["force"].values, merged[kind]["force"].values, rtol=1e-12)
+        assert models[kind]["stiffness"].attrs["units"] == "N m-1"
+        k = models[kind]["stiffness"].sel(model="eq16_paper").values
+        assert np.all(np.isfinite(k) & (k > 0)), kind
+    assert np.isnan(models["flat"]["stiffness"].sel(model="greenwood_tripp").values).all()
 
 
 def test_spectrum_runs_and_merge(tmp_path):

@@ -97,11 +97,34 @@ rule spectrum_merge:
         "../scripts/measured_merge.py"
 
 
-# The report section of one scan: its height map and k(F) with the 95 % band.
+# The spectrum of one scan over its tiles, its self-affine fit and the models' k(F).
+rule measured_spectrum:
+    input:
+        surface=rules.measured_surface.output.nc,
+    output:
+        csv=report(
+            "results/measured_spectrum/{topo}.csv",
+            caption="../report/measured_fit_table.rst",
+            category="Measured: {topo}",
+            labels={"table": "spectrum fit"},
+        ),
+        nc="results/measured_spectrum/{topo}.nc",
+    log:
+        "logs/measured_spectrum/{topo}.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/measured_spectrum.py"
+
+
+# The report section of one scan: height map, spectrum with the fit, k(F) with the models.
 rule measured_figures:
     input:
         surface=rules.measured_surface.output.nc,
         merged=rules.measured_merge.output.nc,
+        spectrum=rules.measured_spectrum.output.nc,
     output:
         heights=report(
             "results/measured_figures/{topo}/height_map.png",
@@ -109,11 +132,17 @@ rule measured_figures:
             category="Measured: {topo}",
             labels={"figure": "height map"},
         ),
+        psd=report(
+            "results/measured_figures/{topo}/spectrum.png",
+            caption="../report/measured_spectrum.rst",
+            category="Measured: {topo}",
+            labels={"figure": "spectrum and fit"},
+        ),
         kf=report(
             "results/measured_figures/{topo}/stiffness.png",
             caption="../report/measured_stiffness.rst",
             category="Measured: {topo}",
-            labels={"figure": "k(F)"},
+            labels={"figure": "k(F) and models"},
         ),
     log:
         "logs/measured_figures/{topo}.log",

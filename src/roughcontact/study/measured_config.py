@@ -106,6 +106,10 @@ def resolve_inputs(cfg: dict, base_dir: str | os.PathLike | None = None) -> None
     if both:
         raise ConfigError(f"config keys 'topography' and 'spectrum' both name '{sorted(both)[0]}'; "
                           "allowed: distinct names")
+    band = cfg.get("fit", {}).get("spectrum", {}).get("band")
+    if band is not None and not band[0] > band[1]:
+        raise ConfigError(f"config key 'fit.spectrum.band' = {list(band)}: the first wavelength must be the "
+                          "longer; allowed: [longest, shortest] wavelength, longest > shortest > 0")
     if has_measured(cfg):
         units = cfg.get("units") or {}
         for key in ("length", "e_star"):

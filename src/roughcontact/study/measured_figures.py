@@ -1,8 +1,10 @@
-"""The report figures of one measured scan: its height map and k(F) with the band over tiles.
+"""The report figures of one measured scan: height map, spectrum with its fit, k(F) with the models.
 
 What the ``measured_figures`` rule draws from the files of
-:func:`roughcontact.study.measured.prepare_surface` and
-:func:`roughcontact.study.measured.merge_surface`. matplotlib and xarray are imported inside.
+:func:`roughcontact.study.measured.prepare_surface`,
+:func:`roughcontact.study.measured.merge_surface` and
+:func:`roughcontact.study.measured_spectrum.run_spectrum`. matplotlib and xarray are imported
+inside.
 """
 from __future__ import annotations
 
@@ -12,7 +14,11 @@ import numpy as np
 
 from . import provenance
 
-__all__ = ["make_figures", "draw_heights", "draw_stiffness"]
+__all__ = ["make_figures", "draw_heights", "draw_spectrum", "draw_stiffness"]
+
+#: line style of each model's prediction
+MODEL_STYLES = {"eq16_paper": ("eq. 16", ":"), "greenwood_tripp": ("Greenwood-Tripp", (0, (5, 1, 1, 1))),
+                "mdr": ("MDR", (0, (1, 2))), "persson": ("Persson", "-.")}
 
 
 def draw_heights(ax, surface_file, name: str):
@@ -37,11 +43,31 @@ def draw_heights(ax, surface_file, name: str):
     return image
 
 
-def draw_stiffness(ax, merged_file, cfg: dict):
-    """k(F) (N, N/m) of every radius: the mean over the tiles, its band, Hertz for spheres."""
+def draw_spectrum(ax, spectrum_file, unit: str):
+    """The radially averaged spectrum, the fit's bins and the fitted power law over its band."""
+    from .merge import read_groups
+
+    ds = read_groups(spectrum_file)["spectrum"]
+    a = ds.attrs
+    ax.loglog(ds["q"].values, ds["C"].values, ".", color="0.6", ms=1.5, label="shells (mean over tiles)")
+    ax.loglog(ds["fit_q"].values, ds["fit_c"].values, "o", color="C0", ms=4, label="log bins")
+    q = np.geomspace(float(a["q_min"]), float(a["q_max"]), 50)
+    power = float(a["prefactor_persson"]) * q ** (-2 * float(a["hurst"]) - 2)
+    ax.loglog(q, power, "-", color="C3",
+              label=f"H = {float(a['hurst']):.3g} [{float(a['hurst_ci_low']):.3g}, {float(a['hurst_ci_high']):.3g}]")
+    ax.axvspan(float(a["q_min"]), float(a["q_max"]), color="C3", alpha=0.08, lw=0)
+    ax.set_xlabel(f"wavenumber q (rad/{unit})")
+    ax.set_ylabel(f"C(q) ({unit}^4)")
+    ax.legend(fontsize=7)
+
+
+def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
+    """k(F) (N, N/m) of every radius: the mean over the tiles, its band, Hertz for spheres, and
+    the models' predictions of *spectrum_file* (if given)."""
     from .merge import read_groups
 
     groups = read_groups(merged_file)
+    models = read_groups(spectrum_file) if spectrum_file is not None else {}
     e_pa = None
     colors = iter(["C0", "C1", "C2", "C3", "C4", "C5"])
     for kind in ("sphere", "flat"):
@@ -58,6 +84,13 @@ def draw_stiffness(ax, merged_file, cfg: dict):
             if np.all(np.isfinite(sub["k_ci_low"].values)):
                 ax.fill_between(force, sub["k_ci_low"].values, sub["k_ci_high"].values, color=color,
                                 alpha=0.25, lw=0)
+            if kind in models:
+                pred = models[kind].sel(radius=radius) if kind == "sphere" else models[kind]
+                for model, (text, style) in MODEL_STYLES.items():
+                    k = pred["stiffness"].sel(model=model).values
+                    if np.any(np.isfinite(k)):
+                        ax.loglog(pred["force"].values, k, linestyle=style, color=color, lw=0.9,
+                                  label=f"{text}" + (f", R = {radius:g}" if kind == "sphere" else ", flat"))
             if kind == "sphere":
                 from .measured_config import to_metres, to_pascals
 
@@ -71,8 +104,9 @@ def draw_stiffness(ax, merged_file, cfg: dict):
     return groups
 
 
-def make_figures(cfg: dict, name: str, surface_file, merged_file, output) -> None:
-    """Write *output* ``.heights`` and ``.kf`` (PNG, atomic) for the scan *name*."""
+def make_figures(cfg: dict, name: str, surface_file, merged_file, output, spectrum_file=None) -> None:
+    """Write *output* ``.heights``, ``.kf`` and (with *spectrum_file*) ``.psd`` (PNG, atomic)
+    for the scan *name*."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -82,8 +116,13 @@ def make_figures(cfg: dict, name: str, surface_file, merged_file, output) -> Non
     image = draw_heights(ax, surface_file, name)
     fig.colorbar(image, ax=ax, label="measured height h (nm)")
     _save(fig, output.heights)
-    fig, ax = plt.subplots(figsize=(5.6, 4.4), constrained_layout=True)
-    draw_stiffness(ax, merged_file, cfg)
+    if spectrum_file is not None:
+        fig, ax = plt.subplots(figsize=(5.2, 4.4), constrained_layout=True)
+        draw_spectrum(ax, spectrum_file, cfg["units"]["length"])
+        ax.set_title(f"{name}: power spectrum over the tiles and its self-affine fit", fontsize=9)
+        _save(fig, output.psd)
+    fig, ax = plt.subplots(figsize=(6.4, 5.0), constrained_layout=True)
+    draw_stiffness(ax, merged_file, cfg, spectrum_file)
     level = 100 * float(cfg["fit"]["zeta"]["confidence"])
     ax.set_title(f"{name}: mean over tiles, {level:g} % bootstrap band", fontsize=9)
     _save(fig, output.kf)
