@@ -88,7 +88,7 @@ def test_config_resolves_paths_against_its_directory(tmp_path):
     _scan(tmp_path / "scan.nc")
     cfg = config.resolve_config(_cfg(topography=["scan.nc"]), base_dir=tmp_path)
     assert cfg["topography"] == [{"file": str((tmp_path / "scan.nc").resolve()), "name": "scan",
-                                  "unit": None, "size": None, "detrend": "height"}]
+                                  "unit": None, "size": None, "detrend": "height", "interpolate": False}]
     assert cfg["hurst"] == [] and cfg["h_rms"] == [] and cfg["spectrum"] == []
 
 
@@ -135,6 +135,55 @@ def test_unusable_scans(tmp_path, content, needle):
         measured.prepare_surface(cfg, cfg["topography"][0], out)
     assert needle in _one_line(err)
     assert not out.exists()
+
+
+def _line_scan(path):
+    ST.UniformLineScan(np.arange(64.0) ** 1.5, 6.4, unit="µm").to_netcdf(str(path))
+
+
+def _mostly_missing(path):
+    h = np.ma.masked_array(np.random.default_rng(0).normal(size=(64, 64)), mask=np.zeros((64, 64), bool))
+    h.mask[:20] = True
+    ST.Topography(h, (6.4, 6.4), unit="µm").to_netcdf(str(path))
+
+
+def _non_square(path):
+    ST.Topography(np.random.default_rng(0).normal(size=(64, 64)), (6.4, 3.2), unit="µm").to_netcdf(str(path))
+
+
+@pytest.mark.parametrize("write, needle", [
+    (_line_scan, "a line scan"),
+    (_mostly_missing, "are undefined, more than max_missing"),
+    (_non_square, "pixels are not square"),
+])
+def test_scans_the_stage_rejects(tmp_path, write, needle):
+    write(tmp_path / "bad.nc")
+    cfg = _resolved(tmp_path, topography=["bad.nc"])
+    out = tmp_path / "out" / "surface.nc"
+    with pytest.raises(InputFileError) as err:
+        measured.prepare_surface(cfg, cfg["topography"][0], out)
+    assert needle in _one_line(err)
+    assert not out.exists()
+
+
+def test_non_square_pixels_with_interpolate(tmp_path):
+    _non_square(tmp_path / "bad.nc")
+    cfg = _resolved(tmp_path, topography=[{"file": "bad.nc", "interpolate": True}])
+    measured.prepare_surface(cfg, cfg["topography"][0], tmp_path / "surface.nc")
+    assert measured.read_surface(tmp_path / "surface.nc")[0].shape == (32, 32)
+
+
+def test_physical_size_from_neither_file_nor_config(tmp_path):
+    np.save(tmp_path / "raw.npy", np.random.default_rng(0).normal(size=(64, 64)))
+    cfg = _resolved(tmp_path, topography=["raw.npy"])
+    out = tmp_path / "surface.nc"
+    with pytest.raises(InputFileError) as err:
+        measured.prepare_surface(cfg, cfg["topography"][0], out)
+    assert "gives no physical size" in _one_line(err) and not out.exists()
+    cfg = _resolved(tmp_path, topography=[{"file": "raw.npy", "size": 6400, "unit": "nm"}])
+    measured.prepare_surface(cfg, cfg["topography"][0], out)
+    heights, length, attrs = measured.read_surface(out)
+    assert length == pytest.approx(6.4) and attrs["units_length"] == "um" and attrs["tile_count"] == 4
 
 
 def test_loads_whose_contact_would_reach_the_scan_edge(tmp_path):

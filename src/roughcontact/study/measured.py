@@ -86,7 +86,8 @@ def prepare_surface(cfg: dict, entry: dict, output) -> None:
     study_unit = cfg["units"]["length"]
     unit = entry["unit"] or study_unit
     detrend = None if entry["detrend"] == "none" else entry["detrend"]
-    scan = surfaces.from_topography(entry["file"], unit=unit, length=entry["size"], detrend=detrend)
+    scan = surfaces.from_topography(entry["file"], unit=unit, length=entry["size"], detrend=detrend,
+                                    interpolate=bool(entry.get("interpolate", False)))
     factor = _scale(scan.unit, study_unit, entry["file"])
     tile = cfg["tile"] or scan.n
     if tile > scan.n:

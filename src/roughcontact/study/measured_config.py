@@ -25,7 +25,7 @@ LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}
 #: pascals per pressure unit of ``units.e_star``
 PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9}
 
-_TOPOGRAPHY_DEFAULTS = {"name": None, "unit": None, "size": None, "detrend": "height"}
+_TOPOGRAPHY_DEFAULTS = {"name": None, "unit": None, "size": None, "detrend": "height", "interpolate": False}
 _SPECTRUM_DEFAULTS = {"name": None, "convention": "c2d"}
 
 
