@@ -373,3 +373,15 @@ def test_snakemake_stops_on_a_missing_scan_before_any_job(tmp_path):
     lines = [line for line in proc.stderr.splitlines() if "Invalid configuration" in line]
     assert len(lines) == 1 and "config key 'topography[0].file' = 'scans/none.di': no such file" in lines[0]
     assert not (tmp_path / "results").exists() and not (tmp_path / "logs").exists()
+
+
+def test_check_config_resolves_paths_against_the_config_file(tmp_path, monkeypatch, capsys):
+    from roughcontact import cli
+
+    (tmp_path / "cfg" / "scans").mkdir(parents=True)
+    _scan(tmp_path / "cfg" / "scans" / "scan.nc")
+    path = tmp_path / "cfg" / "study.yaml"
+    path.write_text(yaml.safe_dump(_cfg(topography=["scans/scan.nc"])))
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["check-config", str(path)]) == 0
+    assert "measured: 1 scan(s) x 2 radii x their tiles" in capsys.readouterr().out

@@ -153,8 +153,13 @@ def main(argv=None) -> int:
         except ConfigError as err:
             print(config.error_line(err), file=sys.stderr)
             return 2
+        measured = ""
+        if cfg["topography"] or cfg["spectrum"]:
+            measured = (f"; measured: {len(cfg['topography'])} scan(s) x {len(cfg['radius'])} radii x their tiles, "
+                        f"{len(cfg['spectrum'])} spectrum(s) x {len(cfg['radius'])} radii x "
+                        f"{len(cfg['seeds']) if cfg['spectrum'] else 0} seeds")
         print(f"{args.config}: valid; {len(runs.runs(cfg))} indent jobs "
-              f"({len(runs.combinations(cfg))} (H, R, h_rms) x {len(cfg.get('seeds', []))} seeds)")
+              f"({len(runs.combinations(cfg))} (H, R, h_rms) x {len(cfg.get('seeds', []))} seeds){measured}")
         return 0
     try:
         settings = settings_from_args(args)
