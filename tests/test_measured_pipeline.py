@@ -205,8 +205,14 @@ def test_loads_whose_contact_would_reach_the_scan_edge(tmp_path):
     ([(0.0, 1.0), (2.0, 1.0)], "q = 0 is not > 0"),
 ])
 def test_bad_spectrum(tmp_path, rows, needle):
+    """Caught when the config is resolved (before any job), and by the job if the file changed since."""
     _psd(tmp_path / "psd.csv", rows)
+    with pytest.raises(ConfigError) as err:
+        _resolved(tmp_path, spectrum=["psd.csv"], seeds=1, grid={"n": 33, "length": 3.2})
+    assert "config key 'spectrum[0].file'" in _one_line(err) and needle in _one_line(err)
+    _psd(tmp_path / "psd.csv")
     cfg = _resolved(tmp_path, spectrum=["psd.csv"], seeds=1, grid={"n": 33, "length": 3.2})
+    _psd(tmp_path / "psd.csv", rows)
     out = tmp_path / "run.nc"
     with pytest.raises(InputFileError) as err:
         measured.run_job(measured.job_of(cfg, "spectrum", "psd", float("inf"), 0), tmp_path / "psd.csv", out)

@@ -2,8 +2,9 @@
 
 :func:`resolve_inputs` turns the entries of ``topography`` and ``spectrum`` (a path, or a
 mapping) into complete mappings with absolute paths, checks that the files exist and that
-``units`` is given, all as one-line :class:`~roughcontact.errors.ConfigError`\\ s naming the
-key. Only the standard library is used: the workflow imports this while it parses.
+``units`` is given, and reads every spectrum table (:func:`roughcontact.surfaces.read_psd`,
+numpy only: a table with non-positive or non-finite values stops the workflow before any job),
+all as one-line :class:`~roughcontact.errors.ConfigError`\\ s naming the key.
 
 Paths are relative to the directory of the config file that lists them (``base_dir``): the
 workflow passes the directory of the last ``--configfile`` that names ``topography`` or
@@ -15,7 +16,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..errors import ConfigError
+from ..errors import ConfigError, InputFileError
+from ..surfaces.psd import read_psd
 
 __all__ = ["LENGTH_UNITS", "PRESSURE_UNITS", "config_directory", "has_measured", "resolve_inputs",
            "topography_names", "spectrum_names", "to_metres", "to_pascals"]
@@ -102,6 +104,15 @@ def resolve_inputs(cfg: dict, base_dir: str | os.PathLike | None = None) -> None
     base = Path(base_dir if base_dir is not None else os.getcwd()).resolve()
     cfg["topography"] = _entries(cfg, "topography", _TOPOGRAPHY_DEFAULTS, base)
     cfg["spectrum"] = _entries(cfg, "spectrum", _SPECTRUM_DEFAULTS, base)
+    for i, entry in enumerate(cfg["spectrum"]):  # a bad table stops the workflow before any job
+        try:
+            table = read_psd(entry["file"], convention=entry["convention"])
+        except InputFileError as err:
+            raise ConfigError(f"config key 'spectrum[{i}].file': {err}") from None
+        unit = None if table.unit is None else table.unit.replace("µ", "u").replace("μ", "u")
+        if unit is not None and unit not in LENGTH_UNITS:
+            raise ConfigError(f"config key 'spectrum[{i}].file': {table.source}: length unit {table.unit!r}; "
+                              f"allowed: {', '.join(LENGTH_UNITS)} (or none: units.length)")
     both = set(topography_names(cfg)) & set(spectrum_names(cfg))
     if both:
         raise ConfigError(f"config keys 'topography' and 'spectrum' both name '{sorted(both)[0]}'; "
