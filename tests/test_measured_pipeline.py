@@ -21,10 +21,10 @@ import yaml
 
 ST = pytest.importorskip("SurfaceTopography")
 
-from roughcontact import bem, surfaces  # noqa: E402
-from roughcontact.errors import ConfigError, IndentError, InputFileError  # noqa: E402
-from roughcontact.study import config, measured  # noqa: E402
-from roughcontact.study.merge import read_groups  # noqa: E402
+from roughcontact import bem, surfaces
+from roughcontact.errors import ConfigError, IndentError, InputFileError
+from roughcontact.study import config, measured
+from roughcontact.study.merge import read_groups
 
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = Path(os.environ.get("ROUGHCONTACT_TOPOGRAPHIES", ROOT.parent / "shared" / "topographies"))
@@ -182,7 +182,7 @@ def test_physical_size_from_neither_file_nor_config(tmp_path):
     assert "gives no physical size" in _one_line(err) and not out.exists()
     cfg = _resolved(tmp_path, topography=[{"file": "raw.npy", "size": 6400, "unit": "nm"}])
     measured.prepare_surface(cfg, cfg["topography"][0], out)
-    heights, length, attrs = measured.read_surface(out)
+    _, length, attrs = measured.read_surface(out)
     assert length == pytest.approx(6.4) and attrs["units_length"] == "um" and attrs["tile_count"] == 4
 
 
@@ -241,7 +241,7 @@ def pipeline(tmp_path_factory):
 
 
 def test_merged_scan_has_units_dims_and_provenance(pipeline):
-    work, run_dir, _, cfg = pipeline
+    work, run_dir, _, _ = pipeline
     import xarray as xr
 
     path = run_dir / "results/measured_merge/scan.nc"
@@ -353,20 +353,26 @@ def test_example_preset_resolves():
     assert cfg["hurst"] == [] and cfg["tile"] == 256
 
 
-def test_spectrum_rules_plan_one_job_per_radius_and_seed(tmp_path):
-    """snakemake -n of a spectrum-only config: spectrum_indent per (radius, seed), one merge."""
+def test_spectrum_rules_run_one_job_per_radius_and_seed(tmp_path):
+    """A spectrum-only config through snakemake (about 20 s): spectrum_indent per (radius, seed),
+    one spectrum_merge, no generated surface; the merged file as the jobs in this process make it."""
     _psd(tmp_path / "psd.csv")
-    (tmp_path / "study.yaml").write_text(yaml.safe_dump(_cfg(spectrum=["psd.csv"], seeds=3, hurst=[], h_rms=[],
+    (tmp_path / "study.yaml").write_text(yaml.safe_dump(_cfg(spectrum=["psd.csv"], seeds=2, hurst=[], h_rms=[],
                                                              grid={"n": 33, "length": 3.2})))
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
-    proc = subprocess.run([sys.executable, "-m", "snakemake", "-n", "-s", str(ROOT / "Snakefile"), "--configfile",
-                           "study.yaml"], cwd=tmp_path, capture_output=True, text=True, timeout=300, env=env)
+    proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "-s", str(ROOT / "Snakefile"),
+                           "--configfile", "study.yaml"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=300, env=env, check=False)
     assert proc.returncode == 0, proc.stderr[-3000:]
     out = proc.stdout + proc.stderr
     counts = {line.split()[0]: int(line.split()[1]) for line in out.splitlines()
               if len(line.split()) == 2 and line.split()[1].isdigit()}
-    assert counts.get("spectrum_indent") == 2 * 3 and counts.get("spectrum_merge") == 1, counts
+    assert counts.get("spectrum_indent") == 2 * 2 and counts.get("spectrum_merge") == 1, counts
     assert "indent" not in counts and "merge" not in counts, counts
+    groups = read_groups(tmp_path / "results/spectrum_merge/psd.nc")
+    assert tuple(groups["sphere"]["stiffness"].dims) == ("radius", "seed", "force")
+    assert groups["flat"].attrs["half_space"] == "periodic"
+    assert groups["sphere"]["stiffness"].attrs["units"] == "N m-1"
 
 
 def test_snakemake_stops_on_a_missing_scan_before_any_job(tmp_path):

@@ -51,6 +51,7 @@ rule measured_merge:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        source="topography",
     script:
         "../scripts/measured_merge.py"
 
@@ -93,6 +94,7 @@ rule spectrum_merge:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        source="spectrum",
     script:
         "../scripts/measured_merge.py"
 

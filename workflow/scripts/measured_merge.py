@@ -3,8 +3,8 @@ from roughcontact.study.logs import log_to
 from roughcontact.study.measured import merge_surface
 
 snakemake = globals()["snakemake"]
-source, name = ("topography", snakemake.wildcards.topo) if "topo" in snakemake.wildcards.keys() else (
-    "spectrum", snakemake.wildcards.spec)
+source = snakemake.params.source
+name = snakemake.wildcards.topo if source == "topography" else snakemake.wildcards.spec
 with log_to(snakemake.log[0]):
     merge_surface(snakemake.params.cfg, source, name, snakemake.input.runs, snakemake.output.nc,
-                  surface_file=snakemake.input.get("surface"))
+                  surface_file=snakemake.input.surface if source == "topography" else None)

@@ -32,7 +32,6 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import logging
-import math
 
 import numpy as np
 

@@ -115,7 +115,7 @@ def resolve_inputs(cfg: dict, base_dir: str | os.PathLike | None = None) -> None
                               f"allowed: {', '.join(LENGTH_UNITS)} (or none: units.length)")
     both = set(topography_names(cfg)) & set(spectrum_names(cfg))
     if both:
-        raise ConfigError(f"config keys 'topography' and 'spectrum' both name '{sorted(both)[0]}'; "
+        raise ConfigError(f"config keys 'topography' and 'spectrum' both name '{min(both)}'; "
                           "allowed: distinct names")
     band = cfg.get("fit", {}).get("spectrum", {}).get("band")
     if band is not None and not band[0] > band[1]:
