@@ -35,6 +35,7 @@ localrules:
     measured_spectrum,
     spectrum_merge,
     measured_figures,
+    spectrum_figures,
 
 
 rule all:

@@ -41,9 +41,10 @@ def _scan(path, n=64, seed=3):
 
 
 def _psd(path, rows=None):
-    """A power-law table C2D = q^-3.6 (H = 0.8) in µm units, 'q (1/um), C (um^4)'."""
+    """A power-law table C2D ∝ q^-3.6 (H = 0.8) in µm units, 'q (1/um), C (um^4)': on the 33²
+    grid of 3.2 µm, h_rms ≈ 17 nm and rms slope ≈ 0.08 (the flat loads stay far from full contact)."""
     q = np.geomspace(1.0, 100.0, 30)
-    rows = rows if rows is not None else zip(q, 1e-6 * q ** -3.6)
+    rows = rows if rows is not None else zip(q, 3e-3 * q ** -3.6)
     path.write_text("q (1/um), C (um^4)\n" + "".join(f"{float(a)!r}, {float(b)!r}\n" for a, b in rows))
     return path
 
@@ -186,6 +187,16 @@ def test_physical_size_from_neither_file_nor_config(tmp_path):
     assert length == pytest.approx(6.4) and attrs["units_length"] == "um" and attrs["tile_count"] == 4
 
 
+def test_full_contact_of_a_periodic_surface(tmp_path):
+    _psd(tmp_path / "psd.csv")
+    cfg = _resolved(tmp_path, spectrum=["psd.csv"], seeds=1, grid={"n": 33, "length": 3.2},
+                    forces={"flat": {"from": 1e-2, "to": 10.0, "count": 3}})
+    out = tmp_path / "run.nc"
+    with pytest.raises(IndentError) as err:
+        measured.run_job(measured.job_of(cfg, "spectrum", "psd", float("inf"), 0), tmp_path / "psd.csv", out)
+    assert "lower forces.flat.to" in _one_line(err) and not out.exists()
+
+
 def test_loads_whose_contact_would_reach_the_scan_edge(tmp_path):
     _scan(tmp_path / "scan.nc")
     cfg = _resolved(tmp_path, topography=["scan.nc"],
@@ -307,6 +318,7 @@ def test_spectrum_runs_and_merge(tmp_path):
     groups = read_groups(tmp_path / "psd.nc")
     assert tuple(groups["sphere"]["stiffness"].dims) == ("radius", "seed", "force")
     assert groups["flat"]["seed"].values.tolist() == [0, 1]
+    assert np.all(np.isfinite(groups["flat"]["stiffness"].values))
     assert groups["flat"].attrs["half_space"] == "periodic"
     assert groups["sphere"].attrs["half_space"] == "free (non-periodic)"
 
@@ -373,6 +385,7 @@ def test_spectrum_rules_run_one_job_per_radius_and_seed(tmp_path):
     assert tuple(groups["sphere"]["stiffness"].dims) == ("radius", "seed", "force")
     assert groups["flat"].attrs["half_space"] == "periodic"
     assert groups["sphere"]["stiffness"].attrs["units"] == "N m-1"
+    assert (tmp_path / "results/spectrum_figures/psd/stiffness.png").stat().st_size > 0
 
 
 def test_snakemake_stops_on_a_missing_scan_before_any_job(tmp_path):

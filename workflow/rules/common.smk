@@ -84,5 +84,5 @@ def tiles_of(wildcards):
 def measured_targets():
     """Every merged file and figure of the measured inputs (empty without them)."""
     return expand(rules.measured_figures.output.kf, topo=list(TOPOGRAPHY)) + expand(
-        rules.spectrum_merge.output.nc, spec=list(SPECTRUM)
+        rules.spectrum_figures.output.kf, spec=list(SPECTRUM)
     )

@@ -154,3 +154,24 @@ rule measured_figures:
         cfg=config,
     script:
         "../scripts/measured_figures.py"
+
+
+# The report section of one spectrum: k(F) of its seeded surfaces with the band over seeds.
+rule spectrum_figures:
+    input:
+        merged=rules.spectrum_merge.output.nc,
+    output:
+        kf=report(
+            "results/spectrum_figures/{spec}/stiffness.png",
+            caption="../report/spectrum_stiffness.rst",
+            category="Spectrum: {spec}",
+            labels={"figure": "k(F)"},
+        ),
+    log:
+        "logs/spectrum_figures/{spec}.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/spectrum_figures.py"

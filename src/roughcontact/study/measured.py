@@ -230,8 +230,13 @@ def run_job(job: MeasuredJob, source_file, output) -> dict:
             if not state.converged:
                 raise IndentError(f"{job.describe()}: the contact solver did not converge at F/(E* L^2) = "
                                   f"{normalized[i]:.3g}; raise solver.maxiter or loosen solver.tol")
+            k = bem.stiffness(state, method=job.stiffness_method, rel_step=job.rel_step)
+            if not (np.isfinite(k) and k > 0):   # a periodic surface pressed into full contact
+                raise IndentError(f"{job.describe()}: stiffness k = {k!r} at F/(E* L^2) = {normalized[i]:.3g} "
+                                  f"({int(np.count_nonzero(state.contact))} of {z.size} cells in contact); "
+                                  f"lower forces.{job.kind}.to")
             out["depth"][i] = state.depth
-            out["stiffness"][i] = bem.stiffness(state, method=job.stiffness_method, rel_step=job.rel_step)
+            out["stiffness"][i] = k
             out["contact_cells"][i] = int(np.count_nonzero(state.contact))
             out["contact_area"][i] = state.contact_area
             out["iterations"][i] = state.iterations

@@ -14,7 +14,7 @@ import numpy as np
 
 from . import provenance
 
-__all__ = ["make_figures", "draw_heights", "draw_spectrum", "draw_stiffness"]
+__all__ = ["make_figures", "make_spectrum_figure", "draw_heights", "draw_spectrum", "draw_stiffness"]
 
 #: line style of each model's prediction
 MODEL_STYLES = {"eq16_paper": ("eq. 16", ":"), "greenwood_tripp": ("Greenwood-Tripp", (0, (5, 1, 1, 1))),
@@ -79,7 +79,8 @@ def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
             sub = ds.sel(radius=radius) if kind == "sphere" else ds
             force = sub["force"].values
             color = next(colors)
-            label = f"R = {radius:g} {cfg['units']['length']}" if kind == "sphere" else "flat (rough punch)"
+            flat = "flat (rough punch)" if ds.attrs.get("half_space", "").startswith("free") else "flat (periodic)"
+            label = f"R = {radius:g} {cfg['units']['length']}" if kind == "sphere" else flat
             ax.loglog(force, sub["k_mean"].values, "o-", color=color, ms=3, label=label)
             if np.all(np.isfinite(sub["k_ci_low"].values)):
                 ax.fill_between(force, sub["k_ci_low"].values, sub["k_ci_high"].values, color=color,
@@ -125,6 +126,20 @@ def make_figures(cfg: dict, name: str, surface_file, merged_file, output, spectr
     draw_stiffness(ax, merged_file, cfg, spectrum_file)
     level = 100 * float(cfg["fit"]["zeta"]["confidence"])
     ax.set_title(f"{name}: mean over tiles, {level:g} % bootstrap band", fontsize=9)
+    _save(fig, output.kf)
+
+
+def make_spectrum_figure(cfg: dict, name: str, merged_file, output) -> None:
+    """Write *output* ``.kf`` (PNG, atomic): k(F) of the surfaces drawn from the spectrum *name*."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 5.0), constrained_layout=True)
+    draw_stiffness(ax, merged_file, cfg)
+    level = 100 * float(cfg["fit"]["zeta"]["confidence"])
+    ax.set_title(f"{name}: mean over {len(cfg['seeds'])} seeds, {level:g} % bootstrap band", fontsize=9)
     _save(fig, output.kf)
 
 
