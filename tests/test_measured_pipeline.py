@@ -93,6 +93,17 @@ def test_config_resolves_paths_against_its_directory(tmp_path):
     assert cfg["hurst"] == [] and cfg["h_rms"] == [] and cfg["spectrum"] == []
 
 
+def test_config_directory_is_that_of_the_last_file_naming_inputs(tmp_path):
+    from roughcontact.study.measured_config import config_directory
+
+    for sub, text in (("a", "topography: [x.nc]\n"), ("b", "spectrum: [p.csv]\n"), ("c", "hurst: [0.5]\n")):
+        (tmp_path / sub).mkdir()
+        (tmp_path / sub / "c.yaml").write_text(text)
+    files = [tmp_path / "a/c.yaml", tmp_path / "b/c.yaml", tmp_path / "c/c.yaml", tmp_path / "missing.yaml"]
+    assert config_directory(files) == str((tmp_path / "b").resolve())
+    assert config_directory(files[2:]) is None
+
+
 def test_generated_configs_are_unchanged():
     """Every preset resolves to what it did, plus the empty measured keys."""
     for preset in sorted((ROOT / "presets").glob("*.yaml")):
