@@ -32,6 +32,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import logging
+import os
 
 import numpy as np
 
@@ -94,7 +95,7 @@ def prepare_surface(cfg: dict, entry: dict, output) -> None:
                              f"fewer than a tile of tile = {tile}")
     record = {f"scan_{k}": v for k, v in scan.record.items()}
     attrs = provenance.provenance_attrs(
-        title="roughcontact measured surface", name=entry["name"], file=entry["file"].rsplit("/", 1)[-1],
+        title="roughcontact measured surface", name=entry["name"], file=os.path.basename(entry["file"]),
         file_sha256=sha256(entry["file"]), length=scan.length * factor, units_length=study_unit,
         tile=int(tile), tile_count=(scan.n // tile) ** 2, tile_length=scan.length * factor * tile / scan.n,
         **record)
@@ -126,12 +127,32 @@ def tile_count(path) -> int:
 
 @dataclasses.dataclass(frozen=True)
 class MeasuredJob:
-    """Everything one measured load path depends on (lengths in ``length_unit``,
-    ``e_star`` in ``pressure_unit``, forces ``F/(E* L²)``)."""
+    """Everything one measured load path depends on (:func:`job_of`).
 
-    source: str          # "topography" or "spectrum"
+    Attributes
+    ----------
+    source, name, index :
+        ``"topography"`` or ``"spectrum"``, the surface's name, and the tile (row by row) or
+        the seed.
+    radius : float
+        Sphere radius (``length_unit``); ``inf``: nominally flat.
+    e_star : float
+        Effective modulus (``pressure_unit``).
+    length_unit, pressure_unit : str
+        ``units.length`` and ``units.e_star``.
+    force_from, force_to, force_count :
+        The log-spaced load path, ``F/(E* L²)`` with ``L`` the tile's (or grid's) side.
+    tol, maxiter, stiffness_method, rel_step :
+        Solver settings (``solver``).
+    tile : int or None
+        Topography: the tile's side in cells (``None``: the whole square).
+    n, length, convention :
+        Spectrum: grid points per side, side (``length_unit``) and the table's convention.
+    """
+
+    source: str
     name: str
-    index: int           # tile (topography) or seed (spectrum)
+    index: int
     radius: float
     e_star: float
     length_unit: str
@@ -143,8 +164,8 @@ class MeasuredJob:
     maxiter: int
     stiffness_method: str
     rel_step: float
-    tile: int | None = None                    # topography: tile side in cells (None: whole)
-    n: int | None = None                       # spectrum: grid
+    tile: int | None = None
+    n: int | None = None
     length: float | None = None
     convention: str = "c2d"
 
@@ -329,7 +350,7 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
     entry = next(e for e in cfg[source] if e["name"] == name)
     attrs = provenance.provenance_attrs(
         config=cfg, title=f"roughcontact measured study: {source} {name}", source=source,
-        **({"file": entry["file"].rsplit("/", 1)[-1], "file_sha256": sha256(entry["file"])} | extra),
+        **({"file": os.path.basename(entry["file"]), "file_sha256": sha256(entry["file"])} | extra),
         e_star=cfg["e_star"], e_star_units=cfg["units"]["e_star"], units_length=cfg["units"]["length"])
     write_groups(output, groups, attrs)
 
