@@ -1,5 +1,7 @@
 # Measured inputs (docs/guide/measured.md): the scans of `topography` cut into tiles, and the
 # surfaces drawn from each `spectrum` per seed, pressed per radius; one merged file per surface.
+
+
 # Read, level and square one scan in units.length; count its tiles.
 checkpoint measured_surface:
     input:
