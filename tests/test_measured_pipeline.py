@@ -163,14 +163,25 @@ def _non_square(path):
     ST.Topography(np.random.default_rng(0).normal(size=(64, 64)), (6.4, 3.2), unit="µm").to_netcdf(str(path))
 
 
+def _deflection_only(path):
+    """A minimal Molecular Imaging file whose one channel is a deflection in volts."""
+    lines = [("fileType", "Image"), ("xPixels", 64), ("yPixels", 64), ("xLength", "6.4e-6"),
+             ("yLength", "6.4e-6"), ("bufferLabel", "Deflection"), ("bufferUnit", "V"),
+             ("bufferRange", "1.0"), ("data", "BINARY")]
+    header = "".join(f"{k:<14}{v}\n" for k, v in lines).encode()
+    path.write_bytes(header + np.random.default_rng(0).integers(-1000, 1000, (64, 64)).astype("<i2").tobytes())
+
+
 @pytest.mark.parametrize("write, needle", [
     (_line_scan, "a line scan"),
+    (_deflection_only, "no height channel"),
     (_mostly_missing, "are undefined, more than max_missing"),
     (_non_square, "pixels are not square"),
 ])
 def test_scans_the_stage_rejects(tmp_path, write, needle):
-    write(tmp_path / "bad.nc")
-    cfg = _resolved(tmp_path, topography=["bad.nc"])
+    name = "bad.mi" if write is _deflection_only else "bad.nc"
+    write(tmp_path / name)
+    cfg = _resolved(tmp_path, topography=[name])
     out = tmp_path / "out" / "surface.nc"
     with pytest.raises(InputFileError) as err:
         measured.prepare_surface(cfg, cfg["topography"][0], out)
