@@ -14,7 +14,8 @@ checkpoint measured_surface:
         "../../envs/roughcontact.yaml"
     params:
         entry=lambda wc: TOPOGRAPHY[wc.topo],
-        cfg=config,
+        # only what the surface depends on: another load or fit setting keeps the tiles' runs
+        cfg={"units": config["units"], "tile": config["tile"]},
     script:
         "../scripts/measured_surface.py"
 

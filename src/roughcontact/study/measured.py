@@ -78,6 +78,8 @@ def _scale(unit, study_unit: str, name: str) -> float:
 def prepare_surface(cfg: dict, entry: dict, output) -> None:
     """Read the scan of one ``topography`` entry and write it, in ``units.length``, to *output*.
 
+    *cfg* needs only ``units`` and ``tile`` (a resolved config, or just those keys).
+
     Raises :class:`~roughcontact.errors.InputFileError` (one line, nothing written) for a scan
     that cannot be used, including one smaller than ``tile``.
     """
