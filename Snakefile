@@ -18,6 +18,7 @@ report: "workflow/report/workflow.rst"
 include: "workflow/rules/indent.smk"
 include: "workflow/rules/analysis.smk"
 include: "workflow/rules/figures.smk"
+include: "workflow/rules/measured.smk"
 
 
 localrules:
@@ -29,15 +30,29 @@ localrules:
     claims,
     models,
     figures,
+    measured_surface,
+    measured_merge,
+    measured_spectrum,
+    spectrum_merge,
+    measured_figures,
+    spectrum_figures,
 
 
 rule all:
     default_target: True
     input:
-        rules.merge.output,
-        rules.fit_zeta.output,
-        rules.crossover.output,
-        rules.exponents.output,
-        rules.claims.output,
-        rules.models.output,
-        rules.figures.output,
+        # the generated surfaces' study (none when hurst is empty: measured inputs only)
+        (
+            [
+                rules.merge.output,
+                rules.fit_zeta.output,
+                rules.crossover.output,
+                rules.exponents.output,
+                rules.claims.output,
+                rules.models.output,
+                rules.figures.output,
+            ]
+            if config["hurst"]
+            else []
+        ),
+        measured_targets(),

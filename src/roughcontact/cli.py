@@ -10,6 +10,7 @@ from the defaults of the configuration schema (the same defaults as a sweep's).
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 from .errors import ConfigError, IndentError
@@ -147,12 +148,18 @@ def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     if args.command == "check-config":
         try:
-            cfg = config.resolve_config(config.load_config(args.config))
+            cfg = config.resolve_config(config.load_config(args.config),
+                                        base_dir=os.path.dirname(os.path.abspath(args.config)))
         except ConfigError as err:
             print(config.error_line(err), file=sys.stderr)
             return 2
+        measured = ""
+        if cfg["topography"] or cfg["spectrum"]:
+            measured = (f"; measured: {len(cfg['topography'])} scan(s) x {len(cfg['radius'])} radii x their tiles, "
+                        f"{len(cfg['spectrum'])} spectrum(s) x {len(cfg['radius'])} radii x "
+                        f"{len(cfg['seeds']) if cfg['spectrum'] else 0} seeds")
         print(f"{args.config}: valid; {len(runs.runs(cfg))} indent jobs "
-              f"({len(runs.combinations(cfg))} (H, R, h_rms) x {len(cfg['seeds'])} seeds)")
+              f"({len(runs.combinations(cfg))} (H, R, h_rms) x {len(cfg.get('seeds', []))} seeds){measured}")
         return 0
     try:
         settings = settings_from_args(args)

@@ -16,14 +16,18 @@ os.environ.update(
 from roughcontact.errors import ConfigError  # noqa: E402  (numpy only)
 from roughcontact.study import (
     config as rc_config,
+    measured_config,
     runs as study_runs,
     schema,
     settings as study_settings,
 )  # noqa: E402
 
 try:
-    # one line naming the key and what is allowed, before any job starts
-    C = rc_config.resolve_config(config)
+    # one line naming the key and what is allowed, before any job starts; the paths of
+    # topography and spectrum are relative to the last config file that names them
+    C = rc_config.resolve_config(
+        config, base_dir=measured_config.config_directory(workflow.configfiles)
+    )
 except ConfigError as err:
     raise SystemExit(rc_config.error_line(err))
 # the same schema (package data) through Snakemake (passes once resolve_config did)
@@ -53,3 +57,32 @@ def indent_mem_mb(wildcards, attempt):
 
 def indent_runtime(wildcards, attempt):
     return study_runs.indent_resources(config)["runtime"] * attempt
+
+
+# The measured inputs (workflow/rules/measured.smk): scans by name, spectra by name, radii.
+from roughcontact.study import (
+    measured as study_measured,
+)  # noqa: E402  (numpy only; xarray, SurfaceTopography inside the jobs)
+
+TOPOGRAPHY = {e["name"]: e for e in config["topography"]}
+SPECTRUM = {e["name"]: e for e in config["spectrum"]}
+RADII = [study_runs.format_value(r) for r in config["radius"]]
+
+
+def tiles_of(wildcards):
+    """The run files of one scan: known once its surface file gives the number of tiles."""
+    surface = checkpoints.measured_surface.get(topo=wildcards.topo).output.nc
+    count = study_measured.tile_count(surface)
+    return expand(
+        rules.measured_indent.output.run,
+        topo=wildcards.topo,
+        radius=RADII,
+        tile=range(count),
+    )
+
+
+def measured_targets():
+    """Every merged file and figure of the measured inputs (empty without them)."""
+    return expand(rules.measured_figures.output.kf, topo=list(TOPOGRAPHY)) + expand(
+        rules.spectrum_figures.output.kf, spec=list(SPECTRUM)
+    )

@@ -36,6 +36,7 @@ import numpy as np
 
 from ..errors import ConfigError
 from ..models import paper
+from .measured_config import resolve_inputs
 from .runs import kind_of
 from .schema import (
     check_finite,
@@ -102,12 +103,15 @@ def full_contact_slope(hurst: float, n: int, length: float, *, rolloff: float | 
         return float(np.sqrt(num / den))
 
 
-def resolve_config(raw: dict, schema=None) -> dict:
+def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = None) -> dict:
     """Validate and normalise a config; return the resolved copy.
 
     Raises :class:`ConfigError` with one line naming the offending key and
     what is allowed.  *schema* is a path or a loaded dict (default: the
-    schema of the checkout).
+    schema of the checkout).  *base_dir*: the directory of the config file, against which
+    the relative paths of ``topography`` and ``spectrum`` are resolved (default: the current
+    directory); the resolved config holds absolute paths
+    (:func:`roughcontact.study.measured_config.resolve_inputs`).
     """
     import jsonschema
 
@@ -129,12 +133,15 @@ def resolve_config(raw: dict, schema=None) -> dict:
     cfg["grid"]["n"] = int(cfg["grid"]["n"])
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
     cfg["e_star"] = float(cfg["e_star"])
+    for axis in ("hurst", "h_rms"):  # absent (or empty) with measured inputs only
+        cfg.setdefault(axis, [])
     for axis in ("hurst", "radius", "h_rms", "exponent"):
         cfg[axis] = sorted(float(v) for v in cfg[axis])
     for axis in ("rolloff", "cutoff", "hardness"):  # null (the paper's setting) first
         cfg[axis] = sorted((None if v is None else float(v) for v in cfg[axis]), key=lambda v: (v is not None, v))
-    seeds = cfg["seeds"]
-    cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)
+    if "seeds" in cfg:  # absent with measured scans only
+        seeds = cfg["seeds"]
+        cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)
     for rng in cfg["forces"].values():
         rng["from"], rng["to"], rng["count"] = float(rng["from"]), float(rng["to"]), int(rng["count"])
 
@@ -142,6 +149,11 @@ def resolve_config(raw: dict, schema=None) -> dict:
     window = cfg["fit"]["slopes"]["window"]
     if window % 2 == 0:
         raise ConfigError(f"config key 'fit.slopes.window' = {window} is not allowed; allowed: an odd integer >= 3")
+    resolve_inputs(cfg, base_dir)
+    if bool(cfg["hurst"]) != bool(cfg["h_rms"]):
+        empty = "hurst" if not cfg["hurst"] else "h_rms"
+        raise ConfigError(f"config key '{empty}' is empty but '{'h_rms' if empty == 'hurst' else 'hurst'}' is not; "
+                          "allowed: both empty (no generated surface) or both non-empty")
     kinds = {kind_of(r) for r in cfg["radius"]}
     n, length = cfg["grid"]["n"], cfg["grid"]["length"]
     for kind, rng in cfg["forces"].items():
@@ -158,6 +170,8 @@ def resolve_config(raw: dict, schema=None) -> dict:
                     f"grid.length^2 = {force:g}, outside the range of floating-point numbers; allowed: "
                     f"{sys.float_info.min:.3g} <= F <= {sys.float_info.max:.3g}"
                 )
+    if not cfg["hurst"]:  # measured inputs only: the checks of the generated surfaces do not apply
+        return cfg
     if "flat" in kinds:
         slope = min(full_contact_slope(h, n, length) for h in cfg["hurst"]) * min(cfg["h_rms"])
         limit = 0.5 * slope

@@ -17,6 +17,7 @@ from .measured import MeasuredSurface, from_topography
 from .moments import SpectralMoments, self_affine_moments, spectral_moments
 from .psd import PsdTable, read_psd, surface_from_psd
 from .roughness import self_affine, wavevectors
+from .spectrum_fit import SpectrumFit, fit_spectrum
 from .subwindows import EdgeJump, edge_jump, tiles
 
 __all__ = [
@@ -24,7 +25,9 @@ __all__ = [
     "MeasuredSurface",
     "PsdTable",
     "SpectralMoments",
+    "SpectrumFit",
     "edge_jump",
+    "fit_spectrum",
     "from_topography",
     "read_psd",
     "surface_from_psd",

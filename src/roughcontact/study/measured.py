@@ -1,0 +1,384 @@
+"""The measured stage of the study: scans and spectra pressed as indenters, in physical units.
+
+Three jobs per measured surface (``workflow/rules/measured.smk``):
+
+* :func:`prepare_surface`: a scan (``topography`` entry) read by
+  :func:`roughcontact.surfaces.from_topography` (levelled, cut to its largest centred square),
+  converted to ``units.length`` and written with its record, the SHA-256 of the file and the
+  number of tiles (``tile``) to one NetCDF file;
+* :func:`run_job`: one load path of one tile of a scan, or of one seed of a spectrum
+  (:func:`roughcontact.surfaces.surface_from_psd` on the grid ``grid.n``, ``grid.length``), for
+  one radius;
+* :func:`merge_surface`: the runs of one surface, one group per kind (``sphere``: dims
+  ``radius, tile|seed, force``; ``flat``: ``tile|seed, force``), with the bootstrap interval of
+  the mean stiffness over the tiles (or seeds), CF ``units`` and provenance.
+
+Half-spaces. A body (finite ``radius``: ``r²/2R`` superposed on the heights, apex at the node
+``(n//2, n//2)``) is pressed on the free half-space, as for generated surfaces; its contact must
+stay off the outer ring of cells of the tile, else the job stops with one line ("loads whose
+contact would reach the scan's edge"). A nominally flat tile (``radius: .inf``) is not
+periodic, so it is pressed as a finite rough punch of the tile's side on the free half-space
+(contact at its edge cells allowed); see ``docs/guide/measured.md`` for the free-vs-periodic
+numbers. A spectrum's surfaces are periodic by construction: flat ones on the periodic
+half-space, as the generated ones.
+
+Units. Lengths are in ``units.length``, ``e_star`` in ``units.e_star``; the forces of the
+config are ``F/(E* L²)`` with ``L`` the side of the tile (or ``grid.length``). The files give
+``force`` in N and ``stiffness`` in N/m beside ``force_normalized`` and
+``stiffness_normalized = k/(E* L)``.
+"""
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import logging
+import os
+
+import numpy as np
+
+from .. import bem, surfaces
+from ..errors import DomainTooSmallError, IndentError, InputFileError
+from ..surfaces.bodies import paraboloid
+from . import provenance, statistics
+from .measured_config import LENGTH_UNITS, to_metres, to_pascals
+from .runs import force_grid, kind_of
+
+__all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job",
+           "merge_surface", "sha256"]
+
+logger = logging.getLogger(__name__)
+
+#: CF ``units`` of the per-load variables (``{L}``: the length unit)
+_UNITS = {"depth": "{L}", "contact_area": "{L}2", "stiffness": "N m-1", "force": "N"}
+
+
+def sha256(path) -> str:
+    """Hex SHA-256 of a file."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def _ascii(unit) -> str | None:
+    return None if unit is None else str(unit).replace("µ", "u").replace("μ", "u")
+
+
+def _scale(unit, study_unit: str, name: str) -> float:
+    """Study length units per ``unit`` (``unit`` None: the study's)."""
+    unit = _ascii(unit)
+    if unit is None:
+        return 1.0
+    if unit not in LENGTH_UNITS:
+        raise InputFileError(f"{name}: length unit {unit!r} is none of {', '.join(LENGTH_UNITS)}")
+    return to_metres(unit) / to_metres(study_unit)
+
+
+def prepare_surface(cfg: dict, entry: dict, output) -> None:
+    """Read the scan of one ``topography`` entry and write it, in ``units.length``, to *output*.
+
+    *cfg* needs only ``units`` and ``tile`` (a resolved config, or just those keys).
+
+    Raises :class:`~roughcontact.errors.InputFileError` (one line, nothing written) for a scan
+    that cannot be used, including one smaller than ``tile``.
+    """
+    import xarray as xr
+
+    study_unit = cfg["units"]["length"]
+    unit = entry["unit"] or study_unit
+    detrend = None if entry["detrend"] == "none" else entry["detrend"]
+    scan = surfaces.from_topography(entry["file"], unit=unit, length=entry["size"], detrend=detrend,
+                                    interpolate=bool(entry.get("interpolate", False)))
+    factor = _scale(scan.unit, study_unit, entry["file"])
+    tile = cfg["tile"] or scan.n
+    if tile > scan.n:
+        raise InputFileError(f"{entry['file']}: the scan's largest square has {scan.n} x {scan.n} pixels, "
+                             f"fewer than a tile of tile = {tile}")
+    record = {f"scan_{k}": v for k, v in scan.record.items()}
+    attrs = provenance.provenance_attrs(
+        title="roughcontact measured surface", name=entry["name"], file=os.path.basename(entry["file"]),
+        file_sha256=sha256(entry["file"]), length=scan.length * factor, units_length=study_unit,
+        tile=int(tile), tile_count=(scan.n // tile) ** 2, tile_length=scan.length * factor * tile / scan.n,
+        **record)
+    n = scan.n
+    x = np.arange(n) * scan.cell_size * factor
+    ds = xr.Dataset({"heights": (("x", "y"), scan.heights * factor,
+                                 {"long_name": "indenter shape z = -(h - mean h): measured peaks touch first",
+                                  "units": study_unit})},
+                    coords={"x": ("x", x, {"units": study_unit}), "y": ("y", x, {"units": study_unit})},
+                    attrs=attrs)
+    with provenance.atomic_path(output) as tmp:
+        ds.to_netcdf(tmp, engine="netcdf4")
+    logger.info("%s: %d x %d cells of %g %s, %d tiles of %d", entry["name"], n, n,
+                scan.cell_size * factor, study_unit, (n // tile) ** 2, tile)
+
+
+def read_surface(path) -> tuple[np.ndarray, float, dict]:
+    """Heights, side length and attributes of a file of :func:`prepare_surface`."""
+    import xarray as xr
+
+    with xr.open_dataset(path, engine="netcdf4") as ds:
+        return ds["heights"].values.copy(), float(ds.attrs["length"]), dict(ds.attrs)
+
+
+def tile_count(path) -> int:
+    """Number of tiles of a file of :func:`prepare_surface`."""
+    return int(read_surface(path)[2]["tile_count"])
+
+
+@dataclasses.dataclass(frozen=True)
+class MeasuredJob:
+    """Everything one measured load path depends on (:func:`job_of`).
+
+    Attributes
+    ----------
+    source, name, index :
+        ``"topography"`` or ``"spectrum"``, the surface's name, and the tile (row by row) or
+        the seed.
+    radius : float
+        Sphere radius (``length_unit``); ``inf``: nominally flat.
+    e_star : float
+        Effective modulus (``pressure_unit``).
+    length_unit, pressure_unit : str
+        ``units.length`` and ``units.e_star``.
+    force_from, force_to, force_count :
+        The log-spaced load path, ``F/(E* L²)`` with ``L`` the tile's (or grid's) side.
+    tol, maxiter, stiffness_method, rel_step :
+        Solver settings (``solver``).
+    tile : int or None
+        Topography: the tile's side in cells (``None``: the whole square).
+    n, length, convention :
+        Spectrum: grid points per side, side (``length_unit``) and the table's convention.
+    """
+
+    source: str
+    name: str
+    index: int
+    radius: float
+    e_star: float
+    length_unit: str
+    pressure_unit: str
+    force_from: float
+    force_to: float
+    force_count: int
+    tol: float
+    maxiter: int
+    stiffness_method: str
+    rel_step: float
+    tile: int | None = None
+    n: int | None = None
+    length: float | None = None
+    convention: str = "c2d"
+
+    @property
+    def kind(self) -> str:
+        return kind_of(self.radius)
+
+    @property
+    def ensemble(self) -> str:
+        """Name of the ensemble dimension: ``tile`` or ``seed``."""
+        return "tile" if self.source == "topography" else "seed"
+
+    def describe(self) -> str:
+        return f"{self.source} {self.name}, {self.ensemble} {self.index}, R = {self.radius:g} {self.length_unit}"
+
+
+def job_of(cfg: dict, source: str, name: str, radius: float, index: int) -> MeasuredJob:
+    """The :class:`MeasuredJob` of one (surface, radius, tile or seed) of a resolved config."""
+    entry = next(e for e in cfg[source] if e["name"] == name)
+    rng = cfg["forces"][kind_of(radius)]
+    solver = cfg["solver"]
+    extra = ({"tile": cfg["tile"]} if source == "topography" else
+             {"n": int(cfg["grid"]["n"]), "length": float(cfg["grid"]["length"]),
+              "convention": entry["convention"]})
+    return MeasuredJob(source=source, name=name, index=int(index), radius=float(radius),
+                       e_star=float(cfg["e_star"]), length_unit=cfg["units"]["length"],
+                       pressure_unit=cfg["units"]["e_star"], force_from=float(rng["from"]),
+                       force_to=float(rng["to"]), force_count=int(rng["count"]), tol=float(solver["tol"]),
+                       maxiter=int(solver.get("maxiter", bem.DEFAULT_MAXITER)),
+                       stiffness_method=solver["stiffness"], rel_step=float(solver["rel_step"]), **extra)
+
+
+def _spectrum_surface(job: MeasuredJob, path) -> np.ndarray:
+    table = surfaces.read_psd(path, convention=job.convention)
+    s = _scale(table.unit, job.length_unit, table.source)   # study lengths per table length
+    try:
+        return surfaces.surface_from_psd(table.q / s, table.c * s**4, job.n, length=job.length, seed=job.index)
+    except ValueError as exc:
+        raise InputFileError(f"{table.source}: {exc}") from None
+
+
+def job_heights(job: MeasuredJob, source_file) -> tuple[np.ndarray, float, bool]:
+    """``(z, L, periodic)`` of a job: the tile (or seeded surface) with its body."""
+    if job.source == "topography":
+        heights, length, _ = read_surface(source_file)
+        n = heights.shape[0]
+        tile = job.tile or n
+        count = n // tile
+        a, b = divmod(job.index, count)
+        if not 0 <= job.index < count * count:
+            raise IndentError(f"{job.describe()}: the scan has {count * count} tiles")
+        z = heights[a * tile:(a + 1) * tile, b * tile:(b + 1) * tile]
+        z = z - z.mean()
+        size = length * tile / n
+        periodic = False
+    else:
+        z = _spectrum_surface(job, source_file)
+        size, tile = job.length, job.n
+        periodic = job.kind == "flat"
+    if job.kind == "sphere":
+        z = z + paraboloid(tile, radius=job.radius, length=size)
+    return z, size, periodic
+
+
+def run_job(job: MeasuredJob, source_file, output) -> dict:
+    """Solve one load path and write it to *output* (NetCDF, atomic); nothing is written on error.
+
+    ``source_file``: the file of :func:`prepare_surface` (topography) or the spectrum table.
+    Raises :class:`~roughcontact.errors.IndentError` when a body's contact reaches the outer
+    ring of cells, or a solve does not converge.
+    """
+    z, length, periodic = job_heights(job, source_file)
+    e = job.e_star
+    normalized = force_grid(job.force_from, job.force_to, job.force_count)
+    forces = normalized * e * length**2
+    edge = job.kind == "flat" and not periodic   # a flat free tile is a rough punch of side L
+    out = {name: np.zeros(len(forces)) for name in ("depth", "stiffness", "contact_area")}
+    out.update(contact_cells=np.zeros(len(forces), dtype=np.int64), iterations=np.zeros(len(forces), dtype=np.int64))
+    i = 0
+    try:
+        for i, state in enumerate(bem.iter_load_path(z, forces, length=length, e_star=e, periodic=periodic,
+                                                     tol=job.tol, maxiter=job.maxiter, edge_contact=edge)):
+            if not state.converged:
+                raise IndentError(f"{job.describe()}: the contact solver did not converge at F/(E* L^2) = "
+                                  f"{normalized[i]:.3g}; raise solver.maxiter or loosen solver.tol")
+            k = bem.stiffness(state, method=job.stiffness_method, rel_step=job.rel_step)
+            if not (np.isfinite(k) and k > 0):   # a periodic surface pressed into full contact
+                raise IndentError(f"{job.describe()}: stiffness k = {k!r} at F/(E* L^2) = {normalized[i]:.3g} "
+                                  f"({int(np.count_nonzero(state.contact))} of {z.size} cells in contact); "
+                                  f"lower forces.{job.kind}.to")
+            out["depth"][i] = state.depth
+            out["stiffness"][i] = k
+            out["contact_cells"][i] = int(np.count_nonzero(state.contact))
+            out["contact_area"][i] = state.contact_area
+            out["iterations"][i] = state.iterations
+            logger.info("%s: F/(E* L^2) = %.3e, %d contact cells, k/(E* L) = %.4e", job.describe(),
+                        normalized[i], out["contact_cells"][i], out["stiffness"][i] / (e * length))
+    except DomainTooSmallError:
+        where = "the scan's edge" if job.source == "topography" else "the grid's edge"
+        raise IndentError(f"{job.describe()}: loads whose contact would reach {where}: at F/(E* L^2) = "
+                          f"{normalized[i]:.3g} the contact touches the outer ring of cells; lower "
+                          f"forces.sphere.to below {normalized[i]:.3g}, use a smaller radius or larger tiles") from None
+    _write_run(job, output, out, normalized, length)
+    return out
+
+
+def _write_run(job: MeasuredJob, output, out: dict, normalized, length: float) -> None:
+    import xarray as xr
+
+    scale_f = to_pascals(job.pressure_unit) * to_metres(job.length_unit) ** 2   # N per (pressure unit * L^2)
+    scale_k = to_pascals(job.pressure_unit) * to_metres(job.length_unit)        # N/m per (pressure unit * L)
+    unit = job.length_unit
+    data = {
+        "stiffness": (out["stiffness"] * scale_k, {"long_name": "normal contact stiffness dF/dd", "units": "N m-1"}),
+        "stiffness_normalized": (out["stiffness"] / (job.e_star * length), {"long_name": "k/(E* L)", "units": "1"}),
+        "depth": (out["depth"], {"long_name": "indentation depth from first touch", "units": unit}),
+        "contact_area": (out["contact_area"], {"long_name": "contact area", "units": f"{unit}2"}),
+        "contact_area_fraction": (out["contact_area"] / length**2, {"long_name": "A/L^2", "units": "1"}),
+        "contact_cells": (out["contact_cells"], {"long_name": "grid cells in contact", "units": "1"}),
+        "iterations": (out["iterations"], {"long_name": "solver iterations", "units": "1"}),
+    }
+    coords = {"force": ("force", normalized * job.e_star * length**2 * scale_f,
+                        {"long_name": "normal force F", "units": "N"}),
+              "force_normalized": ("force", normalized, {"long_name": "F/(E* L^2)", "units": "1"})}
+    ds = xr.Dataset({k: ("force", v, a) for k, (v, a) in data.items()}, coords=coords,
+                    attrs=provenance.provenance_attrs(config=dataclasses.asdict(job),
+                                                      title="roughcontact measured run", length=length,
+                                                      e_star=job.e_star, e_star_units=job.pressure_unit,
+                                                      units_length=unit, half_space=_half_space(job)))
+    with provenance.atomic_path(output) as tmp:
+        ds.to_netcdf(tmp, engine="netcdf4")
+
+
+def _half_space(job: MeasuredJob) -> str:
+    if job.source == "spectrum" and job.kind == "flat":
+        return "periodic"
+    return "free (non-periodic)" + (", rough punch of the tile's side" if job.kind == "flat" else "")
+
+
+def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_file=None) -> None:
+    """Merge the runs of one surface into *output* (NetCDF, one group per kind, atomic).
+
+    *run_files*: paths whose order is :func:`run_order` of the same arguments. Each group
+    holds the per-run variables over ``(radius,) tile|seed, force`` and, over ``(radius,)
+    force``, ``k_mean`` with the percentile bootstrap interval (``fit.zeta.bootstrap``
+    resamples of the tiles or seeds, level ``fit.zeta.confidence``) as ``k_ci_low``,
+    ``k_ci_high`` (N/m; NaN with one tile).
+    """
+    import xarray as xr
+
+    from .merge import write_groups
+
+    runs = [xr.load_dataset(p, engine="netcdf4") for p in run_files]
+    order = run_order(cfg, source, name, len(runs) // max(1, len(cfg["radius"])))
+    ens = "tile" if source == "topography" else "seed"
+    groups = {}
+    for kind in ("sphere", "flat"):
+        radii = [r for r in cfg["radius"] if kind_of(r) == kind]
+        if not radii:
+            continue
+        members = sorted({i for r, i in order if kind_of(r) == kind})
+        stacked = []
+        for radius in radii:
+            parts = [runs[order.index((radius, i))] for i in members]
+            stacked.append(xr.concat(parts, dim=xr.DataArray(members, dims=ens, name=ens),
+                                     coords="minimal", combine_attrs="override"))
+        ds = xr.concat(stacked, dim=xr.DataArray(radii, dims="radius", name="radius"), coords="minimal",
+                       combine_attrs="override") if kind == "sphere" else stacked[0]
+        ds = ds.assign_coords(force=ds["force"].isel({d: 0 for d in ds["force"].dims if d != "force"}, drop=True))
+        ds[ens].attrs.update(long_name="tile of the scan (row by row)" if ens == "tile" else "random seed",
+                             units="1")
+        if kind == "sphere":
+            ds["radius"].attrs.update(long_name="sphere radius R", units=cfg["units"]["length"])
+        _add_interval(ds, ens, cfg["fit"]["zeta"])
+        ds.attrs = {"surface_kind": kind, "half_space": runs[order.index((radii[0], members[0]))].attrs["half_space"],
+                    "run_git_commits": provenance.canonical_json(sorted({r.attrs["git_commit"] for r in runs}))}
+        groups[kind] = ds
+    extra = {}
+    if surface_file is not None:
+        _, _, attrs = read_surface(surface_file)
+        extra = {k: v for k, v in attrs.items() if k.startswith(("scan_", "file", "tile", "length", "name"))}
+    entry = next(e for e in cfg[source] if e["name"] == name)
+    attrs = provenance.provenance_attrs(
+        config=cfg, title=f"roughcontact measured study: {source} {name}", source=source,
+        **({"file": os.path.basename(entry["file"]), "file_sha256": sha256(entry["file"])} | extra),
+        e_star=cfg["e_star"], e_star_units=cfg["units"]["e_star"], units_length=cfg["units"]["length"])
+    write_groups(output, groups, attrs)
+
+
+def _add_interval(ds, ens: str, fit: dict) -> None:
+    k = ds["stiffness"]
+    ds["k_mean"] = k.mean(ens).assign_attrs(long_name=f"mean stiffness over the {ens}s", units="N m-1")
+    count = ds.sizes[ens]
+    values = np.moveaxis(k.values, k.dims.index(ens), -1)
+    low = np.full(values.shape[:-1], np.nan)
+    high = np.full(values.shape[:-1], np.nan)
+    if count > 1:
+        idx = statistics.bootstrap_indices(count, int(fit["bootstrap"]))
+        means = values[..., idx].mean(axis=-1)          # (..., resamples)
+        for pos in np.ndindex(values.shape[:-1]):
+            low[pos], high[pos] = statistics.interval(means[pos], float(fit["confidence"]))
+    dims = [d for d in k.dims if d != ens]
+    level = f"{100 * float(fit['confidence']):g} %"
+    ds["k_ci_low"] = (dims, low, {"long_name": f"{level} bootstrap interval of k_mean over the {ens}s, low",
+                                  "units": "N m-1"})
+    ds["k_ci_high"] = (dims, high, {"long_name": f"{level} bootstrap interval of k_mean over the {ens}s, high",
+                                    "units": "N m-1"})
+
+
+def run_order(cfg: dict, source: str, name: str, count: int) -> list[tuple[float, int]]:
+    """``(radius, tile or seed)`` of every run of one surface, in the order of its run files:
+    radius by radius, then ``count`` tiles (topography) or the seeds (spectrum)."""
+    members = range(count) if source == "topography" else cfg["seeds"]
+    return [(float(r), int(i)) for r in cfg["radius"] for i in members]

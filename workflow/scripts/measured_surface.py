@@ -1,0 +1,7 @@
+"""Snakemake `measured_surface` job: one scan -> results/measured_surface/{topo}.nc."""
+from roughcontact.study.logs import log_to
+from roughcontact.study.measured import prepare_surface
+
+snakemake = globals()["snakemake"]
+with log_to(snakemake.log[0]):
+    prepare_surface(snakemake.params.cfg, snakemake.params.entry, snakemake.output.nc)

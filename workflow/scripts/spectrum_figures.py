@@ -1,0 +1,7 @@
+"""Snakemake `spectrum_figures` job: the report figure of one measured spectrum."""
+from roughcontact.study.logs import log_to
+from roughcontact.study.measured_figures import make_spectrum_figure
+
+snakemake = globals()["snakemake"]
+with log_to(snakemake.log[0]):
+    make_spectrum_figure(snakemake.params.cfg, snakemake.wildcards.spec, snakemake.input.merged, snakemake.output)
