@@ -23,6 +23,8 @@ import numpy as np
 from ..models import mdr as mdr_model
 from ..models import paper
 from ..models import persson as persson_model
+from ..models import superposition
+from ..models.zeta_law import zeta_law
 from ..surfaces.spectra import self_affine_spectrum
 from ..models.greenwood_tripp import self_affine_sphere_curve
 from . import provenance, runs
@@ -66,6 +68,31 @@ def eq16_fitted(force, c: Combination):
     return _eq16(force, c, c["zeta_fit"])
 
 
+def eq16_law(force, c: Combination):
+    """Eq. 16 with ζ from the ζ(H) law calibrated on the flat surfaces of ``presets/zeta-law.yaml``
+    (:func:`roughcontact.models.zeta_law.zeta_law`, claim c')."""
+    return _eq16(force, c, float(zeta_law(c["hurst"])))
+
+
+def contact_scale(force, c: Combination):
+    """This package's model (:mod:`roughcontact.models.superposition`): eqs. 10 and 12 joined by
+    a p-norm, ζ = c_ζ · ζ_law(H), and for a spectrum with a roll-off or a cutoff the roughness
+    seen at the contact's scale (the grid's spectrum against the pure self-affine one); c_ζ and
+    p calibrated on the presets named in :data:`roughcontact.models.superposition.CALIBRATED`."""
+    constants = superposition.CALIBRATED
+    spectra = {}
+    if c["rolloff"] != c["length"] or c["cutoff"] != 0.0:
+        band = dict(hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"])
+        spectra = dict(spectrum=self_affine_spectrum(**band, rolloff=runs.axis_value("rolloff", c["rolloff"], c["length"]),
+                                                     cutoff=runs.axis_value("cutoff", c["cutoff"], c["length"])
+                                                     ).rebinned(PERSSON_BINS_PER_DECADE),
+                       reference=self_affine_spectrum(**band).rebinned(PERSSON_BINS_PER_DECADE))
+    return superposition.stiffness_from_force(
+        force, radius=c["radius"], hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], e_star=c["e_star"],
+        zeta=constants["zeta_factor"] * float(zeta_law(c["hurst"])), power=constants["power"],
+        exponent=c["exponent"], **spectra)
+
+
 def greenwood_tripp(force, c: Combination):
     """Greenwood & Tripp (1967) on the summit statistics of the grid's own self-affine spectrum,
     interpolated in log k against log F; NaN outside the solved range. Paraboloid, no roll-off
@@ -93,8 +120,8 @@ def mdr(force, c: Combination):
         return None
     return mdr_model.sphere_stiffness(
         force, radius=c["radius"], hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"],
-        e_star=c["e_star"], rolloff=None if c["rolloff"] == c["length"] else c["rolloff"],
-        cutoff=None if c["cutoff"] == 0.0 else c["cutoff"], realizations=MDR_REALIZATIONS, seed=0).stiffness
+        e_star=c["e_star"], rolloff=runs.axis_value("rolloff", c["rolloff"], c["length"]),
+        cutoff=runs.axis_value("cutoff", c["cutoff"], c["length"]), realizations=MDR_REALIZATIONS, seed=0).stiffness
 
 
 #: logarithmic bins per decade of the grid's spectrum for Persson's model (the grid's shells merged
@@ -110,15 +137,15 @@ def persson(force, c: Combination):
     if c["exponent"] != 2.0:
         return None
     spectrum = self_affine_spectrum(hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"],
-                                    rolloff=None if c["rolloff"] == c["length"] else c["rolloff"],
-                                    cutoff=None if c["cutoff"] == 0.0 else c["cutoff"])
+                                    rolloff=runs.axis_value("rolloff", c["rolloff"], c["length"]),
+                                    cutoff=runs.axis_value("cutoff", c["cutoff"], c["length"]))
     return persson_model.sphere_stiffness(force, spectrum.rebinned(PERSSON_BINS_PER_DECADE), radius=c["radius"],
                                           e_star=c["e_star"]).stiffness
 
 
 #: model name -> function ``(force, combination) -> stiffness`` (``None``: does not apply)
-MODELS = {"eq16_paper": eq16_paper, "eq16_fitted": eq16_fitted, "greenwood_tripp": greenwood_tripp, "mdr": mdr,
-          "persson": persson}
+MODELS = {"eq16_paper": eq16_paper, "eq16_fitted": eq16_fitted, "eq16_law": eq16_law, "contact_scale": contact_scale,
+          "greenwood_tripp": greenwood_tripp, "mdr": mdr, "persson": persson}
 
 
 def _combinations(ds, cfg: dict, zeta_of: dict):
@@ -133,9 +160,7 @@ def _combinations(ds, cfg: dict, zeta_of: dict):
 def combo_label(c: Combination) -> str:
     """The run name of a combination (``H0.7_R0.5_h0.009`` and the tags of the optional axes)."""
     run = {axis: c[axis] for axis in ("hurst", "radius", "h_rms", "exponent")}
-    run.update(rolloff=None if c["rolloff"] == c["length"] else c["rolloff"],
-               cutoff=None if c["cutoff"] == 0.0 else c["cutoff"],
-               hardness=None if math.isinf(c["hardness"]) else c["hardness"])
+    run.update({axis: runs.axis_value(axis, c[axis], c["length"]) for axis in ("rolloff", "cutoff", "hardness")})
     return runs.combo_name(run)
 
 
@@ -199,7 +224,11 @@ SCORECARD_LEAD = ("Each model predicts the rough sphere's stiffness k(F) from th
                   "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
                   "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
                   "deviations; rank 1 is the best model of its combination. eq16_paper: eq. 16 with "
-                  "zeta = 1.7/(H+1); eq16_fitted: with the zeta fitted on this study; greenwood_tripp: "
+                  "zeta = 1.7/(H+1); eq16_fitted: with the zeta fitted on this study; eq16_law: with the "
+                  "zeta(H) law calibrated on presets/zeta-law.yaml; contact_scale: this package's model, eqs. 10 and 12 "
+                  "joined by a p-norm with the roughness seen at the contact's scale, constants calibrated on "
+                  "named presets; "
+                  "greenwood_tripp: "
                   "Greenwood & Tripp (1967) on the grid's spectral moments; mdr: the method of dimensionality "
                   "reduction, 1000 seeded 1D profiles on a Winkler foundation; persson: Persson's interfacial "
                   "law from the grid's spectrum as a compliant layer under the paraboloid. models.csv holds "

@@ -1,0 +1,55 @@
+"""Calibration of the scorecard's own model (study.calibration) recovers the constants it was made with."""
+import json
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from roughcontact.models import superposition
+from roughcontact.study import calibration
+from roughcontact.study.merge import write_groups
+
+FORCES = np.logspace(-6, -2, 13)
+HURST = [0.5, 0.8]
+
+
+def _eq13(hurst):
+    return 1.7 / (np.asarray(hurst) + 1)
+
+
+@pytest.fixture
+def study(tmp_path, monkeypatch):
+    """A study whose ensemble means are the model with c_zeta = 0.9 and p = 1.4 exactly (three seeds
+    scattered by factors 0.9, 1, 1.1 around it)."""
+    monkeypatch.setattr(calibration, "zeta_law", _eq13)
+    k = np.array([[superposition.stiffness_from_force(FORCES, radius=0.5, hurst=h, h_rms=1e-2, length=1.0,
+                                                      e_star=1.0, zeta=0.9 * _eq13(h), power=1.4)] for h in HURST])
+    k = k[:, :, None, None, :] * np.array([0.9, 1.0, 1.1])[None, None, None, :, None]   # (hurst, radius, h, seed, F)
+    dims = ("hurst", "radius", "h_rms", "seed", "force")
+    ds = xr.Dataset({"stiffness": (dims, k), "contact_cells": (dims, np.full(k.shape, 100))},
+                    coords={"hurst": HURST, "radius": [0.5], "h_rms": [1e-2], "seed": [0, 1, 2], "force": FORCES})
+    cfg = {"grid": {"n": 129, "length": 1.0}, "e_star": 1.0, "fit": {"zeta": {"min_cells": 20}}}
+    (tmp_path / "results").mkdir()
+    write_groups(tmp_path / "results" / "stiffness.nc", {"sphere": ds}, {"config": json.dumps(cfg)})
+    return tmp_path
+
+
+def test_recovers_the_zeta_factor(study):
+    assert calibration.calibrate([study]).zeta_factor == pytest.approx(0.9, rel=1e-4), "c_zeta of the made-up study"
+
+
+def test_recovers_the_power(study):
+    assert calibration.calibrate([study]).power == pytest.approx(1.4, rel=1e-4), "p of the made-up study"
+
+
+def test_deviation_of_the_exact_model_is_zero(study):
+    worst = max(calibration.calibrate([study]).max_rel_dev.values())
+    assert worst == pytest.approx(0.0, abs=1e-6), "the model the study was made with"
+
+
+def test_no_sphere_runs_rejected(tmp_path):
+    (tmp_path / "results").mkdir()
+    write_groups(tmp_path / "results" / "stiffness.nc", {"flat": xr.Dataset({"x": ("a", [1.0])})},
+                 {"config": json.dumps({"grid": {"n": 9, "length": 1.0}, "e_star": 1.0})})
+    with pytest.raises(ValueError, match="no resolved sphere loads"):
+        calibration.calibrate([tmp_path])
