@@ -3,19 +3,27 @@
 ``roughcontact indent --hurst 0.7 --radius 0.5 --h-rms 9e-3 --seed 0 --n 513 -o run.nc``
 runs one indentation (the same code as the Snakemake ``indent`` rule,
 :func:`roughcontact.study.indent.run_indent`) with a progress bar and writes the same
+NetCDF file.  ``roughcontact measured scan.nc --unit um --tile 256 --radius 20 --e-star 100
+--e-star-unit GPa -o tile0.nc`` presses one tile of a measured scan in physical units (the same
+code as the Snakemake ``measured_surface`` and ``measured_indent`` rules) and writes the same
 NetCDF file.  ``roughcontact check-config config.yaml`` validates a sweep
-without running it.  Settings not given on the command line come from ``--config``, else
+without running it.  Settings of ``indent`` not given on the command line come from ``--config``, else
 from the defaults of the configuration schema (the same defaults as a sweep's).
 """
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 
 from .errors import ConfigError, IndentError
 from .study import config, indent, runs, schema
+from .study.measured_config import LENGTH_UNITS, PRESSURE_UNITS, to_metres, to_pascals
 from .study.settings import JobSettings, job_settings
+
+#: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
+_DETRENDS = ("height", "slope", "curvature", "center", "none")
 
 # config keys as they appear in error messages -> the command-line flag
 _FLAGS = {
@@ -35,8 +43,13 @@ _NUMBER_FLAGS = {
     "tol": ("solver", "tol"), "rel_step": ("solver", "rel_step"),
     "exponent": ("exponent", 0), "rolloff": ("rolloff", 0), "cutoff": ("cutoff", 0), "hardness": ("hardness", 0),
 }
+#: config keys of ``roughcontact measured`` -> its flags (beside :data:`_FLAGS`)
+_MEASURED_FLAGS = {
+    "'units.length'": "--unit", "'units.e_star'": "--e-star-unit", "'tile'": "--tile", "'e_star'": "--e-star",
+    "'topography[0].file'": "SCAN", "'topography[0].size'": "--size", "'topography[0].detrend'": "--detrend",
+}
 #: the subcommands of :func:`build_parser`
-COMMANDS = ("indent", "check-config")
+COMMANDS = ("indent", "measured", "check-config")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -73,6 +86,49 @@ def build_parser() -> argparse.ArgumentParser:
     ind.add_argument("-o", "--output", required=True, help="NetCDF file to write (atomically)")
     ind.add_argument("--log", default=None, help="also append progress lines to this file")
     ind.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+
+    mea = sub.add_parser(
+        "measured", help="one tile of a measured scan under one sphere (or flat, --radius inf), physical units -> NetCDF",
+        description="Read a measured scan (any format SurfaceTopography reads; needs the 'measured' extra), level "
+                    "it, cut its largest centred square into --tile x --tile tiles and press tile --index under a "
+                    "sphere of --radius (free half-space; inf = the tile as a nominally flat rough punch), as the "
+                    "pipeline's measured_surface and measured_indent jobs do, and write the same NetCDF file. "
+                    "Lengths (--radius, --size, the heights and depths) are in --unit, E* in --e-star-unit. The "
+                    "load path is given normalised, F/(E* L^2) with L the side of the tile (as forces.sphere and "
+                    "forces.flat of a config); the file gives force in N and stiffness in N/m beside "
+                    "force_normalized and stiffness_normalized = k/(E* L). Bad input (missing or unreadable scan, "
+                    "unknown unit, tile index out of range, loads whose contact would reach the scan's edge): one "
+                    "line, exit status 2, nothing written.")
+    mea.add_argument("scan", metavar="SCAN", help="the measured scan (e.g. .nc, .x3p, .sdf, .di, .opd)")
+    mea.add_argument("--unit", required=True,
+                     help=f"length unit of the study ({', '.join(LENGTH_UNITS)}; µm = um): of --radius, --size and "
+                          "the outputs' lengths; the scan's heights are converted to it (read in it if the file "
+                          "names no unit) (config: units.length)")
+    mea.add_argument("--size", type=float, default=None,
+                     help="physical side of the scan along x in --unit, for files that store none (default: the file's)")
+    mea.add_argument("--detrend", default="height",
+                     help=f"levelling of the whole scan: {', '.join(_DETRENDS)} (default height)")
+    mea.add_argument("--interpolate", action="store_true",
+                     help="resample a scan of non-square pixels onto square cells (default: such a scan is an error)")
+    mea.add_argument("--tile", type=int, default=None,
+                     help="side of the tiles in cells, >= 17 (default: the whole square as one tile) (config: tile)")
+    mea.add_argument("--index", type=int, default=0,
+                     help="the tile to press, row by row from 0 (default 0), as the pipeline's R<radius>_tile<i>.nc")
+    mea.add_argument("--radius", type=float, required=True, help="sphere radius R in --unit; inf = nominally flat")
+    mea.add_argument("--e-star", type=float, required=True, help="effective modulus E* in --e-star-unit")
+    mea.add_argument("--e-star-unit", required=True,
+                     help=f"pressure unit of --e-star: {', '.join(PRESSURE_UNITS)} (config: units.e_star)")
+    mea.add_argument("--force-from", type=float, default=None,
+                     help="smallest F/(E* L^2), L the tile's side (default: forces.sphere or forces.flat of the schema)")
+    mea.add_argument("--force-to", type=float, default=None, help="largest F/(E* L^2)")
+    mea.add_argument("--force-count", type=int, default=None, help="number of log-spaced loads")
+    mea.add_argument("--tol", type=float, default=None, help="solver tolerance (default: schema)")
+    mea.add_argument("--stiffness", choices=["punch", "difference"], default=None, help="stiffness method")
+    mea.add_argument("--rel-step", type=float, default=None, help="relative step of --stiffness difference")
+    mea.add_argument("--maxiter", type=int, default=None, help="most solver iterations per load")
+    mea.add_argument("-o", "--output", required=True, help="NetCDF file to write (atomically)")
+    mea.add_argument("--log", default=None, help="also append progress lines to this file")
+    mea.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
 
     chk = sub.add_parser("check-config", help="validate a sweep config (exit 2 with one line if invalid)")
     chk.add_argument("config", help="YAML config file, e.g. config.yaml or presets/paper.yaml")
@@ -138,8 +194,102 @@ def settings_from_args(args) -> JobSettings:
     return job_settings(resolved, run)
 
 
-def _flagged(message: str) -> str:
-    for key, flag in _FLAGS.items():
+def measured_config_from_args(args) -> dict:
+    """The resolved config of ``roughcontact measured``: what the pipeline resolves for a config
+    of this one scan and radius (:func:`roughcontact.study.config.resolve_config`; raises
+    ConfigError). The scan is ``topography[0]``; forces and solver settings not given take the
+    schema's defaults."""
+    unit = str(args.unit).replace("µ", "u").replace("μ", "u")
+    if unit not in LENGTH_UNITS:
+        raise ConfigError(f"config key 'units.length' = {args.unit!r} is not allowed; allowed: one of "
+                          f"{', '.join(LENGTH_UNITS)}")
+    if args.e_star_unit not in PRESSURE_UNITS:
+        raise ConfigError(f"config key 'units.e_star' = {args.e_star_unit!r} is not allowed; allowed: one of "
+                          f"{', '.join(PRESSURE_UNITS)}")
+    if args.detrend not in _DETRENDS:
+        raise ConfigError(f"config key 'topography[0].detrend' = {args.detrend!r} is not allowed; allowed: one of "
+                          f"{', '.join(_DETRENDS)}")
+    if args.size is not None and not (math.isfinite(args.size) and args.size > 0):
+        raise ConfigError(f"config key 'topography[0].size' = {args.size!r} is not allowed; allowed: a finite "
+                          "number > 0")
+    path = os.path.abspath(os.path.expanduser(args.scan))
+    if not os.path.isfile(path):
+        raise ConfigError(f"config key 'topography[0].file' = {args.scan!r}: no such file ({path})")
+    kind = runs.kind_of(args.radius)
+    forces = dict(schema.default_of(schema.load_schema(None), ["forces", kind]))
+    for key, value in zip(("from", "to", "count"), (args.force_from, args.force_to, args.force_count)):
+        if value is not None:
+            forces[key] = value
+    solver = {key: value for key, value in (("tol", args.tol), ("stiffness", args.stiffness),
+                                            ("rel_step", args.rel_step), ("maxiter", args.maxiter))
+              if value is not None}
+    entry = {"file": path, "detrend": args.detrend, "interpolate": bool(args.interpolate)}
+    if args.size is not None:
+        entry["size"] = args.size
+    raw = {"units": {"length": unit, "e_star": args.e_star_unit}, "e_star": args.e_star, "topography": [entry],
+           "tile": args.tile, "hurst": [], "h_rms": [], "radius": [args.radius], "forces": {kind: forces},
+           "solver": solver}
+    return config.resolve_config(raw, base_dir=os.getcwd())
+
+
+def _measured(args) -> int:
+    """``roughcontact measured``: exit 0, 2 (bad input: one line, nothing written) or 1 (a solve failed)."""
+    import logging
+    import tempfile
+
+    from .errors import DomainTooSmallError, InputFileError
+    from .study import logs, measured
+
+    def bad(message: str) -> int:
+        print(f"roughcontact measured: invalid argument: {message}", file=sys.stderr)
+        return 2
+
+    try:
+        cfg = measured_config_from_args(args)
+    except ConfigError as err:
+        return bad(_flagged(str(err), {**_FLAGS, **_MEASURED_FLAGS}))
+    entry = cfg["topography"][0]
+    handler = None
+    if not args.quiet:
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("%(message)s"))
+        logging.getLogger("roughcontact").addHandler(handler)
+        if logging.getLogger("roughcontact").getEffectiveLevel() > logging.INFO:
+            logging.getLogger("roughcontact").setLevel(logging.INFO)
+    try:
+        with logs.log_to(args.log), tempfile.TemporaryDirectory(prefix="roughcontact-measured-") as tmp:
+            surface = os.path.join(tmp, "surface.nc")
+            try:
+                measured.prepare_surface(cfg, entry, surface)
+            except InputFileError as err:
+                return bad(str(err))
+            except ImportError as err:   # no SurfaceTopography: not the input's fault
+                print(f"roughcontact measured: FAILED: {' '.join(str(err).split())}", file=sys.stderr)
+                return 1
+            count = measured.tile_count(surface)
+            if not 0 <= args.index < count:
+                return bad(f"--index {args.index}: the scan {os.path.basename(entry['file'])} has {count} tile(s) "
+                           f"of tile = {cfg['tile'] or 'the whole square'}; allowed: 0 <= --index <= {count - 1}")
+            job = measured.job_of(cfg, "topography", entry["name"], cfg["radius"][0], args.index)
+            try:
+                out = measured.run_job(job, surface, args.output)
+            except IndentError as err:
+                if isinstance(err.__context__, DomainTooSmallError):   # loads reaching the scan's edge
+                    return bad(str(err).replace("forces.sphere.to", "--force-to"))
+                print(f"roughcontact measured: FAILED: {err}", file=sys.stderr)
+                return 1
+    finally:
+        if handler is not None:
+            logging.getLogger("roughcontact").removeHandler(handler)
+    if not args.quiet:
+        scale = to_pascals(job.pressure_unit) * to_metres(job.length_unit)
+        print(f"wrote {args.output}: k = {out['stiffness'][0] * scale:.4g} ... {out['stiffness'][-1] * scale:.4g} N/m",
+              file=sys.stderr)
+    return 0
+
+
+def _flagged(message: str, flags: dict = _FLAGS) -> str:
+    for key, flag in flags.items():
         message = message.replace(f"config key {key}", f"{flag} ({key.strip(chr(39))})")
     return message
 
@@ -161,6 +311,8 @@ def main(argv=None) -> int:
         print(f"{args.config}: valid; {len(runs.runs(cfg))} indent jobs "
               f"({len(runs.combinations(cfg))} (H, R, h_rms) x {len(cfg.get('seeds', []))} seeds){measured}")
         return 0
+    if args.command == "measured":
+        return _measured(args)
     try:
         settings = settings_from_args(args)
     except ConfigError as err:
