@@ -56,3 +56,18 @@ def test_two_combinations_rejected(tmp_path):
     write_groups(path, {"sphere": two}, {"grid_n": 257})
     with pytest.raises(ValueError, match="one sphere combination"):
         convergence.stiffness_ratios([study, _study(tmp_path, 513, 1.0, 3)])
+
+
+def test_against_eq16_of_eq16_itself_is_zero(tmp_path):
+    # a study whose every seed is eq. 16 (zeta = 1.7/(H+1)) at its loads: deviation 0 at every load
+    from roughcontact.models import paper
+
+    k16 = paper.stiffness_from_force(FORCES, radius=0.5, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    shape = ("hurst", "radius", "h_rms", "seed", "force")
+    ds = xr.Dataset({"stiffness": (shape, np.broadcast_to(k16, (1, 1, 1, 4, FORCES.size)).copy()),
+                     "contact_cells": (shape, np.full((1, 1, 1, 4, FORCES.size), 50))},
+                    coords={"hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seed": np.arange(4), "force": FORCES})
+    (tmp_path / "results").mkdir()
+    write_groups(tmp_path / "results" / "stiffness.nc", {"sphere": ds}, {"grid_n": 257})
+    table = convergence.against_eq16([tmp_path], resamples=50)
+    assert table["k_over_eq16_minus_1"].abs().max() == pytest.approx(0.0, abs=1e-12), "eq. 16 against itself"
