@@ -12,7 +12,7 @@ import numpy as np
 
 __all__ = ["LAWS", "CALIBRATED", "zeta_law"]
 
-#: candidate forms: name -> (function of (H, *parameters), parameter names, start values of a fit);
+#: candidate forms: name -> (function of H and the parameters, parameter names, start values of a fit);
 #: "a/(H+1)" is eq. 13's form (a = 1.7 in the paper)
 LAWS = {
     "a/(H+1)": (lambda h, a: a / (h + 1.0), ("a",), (1.7,)),
