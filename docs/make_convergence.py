@@ -41,7 +41,7 @@ def _figure(deviations, path: Path) -> None:
                         color=line.get_color(), alpha=0.12)
     ax.axhline(0, color="0.4", lw=0.8)
     ax.set(xlabel="F / (E* L²)", ylabel="k̄ / k_eq16 − 1 (ζ = 1.7/(H+1))",
-           title="Grid convergence, H = 0.7, R = 0.5, h_rms = 9e-3 (≥ 20 contact cells)")
+           title="H = 0.7, R = 0.5, h_rms = 9e-3; loads with ≥ 20 contact cells")
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
