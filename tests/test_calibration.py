@@ -21,7 +21,7 @@ def _eq13(hurst):
 def study(tmp_path, monkeypatch):
     """A study whose ensemble means are the model with c_zeta = 0.9 and p = 1.4 exactly (three seeds
     scattered by factors 0.9, 1, 1.1 around it)."""
-    monkeypatch.setattr(calibration, "zeta_law", _eq13)
+    monkeypatch.setattr(superposition, "zeta_law", _eq13)
     k = np.array([[superposition.stiffness_from_force(FORCES, radius=0.5, hurst=h, h_rms=1e-2, length=1.0,
                                                       e_star=1.0, zeta=0.9 * _eq13(h), power=1.4)] for h in HURST])
     k = k[:, :, None, None, :] * np.array([0.9, 1.0, 1.1])[None, None, None, :, None]   # (hurst, radius, h, seed, F)

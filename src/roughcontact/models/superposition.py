@@ -46,8 +46,9 @@ import math
 import numpy as np
 
 from .paper import _body_coefficient, body_stiffness, fractal_stiffness
+from .zeta_law import zeta_law
 
-__all__ = ["CALIBRATED", "rough_force", "force_from_stiffness", "stiffness_from_force"]
+__all__ = ["CALIBRATED", "rough_force", "force_from_stiffness", "stiffness_from_force", "calibrated_stiffness"]
 
 #: c_ζ (the factor on :func:`roughcontact.models.zeta_law.zeta_law`) and p, calibrated by
 #: ``python -m roughcontact.study.calibration`` on the sphere ensembles of presets/calibration.yaml
@@ -133,9 +134,9 @@ def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, p
                          spectrum=None, reference=None, window=2.0):
     """Invert :func:`force_from_stiffness` for k at given force(s) (bisection in ln k).
 
-    F(k) increases with k, and the body's term alone bounds k from above by the body's
-    stiffness at F (eq. 9; for ``radius = inf`` by eq. 11 with h_a ≥ ... the bracket is widened
-    instead); 200 halvings of ``[ln k_top − 60, ln k_top]`` reach machine precision.
+    F(k) increases with k. With a finite radius the body's term alone bounds k from above by
+    the body's stiffness at F (eq. 9); with ``radius = inf`` and a spectrum, ``k_top`` is eq. 11's
+    stiffness times e³⁰. 200 halvings of ``[ln k_top − 60, ln k_top]`` reach machine precision.
     """
     force = np.asarray(force, dtype=float)
     kwargs = dict(radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta, power=power,
@@ -154,3 +155,15 @@ def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, p
         hi = np.where(too_stiff, mid, hi)
         lo = np.where(too_stiff, lo, mid)
     return np.exp(0.5 * (lo + hi))
+
+
+def calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, exponent=2.0, spectrum=None,
+                         reference=None, zeta_factor=None, power=None):
+    """The scorecard's ``contact_scale``: :func:`stiffness_from_force` with ζ = c_ζ · ζ_law(H)
+    (:func:`roughcontact.models.zeta_law.zeta_law`) and the p-norm's p; ``zeta_factor`` and
+    ``power`` default to :data:`CALIBRATED` (the calibration passes its trial values)."""
+    zeta_factor = CALIBRATED["zeta_factor"] if zeta_factor is None else zeta_factor
+    power = CALIBRATED["power"] if power is None else power
+    return stiffness_from_force(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
+                                zeta=zeta_factor * float(zeta_law(hurst)), power=power, exponent=exponent,
+                                spectrum=spectrum, reference=reference)

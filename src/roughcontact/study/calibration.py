@@ -3,7 +3,7 @@
 The model (:mod:`roughcontact.models.superposition`) has two constants: a factor ``c`` on
 the ζ(H) law of flat surfaces (:func:`roughcontact.models.zeta_law.zeta_law`; a sphere's
 fractal branch need not carry the prefactor of a flat, periodic surface) and the order ``p``
-of the power mean that joins the body's and the roughness's forces. They minimise
+of the p-norm that joins the body's and the roughness's forces. They minimise
 
     χ² = Σ_combinations Σ_resolved F ((ln k̄_BEM − ln k_model(F; c, p)) / s)²,
 
@@ -30,7 +30,6 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..models import superposition
-from ..models.zeta_law import zeta_law
 from .merge import read_groups
 from .zeta import paper_setting
 
@@ -71,9 +70,9 @@ def ensemble_points(study) -> list[dict]:
 
 
 def _model(point, zeta_factor, power):
-    return superposition.stiffness_from_force(
+    return superposition.calibrated_stiffness(
         point["force"], radius=point["radius"], hurst=point["hurst"], h_rms=point["h_rms"], length=point["length"],
-        e_star=point["e_star"], zeta=zeta_factor * float(zeta_law(point["hurst"])), power=power)
+        e_star=point["e_star"], zeta_factor=zeta_factor, power=power)
 
 
 @dataclass(frozen=True)

@@ -8,7 +8,9 @@ its 95 % bootstrap-over-seeds interval) and the cost of one indent job (Snakemak
 benchmark files: wall seconds and peak resident memory). :func:`stiffness_ratios` compares
 the ensemble-mean stiffness of every grid with that of the finest grid at each common load,
 ``k_n(F)/k_finest(F) − 1``, with a percentile interval from resampling the seeds of both
-grids independently (the surfaces of different grids are independent realisations). Forces
+grids independently (the surfaces of different grids are independent realisations);
+:func:`against_eq16` compares every study's ensemble mean with eq. 16 instead, one
+deterministic reference, so that two ensembles of one grid can stand side by side. Forces
 are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
 """
 from __future__ import annotations
@@ -22,6 +24,7 @@ from .merge import read_groups
 from .statistics import BOOTSTRAP_SEED, interval
 
 __all__ = ["summary", "stiffness_ratios", "against_eq16"]
+
 
 def _sphere(study: Path):
     """The sphere group of *study*'s stiffness.nc, its axes of length one dropped, and the grid n."""
