@@ -19,7 +19,7 @@ import sys
 
 from .errors import ConfigError, IndentError
 from .study import config, indent, runs, schema
-from .study.measured_config import LENGTH_UNITS, PRESSURE_UNITS, to_metres, to_pascals
+from .study.measured_config import LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_pascals
 from .study.settings import JobSettings, job_settings
 
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
@@ -52,6 +52,21 @@ _MEASURED_FLAGS = {
 COMMANDS = ("indent", "measured", "check-config")
 
 
+def _add_solver_options(parser, *, defaults: str) -> None:
+    """The contact solver's options, shared by ``indent`` and ``measured`` (*defaults*: where an
+    option not given comes from)."""
+    parser.add_argument("--tol", type=float, default=None, help=f"solver tolerance (default: {defaults})")
+    parser.add_argument("--stiffness", choices=["punch", "difference"], default=None, help="stiffness method")
+    parser.add_argument("--rel-step", type=float, default=None, help="relative step of --stiffness difference")
+    parser.add_argument("--maxiter", type=int, default=None, help="most solver iterations per load")
+
+
+def _add_output_options(parser) -> None:
+    """The output file and the log file, shared by ``indent`` and ``measured``."""
+    parser.add_argument("-o", "--output", required=True, help="NetCDF file to write (atomically)")
+    parser.add_argument("--log", default=None, help="also append progress lines to this file")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``roughcontact`` argument parser (subcommands :data:`COMMANDS`)."""
     p = argparse.ArgumentParser(prog="roughcontact", description=__doc__.split("\n\n")[0])
@@ -78,13 +93,9 @@ def build_parser() -> argparse.ArgumentParser:
     ind.add_argument("--force-from", type=float, default=None, help="smallest F/(E* L^2)")
     ind.add_argument("--force-to", type=float, default=None, help="largest F/(E* L^2)")
     ind.add_argument("--force-count", type=int, default=None, help="number of log-spaced loads")
-    ind.add_argument("--tol", type=float, default=None, help="solver tolerance (default: config or schema)")
-    ind.add_argument("--stiffness", choices=["punch", "difference"], default=None, help="stiffness method")
-    ind.add_argument("--rel-step", type=float, default=None, help="relative step of --stiffness difference")
-    ind.add_argument("--maxiter", type=int, default=None, help="most solver iterations per load")
+    _add_solver_options(ind, defaults="config or schema")
     ind.add_argument("--config", default=None, help="take grid, forces and solver settings from this config file")
-    ind.add_argument("-o", "--output", required=True, help="NetCDF file to write (atomically)")
-    ind.add_argument("--log", default=None, help="also append progress lines to this file")
+    _add_output_options(ind)
     ind.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
 
     mea = sub.add_parser(
@@ -122,12 +133,8 @@ def build_parser() -> argparse.ArgumentParser:
                      help="smallest F/(E* L^2), L the tile's side (default: forces.sphere or forces.flat of the schema)")
     mea.add_argument("--force-to", type=float, default=None, help="largest F/(E* L^2)")
     mea.add_argument("--force-count", type=int, default=None, help="number of log-spaced loads")
-    mea.add_argument("--tol", type=float, default=None, help="solver tolerance (default: schema)")
-    mea.add_argument("--stiffness", choices=["punch", "difference"], default=None, help="stiffness method")
-    mea.add_argument("--rel-step", type=float, default=None, help="relative step of --stiffness difference")
-    mea.add_argument("--maxiter", type=int, default=None, help="most solver iterations per load")
-    mea.add_argument("-o", "--output", required=True, help="NetCDF file to write (atomically)")
-    mea.add_argument("--log", default=None, help="also append progress lines to this file")
+    _add_solver_options(mea, defaults="schema")
+    _add_output_options(mea)
     mea.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
 
     chk = sub.add_parser("check-config", help="validate a sweep config (exit 2 with one line if invalid)")
@@ -199,7 +206,7 @@ def measured_config_from_args(args) -> dict:
     of this one scan and radius (:func:`roughcontact.study.config.resolve_config`; raises
     ConfigError). The scan is ``topography[0]``; forces and solver settings not given take the
     schema's defaults."""
-    unit = str(args.unit).replace("µ", "u").replace("μ", "u")
+    unit = plain_unit(args.unit)
     if unit not in LENGTH_UNITS:
         raise ConfigError(f"config key 'units.length' = {args.unit!r} is not allowed; allowed: one of "
                           f"{', '.join(LENGTH_UNITS)}")

@@ -40,7 +40,7 @@ from .. import bem, surfaces
 from ..errors import DomainTooSmallError, IndentError, InputFileError
 from ..surfaces.bodies import paraboloid
 from . import provenance, statistics
-from .measured_config import LENGTH_UNITS, to_metres, to_pascals
+from .measured_config import LENGTH_UNITS, plain_unit, to_metres, to_pascals
 from .runs import force_grid, kind_of
 
 __all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job",
@@ -61,13 +61,9 @@ def sha256(path) -> str:
     return digest.hexdigest()
 
 
-def _ascii(unit) -> str | None:
-    return None if unit is None else str(unit).replace("µ", "u").replace("μ", "u")
-
-
 def _scale(unit, study_unit: str, name: str) -> float:
     """Study length units per ``unit`` (``unit`` None: the study's)."""
-    unit = _ascii(unit)
+    unit = plain_unit(unit)
     if unit is None:
         return 1.0
     if unit not in LENGTH_UNITS:

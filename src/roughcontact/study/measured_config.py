@@ -20,7 +20,7 @@ from ..errors import ConfigError, InputFileError
 from ..surfaces.psd import read_psd
 
 __all__ = ["LENGTH_UNITS", "PRESSURE_UNITS", "config_directory", "has_measured", "resolve_inputs",
-           "topography_names", "spectrum_names", "to_metres", "to_pascals"]
+           "topography_names", "spectrum_names", "plain_unit", "to_metres", "to_pascals"]
 
 #: metres per length unit of ``units.length`` (and of a topography entry's ``unit``)
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}
@@ -29,6 +29,11 @@ PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9}
 
 _TOPOGRAPHY_DEFAULTS = {"name": None, "unit": None, "size": None, "detrend": "height", "interpolate": False}
 _SPECTRUM_DEFAULTS = {"name": None, "convention": "c2d"}
+
+
+def plain_unit(unit) -> str | None:
+    """A length unit spelt in ASCII: ``µm`` (micro sign or Greek mu) as ``um``; None stays None."""
+    return None if unit is None else str(unit).replace("µ", "u").replace("μ", "u")
 
 
 def to_metres(unit: str) -> float:
