@@ -17,7 +17,7 @@ import logging
 
 import numpy as np
 
-from . import provenance
+from .plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval
 
 __all__ = ["local_exponents", "exponent_table", "curves", "run_exponents"]
@@ -113,11 +113,7 @@ def curves(table, kind: str) -> list:
 
 
 def _figure(table, cfg, path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     kinds = sorted(set(table["kind"])) if len(table) else []
     fig, axes = plt.subplots(1, max(1, len(kinds)), figsize=(5.5 * max(1, len(kinds)), 4), squeeze=False)
     for ax, kind in zip(axes[0], kinds):
@@ -132,6 +128,4 @@ def _figure(table, cfg, path) -> None:
     if not kinds:
         axes[0][0].text(0.5, 0.5, "no resolved window", ha="center")
     fig.tight_layout()
-    with provenance.atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+    save_png(fig, path)

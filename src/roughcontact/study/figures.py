@@ -259,14 +259,12 @@ def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs):
     """Draw every figure of :func:`figure_specs` to *outputs* (paths, in the same order)."""
     from pathlib import Path
 
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     import pandas as pd
 
-    from . import provenance
     from .merge import read_groups
+    from .plotting import pyplot, save_png
+
+    plt = pyplot()
 
     specs = figure_specs(cfg)
     paths = list(outputs)
@@ -279,8 +277,5 @@ def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs):
         hurst=_pick(cfg["hurst"], 0.7), h_rms=_pick(cfg["h_rms"], 9e-3),
         radius=_pick(finite, 0.5) if finite else 0.5, seed=cfg["seeds"][0])
     for spec, path in zip(specs, paths):
-        fig = DRAW[spec["key"][0]](plt, inputs, spec["key"])
-        with provenance.atomic_path(path) as tmp:
-            fig.savefig(tmp, dpi=110, format="png")
-        plt.close(fig)
+        save_png(DRAW[spec["key"][0]](plt, inputs, spec["key"]), path)
     log.info("wrote %s", ", ".join(paths))

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from . import provenance
+from .plotting import pyplot, save_png
 
 __all__ = ["make_figures", "make_spectrum_figure", "draw_heights", "draw_spectrum", "draw_stiffness"]
 
@@ -108,11 +108,7 @@ def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
 def make_figures(cfg: dict, name: str, surface_file, merged_file, output, spectrum_file=None) -> None:
     """Write *output* ``.heights``, ``.kf`` and (with *spectrum_file*) ``.psd`` (PNG, atomic)
     for the scan *name*."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(5.2, 4.4), constrained_layout=True)
     image = draw_heights(ax, surface_file, name)
     fig.colorbar(image, ax=ax, label="measured height h (nm)")
@@ -131,11 +127,7 @@ def make_figures(cfg: dict, name: str, surface_file, merged_file, output, spectr
 
 def make_spectrum_figure(cfg: dict, name: str, merged_file, output) -> None:
     """Write *output* ``.kf`` (PNG, atomic): k(F) of the surfaces drawn from the spectrum *name*."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 5.0), constrained_layout=True)
     draw_stiffness(ax, merged_file, cfg)
     level = 100 * float(cfg["fit"]["zeta"]["confidence"])
@@ -144,8 +136,4 @@ def make_spectrum_figure(cfg: dict, name: str, merged_file, output) -> None:
 
 
 def _save(fig, path) -> None:
-    import matplotlib.pyplot as plt
-
-    with provenance.atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=130, format="png")
-    plt.close(fig)
+    save_png(fig, path, dpi=130)

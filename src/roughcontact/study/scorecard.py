@@ -28,6 +28,7 @@ from ..models.zeta_law import zeta_law
 from ..surfaces.spectra import self_affine_spectrum
 from ..models.greenwood_tripp import self_affine_sphere_curve
 from . import provenance, runs
+from .plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval
 from .tables import write_html_table
 
@@ -79,17 +80,11 @@ def contact_scale(force, c: Combination):
     a p-norm, ζ = c_ζ · ζ_law(H), and for a spectrum with a roll-off or a cutoff the roughness
     seen at the contact's scale (the grid's spectrum against the pure self-affine one); c_ζ and
     p calibrated on the presets named in :data:`roughcontact.models.superposition.CALIBRATED`."""
-    constants = superposition.CALIBRATED
     spectra = {}
     if c["rolloff"] != c["length"] or c["cutoff"] != 0.0:
-        band = dict(hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"])
-        spectra = dict(spectrum=self_affine_spectrum(**band, rolloff=runs.axis_value("rolloff", c["rolloff"], c["length"]),
-                                                     cutoff=runs.axis_value("cutoff", c["cutoff"], c["length"])
-                                                     ).rebinned(PERSSON_BINS_PER_DECADE),
-                       reference=self_affine_spectrum(**band).rebinned(PERSSON_BINS_PER_DECADE))
-    return superposition.stiffness_from_force(
+        spectra = dict(spectrum=_grid_spectrum(c), reference=_grid_spectrum(c, band=False))
+    return superposition.calibrated_stiffness(
         force, radius=c["radius"], hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], e_star=c["e_star"],
-        zeta=constants["zeta_factor"] * float(zeta_law(c["hurst"])), power=constants["power"],
         exponent=c["exponent"], **spectra)
 
 
@@ -129,6 +124,15 @@ def mdr(force, c: Combination):
 PERSSON_BINS_PER_DECADE = 100
 
 
+def _grid_spectrum(c: Combination, *, band: bool = True):
+    """The grid's own self-affine spectrum of combination *c*, with its roll-off and cutoff
+    (``band=False``: without, the pure self-affine reference), on
+    :data:`PERSSON_BINS_PER_DECADE` bins per decade."""
+    extra = {axis: runs.axis_value(axis, c[axis], c["length"]) for axis in ("rolloff", "cutoff")} if band else {}
+    return self_affine_spectrum(hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"],
+                                **extra).rebinned(PERSSON_BINS_PER_DECADE)
+
+
 def persson(force, c: Combination):
     """Persson's interfacial law ū(p) from the grid's own discrete spectrum, acting over the
     nominal pressure of the paraboloid (an axisymmetric compliant layer in series with the
@@ -136,11 +140,7 @@ def persson(force, c: Combination):
     γ = 0.42). Paraboloid only."""
     if c["exponent"] != 2.0:
         return None
-    spectrum = self_affine_spectrum(hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"],
-                                    rolloff=runs.axis_value("rolloff", c["rolloff"], c["length"]),
-                                    cutoff=runs.axis_value("cutoff", c["cutoff"], c["length"]))
-    return persson_model.sphere_stiffness(force, spectrum.rebinned(PERSSON_BINS_PER_DECADE), radius=c["radius"],
-                                          e_star=c["e_star"]).stiffness
+    return persson_model.sphere_stiffness(force, _grid_spectrum(c), radius=c["radius"], e_star=c["e_star"]).stiffness
 
 
 #: model name -> function ``(force, combination) -> stiffness`` (``None``: does not apply)
@@ -236,11 +236,7 @@ SCORECARD_LEAD = ("Each model predicts the rough sphere's stiffness k(F) from th
 
 
 def _figure(path, label: str, curve, table) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     force = curve["force_normalized"].values
     resolved = curve["resolved"].values.astype(bool)
     fig, ax = plt.subplots(figsize=(6, 4))
@@ -254,9 +250,7 @@ def _figure(path, label: str, curve, table) -> None:
     ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1", title=label)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    with provenance.atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+    save_png(fig, path)
 
 
 def run_models(cfg, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures):
