@@ -346,9 +346,11 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
         _, _, attrs = read_surface(surface_file)
         extra = {k: v for k, v in attrs.items() if k.startswith(("scan_", "file", "tile", "length", "name"))}
     entry = next(e for e in cfg[source] if e["name"] == name)
+    recorded = {"file": os.path.basename(entry["file"])} | extra
+    if "file_sha256" not in recorded:  # the surface file records the scan's hash when there is one
+        recorded["file_sha256"] = sha256(entry["file"])
     attrs = provenance.provenance_attrs(
-        config=cfg, title=f"roughcontact measured study: {source} {name}", source=source,
-        **({"file": os.path.basename(entry["file"]), "file_sha256": sha256(entry["file"])} | extra),
+        config=cfg, title=f"roughcontact measured study: {source} {name}", source=source, **recorded,
         e_star=cfg["e_star"], e_star_units=cfg["units"]["e_star"], units_length=cfg["units"]["length"])
     write_groups(output, groups, attrs)
 
