@@ -23,7 +23,7 @@ from roughcontact import cli
 from roughcontact import errors
 from roughcontact import surfaces
 from roughcontact.study import config
-from roughcontact.study.schema import SCHEMA_PATH
+from roughcontact.study.schema import load_schema
 
 ROOT = Path(__file__).resolve().parents[1]
 BASE = config.load_config(ROOT / "config.yaml")
@@ -110,7 +110,7 @@ def test_radius_accepts_inf_as_a_flat_surface(text):
 
 def _schema_with_axis() -> dict:
     """The schema plus a sweep axis it does not have yet: numbers > 0 or null."""
-    schema = yaml.safe_load(SCHEMA_PATH.read_text())
+    schema = copy.deepcopy(load_schema(None))
     schema["properties"]["rolloff"] = {"description": "roll-off wavelengths", "type": "array", "minItems": 1,
                                        "items": {"type": ["number", "null"], "exclusiveMinimum": 0}}
     return schema

@@ -36,10 +36,10 @@ from roughcontact import cli
 from roughcontact import errors
 from roughcontact.study import config
 from roughcontact.study import runs
-from roughcontact.study.schema import SCHEMA_PATH
+from roughcontact.study.schema import load_schema
 
 ROOT = Path(__file__).resolve().parents[1]
-SCHEMA = yaml.safe_load(SCHEMA_PATH.read_text())
+SCHEMA = copy.deepcopy(load_schema(None))
 BASE = config.load_config(ROOT / "config.yaml")
 
 EXAMPLES = 500  # hypothesis cases in-process

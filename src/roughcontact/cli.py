@@ -19,6 +19,7 @@ import sys
 
 from .errors import ConfigError, IndentError
 from .study import config, indent, runs, schema
+from .study.axes import AXES
 from .study.measured_config import LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_pascals
 from .study.settings import JobSettings, job_settings
 
@@ -27,21 +28,18 @@ _DETRENDS = ("height", "slope", "curvature", "center", "none")
 
 # config keys as they appear in error messages -> the command-line flag
 _FLAGS = {
-    "'hurst[0]'": "--hurst", "'radius[0]'": "--radius", "'h_rms[0]'": "--h-rms", "'seeds[0]'": "--seed",
+    **{f"'{a.name}[0]'": a.flag for a in AXES.values()}, "'seeds[0]'": "--seed",
     "'grid.n'": "--n", "'grid.length'": "--length", "'e_star'": "--e-star", "'solver.tol'": "--tol",
     "'solver.stiffness'": "--stiffness", "'solver.rel_step'": "--rel-step", "'solver.maxiter'": "--maxiter",
     "'forces.sphere.from'": "--force-from", "'forces.flat.from'": "--force-from",
     "'forces.sphere.to'": "--force-to", "'forces.flat.to'": "--force-to",
     "'forces.sphere.count'": "--force-count", "'forces.flat.count'": "--force-count",
-    "'exponent[0]'": "--exponent", "'rolloff[0]'": "--rolloff", "'cutoff[0]'": "--cutoff",
-    "'hardness[0]'": "--hardness",
 }
 #: number flags -> their config key; each must be finite (--radius may be inf: a flat surface)
 _NUMBER_FLAGS = {
-    "hurst": ("hurst", 0), "radius": ("radius", 0), "h_rms": ("h_rms", 0), "length": ("grid", "length"),
+    **{a.name: (a.name, 0) for a in AXES.values()}, "length": ("grid", "length"),
     "e_star": ("e_star",), "force_from": ("forces", "{kind}", "from"), "force_to": ("forces", "{kind}", "to"),
     "tol": ("solver", "tol"), "rel_step": ("solver", "rel_step"),
-    "exponent": ("exponent", 0), "rolloff": ("rolloff", 0), "cutoff": ("cutoff", 0), "hardness": ("hardness", 0),
 }
 #: config keys of ``roughcontact measured`` -> its flags (beside :data:`_FLAGS`)
 _MEASURED_FLAGS = {
@@ -77,16 +75,9 @@ def build_parser() -> argparse.ArgumentParser:
                                      "flat surface (--radius inf, periodic) along a log-spaced load path and write "
                                      "depth, stiffness and contact area per load to a NetCDF file. Forces are "
                                      "F/(E* L^2).")
-    ind.add_argument("--hurst", type=float, required=True, help="Hurst exponent H, 0 < H < 2")
-    ind.add_argument("--radius", type=float, required=True, help="sphere radius R; inf = nominally flat")
-    ind.add_argument("--h-rms", type=float, required=True, help="rms roughness height")
+    for spec in AXES.values():  # one flag per sweep axis (roughcontact.study.axes)
+        ind.add_argument(spec.flag, type=float, required=not spec.optional, default=None, help=spec.flag_help)
     ind.add_argument("--seed", type=int, default=0, help="random seed of the surface (default 0)")
-    ind.add_argument("--exponent", type=float, default=None,
-                     help="body of revolution z = (R/m)(r/R)^m of the sphere (default 2: the paraboloid)")
-    ind.add_argument("--rolloff", type=float, default=None, help="roll-off wavelength of the spectrum (default: L)")
-    ind.add_argument("--cutoff", type=float, default=None, help="short-wavelength cutoff (default: none)")
-    ind.add_argument("--hardness", type=float, default=None,
-                     help="penetration hardness in units of E* (default: elastic)")
     ind.add_argument("--n", type=int, default=None, help="grid points per side (default: config or schema)")
     ind.add_argument("--length", type=float, default=None, help="side length L (default: config or schema)")
     ind.add_argument("--e-star", type=float, default=None, help="effective modulus E* (default: config or schema)")
@@ -187,17 +178,15 @@ def settings_from_args(args) -> JobSettings:
                        ("maxiter", args.maxiter)):
         if value is not None:
             solver[key] = value
-    axes = {axis: [getattr(args, axis)] for axis in runs.DEFAULTS if getattr(args, axis) is not None}
+    axes = {name: [getattr(args, name)] for name in AXES if getattr(args, name) is not None}
     cfg = {
-        "grid": grid, "hurst": [args.hurst], "radius": [args.radius], "h_rms": [args.h_rms], "seeds": [args.seed],
-        "solver": solver, "forces": {kind: forces}, **axes,
+        "grid": grid, "seeds": [args.seed], "solver": solver, "forces": {kind: forces}, **axes,
         **({"e_star": args.e_star} if args.e_star is not None else
            {"e_star": base["e_star"]} if "e_star" in base else {}),
         **({"fit": base["fit"]} if "fit" in base else {}),
     }
     resolved = config.resolve_config(cfg)
-    run = {"hurst": args.hurst, "radius": args.radius, "h_rms": args.h_rms, "seed": args.seed,
-           **{axis: values[0] for axis, values in axes.items()}}
+    run = {**{name: resolved[name][0] for name in AXES}, "seed": args.seed}
     return job_settings(resolved, run)
 
 

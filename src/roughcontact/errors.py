@@ -23,7 +23,19 @@ class RoughContactError(Exception):
 
 
 class ConfigError(RoughContactError, ValueError):
-    """An invalid configuration; ``str(err)`` is one line naming the key."""
+    """An invalid configuration; ``str(err)`` is one line naming the key.
+
+    Attributes
+    ----------
+    key : str or None
+        The configuration key the error is about, as the message names it (``'grid.n'``,
+        ``'hurst[0]'``); ``None`` where no single key is at fault. The command line maps it
+        to its flag.
+    """
+
+    def __init__(self, message: str, *, key: str | None = None):
+        super().__init__(message)
+        self.key = key
 
 
 class InputFileError(RoughContactError, ValueError):

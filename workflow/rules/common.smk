@@ -31,7 +31,7 @@ try:
 except ConfigError as err:
     raise SystemExit(rc_config.error_line(err))
 # the same schema (package data) through Snakemake (passes once resolve_config did)
-validate(C, str(schema.SCHEMA_PATH))
+validate(C, schema.schema_file())
 config.clear()
 config.update(C)  # the report and the jobs see the resolved values
 

@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from . import runs
+from .axes import AXES, optional_axes
 from .statistics import interval, verdict, verdict_bound
 from .tables import write_html_table
 
@@ -41,8 +42,8 @@ EQ16_TOLERANCE = 0.10
 LAMBDA_EQ17, LAMBDA_GT = math.sqrt(6.0) * 1.7**-1.5, 1.41
 
 
-#: columns naming the combination a row rests on
-AXIS_COLUMNS = ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness")
+#: columns naming the combination a row rests on: the sweep axes (:data:`roughcontact.study.axes.AXES`)
+AXIS_COLUMNS = tuple(AXES)
 
 
 def _claim(claim, statement, measured, low, high, paper, verdict_text, *, sweep="", loads="", note="", **where):
@@ -54,7 +55,7 @@ def _claim(claim, statement, measured, low, high, paper, verdict_text, *, sweep=
 
 def _paper_values(length: float) -> dict:
     """The paper's setting of the optional axes as merged-file coordinates."""
-    return {axis: runs.coordinate(axis, default, length) for axis, default in runs.DEFAULTS.items()}
+    return {a.name: a.coordinate(a.paper, length) for a in optional_axes()}
 
 
 def _describe(r, length: float, n: int, seeds: int) -> str:
@@ -67,7 +68,7 @@ def _describe(r, length: float, n: int, seeds: int) -> str:
 
 
 #: the claim that tests each optional axis off the paper's elastic, purely self-affine setting
-EFFECT_CLAIM = {"cutoff": "i", "rolloff": "j", "hardness": "k"}
+EFFECT_CLAIM = {a.name: a.claim for a in optional_axes() if a.claim}
 
 
 def _off_theory(r, length: float) -> str:

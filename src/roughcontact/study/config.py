@@ -20,10 +20,10 @@ After the schema, :func:`resolve_config` requires an odd
 ``fit.slopes.window``; ``forces.sphere`` / ``forces.flat`` for the radii
 listed, with ``from < to`` and forces within floating-point range; flat
 surfaces pressed short of full contact (:func:`full_contact_slope`); and a
-smooth-body contact radius within L/4 of the free-space grid.  The optional
-axes (``_check_spectrum_and_hardness``) need exponents other than every H,
-roll-off and cutoff wavelengths that leave a self-affine band on the grid,
-and hardnesses above the fully plastic limit of the largest force.
+smooth-body contact radius within L/4 of the free-space grid.  Each sweep axis brings its
+own checks (:attr:`roughcontact.study.axes.Axis.check`): exponents other than every H,
+roll-off and cutoff wavelengths that leave a self-affine band on the grid, hardnesses above
+the fully plastic limit of the largest force.
 """
 from __future__ import annotations
 
@@ -36,6 +36,7 @@ import numpy as np
 
 from ..errors import ConfigError
 from ..models import paper
+from .axes import AXES
 from .measured_config import resolve_inputs
 from .runs import kind_of
 from .schema import (
@@ -133,12 +134,8 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
     cfg["grid"]["n"] = int(cfg["grid"]["n"])
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
     cfg["e_star"] = float(cfg["e_star"])
-    for axis in ("hurst", "h_rms"):  # absent (or empty) with measured inputs only
-        cfg.setdefault(axis, [])
-    for axis in ("hurst", "radius", "h_rms", "exponent"):
-        cfg[axis] = sorted(float(v) for v in cfg[axis])
-    for axis in ("rolloff", "cutoff", "hardness"):  # null (the paper's setting) first
-        cfg[axis] = sorted((None if v is None else float(v) for v in cfg[axis]), key=lambda v: (v is not None, v))
+    for axis in AXES.values():  # sorted floats, null (an optional axis's paper setting) first
+        cfg[axis.name] = axis.normalise(cfg.get(axis.name, []))  # hurst, h_rms: absent with measured inputs only
     if "seeds" in cfg:  # absent with measured scans only
         seeds = cfg["seeds"]
         cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)
@@ -148,19 +145,20 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
     # checks a JSON schema cannot express
     window = cfg["fit"]["slopes"]["window"]
     if window % 2 == 0:
-        raise ConfigError(f"config key 'fit.slopes.window' = {window} is not allowed; allowed: an odd integer >= 3")
+        raise ConfigError(f"config key 'fit.slopes.window' = {window} is not allowed; allowed: an odd integer >= 3",
+                          key="fit.slopes.window")
     resolve_inputs(cfg, base_dir)
     if bool(cfg["hurst"]) != bool(cfg["h_rms"]):
         empty = "hurst" if not cfg["hurst"] else "h_rms"
         raise ConfigError(f"config key '{empty}' is empty but '{'h_rms' if empty == 'hurst' else 'hurst'}' is not; "
-                          "allowed: both empty (no generated surface) or both non-empty")
+                          "allowed: both empty (no generated surface) or both non-empty", key=empty)
     kinds = {kind_of(r) for r in cfg["radius"]}
     n, length = cfg["grid"]["n"], cfg["grid"]["length"]
     for kind, rng in cfg["forces"].items():
         if not rng["from"] < rng["to"]:
             raise ConfigError(
                 f"config key 'forces.{kind}': from = {rng['from']:g} must be smaller than to = {rng['to']:g}; "
-                "allowed: 0 < from < to (forces F/(E* L^2))"
+                "allowed: 0 < from < to (forces F/(E* L^2))", key=f"forces.{kind}.from"
             )
         for end in ("from", "to"):
             force = rng[end] * cfg["e_star"] * length * length
@@ -168,7 +166,7 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
                 raise ConfigError(
                     f"config key 'forces.{kind}.{end}' = {rng[end]:g} gives a force F = {end} * e_star * "
                     f"grid.length^2 = {force:g}, outside the range of floating-point numbers; allowed: "
-                    f"{sys.float_info.min:.3g} <= F <= {sys.float_info.max:.3g}"
+                    f"{sys.float_info.min:.3g} <= F <= {sys.float_info.max:.3g}", key=f"forces.{kind}.{end}"
                 )
     if not cfg["hurst"]:  # measured inputs only: the checks of the generated surfaces do not apply
         return cfg
@@ -179,7 +177,7 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
             raise ConfigError(
                 f"config key 'forces.flat.to' = {cfg['forces']['flat']['to']:g} would press the flat surfaces close to "
                 f"full contact (rms slope ~ {slope:.3g} for H = {max(cfg['hurst']):g}, h_rms = {min(cfg['h_rms']):g}, "
-                f"n = {n}); allowed: to < {limit:.3g}"
+                f"n = {n}); allowed: to < {limit:.3g}", key="forces.flat.to"
             )
     if "sphere" in kinds:
         to = cfg["forces"]["sphere"]["to"]
@@ -196,56 +194,10 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
                 body = "Hertz" if exponent == 2 else f"smooth-body (m = {exponent:g})"
                 raise ConfigError(
                     f"config key 'forces.sphere.to' = {to:g} gives a {body} contact radius of {a_over_l:.2f} L for "
-                    f"R = {rmax:g}, too close to the edge of the free-space grid; allowed: to <= {limit:.3g} for this radius"
+                    f"R = {rmax:g}, too close to the edge of the free-space grid; allowed: to <= {limit:.3g} for this radius",
+                    key="forces.sphere.to"
                 )
-    _check_spectrum_and_hardness(cfg, kinds)
+    for axis in AXES.values():
+        if axis.check is not None:
+            axis.check(cfg, kinds)
     return cfg
-
-
-def _check_spectrum_and_hardness(cfg: dict, kinds: set) -> None:
-    """The checks of the optional axes that a JSON schema cannot express."""
-    n, length = cfg["grid"]["n"], cfg["grid"]["length"]
-    if "sphere" in kinds:
-        for i, exponent in enumerate(cfg["exponent"]):
-            if exponent in cfg["hurst"]:
-                raise ConfigError(
-                    f"config key 'exponent[{i}]' = {exponent:g} equals a Hurst exponent: the body and the roughness "
-                    "then have parallel asymptotes and eqs. 16-17 no crossover; allowed: exponents other than every H")
-    if None in cfg["rolloff"] and length in cfg["rolloff"]:
-        raise ConfigError(f"config key 'rolloff' lists both null and grid.length = {length:g}, the same spectrum (a "
-                          "roll-off at L is none); allowed: one of them")
-    rolloffs = [length if r is None else r for r in cfg["rolloff"]]
-    cutoffs = [0.0 if c is None else c for c in cfg["cutoff"]]
-    for i, rolloff in enumerate(cfg["rolloff"]):
-        if rolloff is not None and rolloff > length:
-            raise ConfigError(f"config key 'rolloff[{i}]' = {rolloff:g} is not allowed; allowed: null or a wavelength "
-                              f"<= grid.length = {length:g} (the longest wavelength of the surface)")
-    for i, cutoff in enumerate(cfg["cutoff"]):
-        if cutoff is not None and cutoff < 2 * length / n:
-            raise ConfigError(f"config key 'cutoff[{i}]' = {cutoff:g} is not allowed; allowed: null or a wavelength "
-                              f">= 2 cells = 2 grid.length/grid.n = {2 * length / n:.3g}")
-        if cutoff is not None and cutoff >= min(rolloffs):
-            raise ConfigError(f"config key 'cutoff[{i}]' = {cutoff:g} is not allowed; allowed: a wavelength below every "
-                              f"roll-off ({min(rolloffs):g}), else no self-affine band is left")
-    for i, hardness in enumerate(cfg["hardness"]):
-        if hardness is None:
-            continue
-        if cfg["solver"]["stiffness"] == "difference":
-            raise ConfigError(f"config key 'solver.stiffness' = 'difference' is not allowed with 'hardness[{i}]' = "
-                              f"{hardness:g}; allowed: punch (the unloading stiffness of a plastic contact)")
-        for kind in sorted(kinds):
-            to = cfg["forces"][kind]["to"]
-            # fully plastic: F = hardness * area; a sphere's contact must stay within L/4 of its apex
-            limit = hardness if kind == "flat" else math.pi * hardness / 16
-            if to >= limit:
-                raise ConfigError(
-                    f"config key 'hardness[{i}]' = {hardness:g} (units of E*) is too soft for forces.{kind}.to = "
-                    f"{to:g}: a fully plastic contact would cover {'the whole grid' if kind == 'flat' else 'more than L/4'}"
-                    f"; allowed: hardness > {to / (limit / hardness):.3g} or a smaller forces.{kind}.to")
-    if max(cutoffs) > 0 and "flat" in kinds and cfg["forces"].get("flat"):
-        slope = min(full_contact_slope(h, n, length, rolloff=r, cutoff=c or None)
-                    for h in cfg["hurst"] for r in rolloffs for c in cutoffs) * min(cfg["h_rms"])
-        if cfg["forces"]["flat"]["to"] >= 0.5 * slope:
-            raise ConfigError(
-                f"config key 'forces.flat.to' = {cfg['forces']['flat']['to']:g} would press the flat surfaces with "
-                f"a cutoff close to full contact (rms slope ~ {slope:.3g}); allowed: to < {0.5 * slope:.3g}")

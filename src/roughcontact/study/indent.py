@@ -22,12 +22,13 @@ logger = logging.getLogger(__name__)
 
 
 def make_surface(s: JobSettings) -> np.ndarray:
-    """Heights of one run: a rough body of revolution, or a nominally flat surface."""
-    spectrum = {"rolloff": s.rolloff, "cutoff": s.cutoff}
+    """Heights of one run: a rough body of revolution, or a nominally flat surface; the axes
+    act through their role (:meth:`JobSettings.arguments`)."""
+    roughness = s.arguments("roughness")
     if s.kind == "flat":
-        return surfaces.self_affine(s.n, hurst=s.hurst, h_rms=s.h_rms, length=s.length, seed=s.seed, **spectrum)
-    return surfaces.rough_sphere(s.n, radius=s.radius, hurst=s.hurst, h_rms=s.h_rms, length=s.length,
-                                 seed=s.seed, exponent=s.exponent, **spectrum)
+        return surfaces.self_affine(s.n, length=s.length, seed=s.seed, **roughness)
+    return surfaces.rough_sphere(s.n, radius=s.radius, length=s.length, seed=s.seed, **roughness,
+                                 **s.arguments("body"))
 
 
 def compute_run(s: JobSettings, progress=None) -> dict:
@@ -47,12 +48,12 @@ def compute_run(s: JobSettings, progress=None) -> dict:
     z = make_surface(s)
     cell = (L / s.n) ** 2
     out = {name: np.zeros(total, dtype=runfile.VARIABLES[name].dtype)
-           for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if s.hardness is not None else ())}
+           for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if s.value("hardness") is not None else ())}
     out["force"] = forces
     logger.info("indent %s: %d loads F/(E*L^2) = %g ... %g, tol = %g, stiffness = %s", s.describe(), total,
                 s.force_from, s.force_to, s.tol, s.stiffness_method)
     path = bem.iter_load_path(z, forces, length=L, e_star=E, periodic=s.periodic, tol=s.tol, maxiter=s.maxiter,
-                              hardness=s.hardness)
+                              **s.arguments("solver"))
     i = 0  # the load being solved: the generator raises while solving load i
     clock = time.perf_counter()
     try:

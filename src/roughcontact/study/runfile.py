@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import dataclasses
 
+from .axes import AXES
+
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "SCALARS", "AXIS_ATTRS",
            "FORCE_ATTRS", "TITLE"]
 
@@ -53,14 +55,7 @@ SCALARS = {
     "seed": ("i8", "random seed of the surface", "1"),
 }
 
-#: attributes of the sweep axes as coordinates of the merged files
-AXIS_ATTRS = {
-    "hurst": {"long_name": "Hurst exponent H", "units": "1"},
-    "radius": {"long_name": "sphere radius R", "units": "length"},
-    "exponent": {"long_name": "exponent m of the body of revolution z = (R/m)(r/R)^m (2: paraboloid)", "units": "1"},
-    "h_rms": {"long_name": "rms roughness height", "units": "length"},
-    "rolloff": {"long_name": "roll-off wavelength of the spectrum (grid.length: none)", "units": "length"},
-    "cutoff": {"long_name": "short-wavelength cutoff of the spectrum (0: none)", "units": "length"},
-    "hardness": {"long_name": "penetration hardness (inf: elastic)", "units": "e_star"},
-    "seed": {"long_name": "random seed of the surface", "units": "1"},
-}
+#: attributes of the sweep axes (:data:`roughcontact.study.axes.AXES`) and of ``seed`` as
+#: coordinates of the merged files
+AXIS_ATTRS = {**{a.name: {"long_name": a.long_name, "units": a.unit} for a in AXES.values()},
+              "seed": {"long_name": "random seed of the surface", "units": "1"}}

@@ -9,11 +9,14 @@ workflow turns names into paths with its own patterns (:func:`run_path`).
 """
 from __future__ import annotations
 
+import itertools
 import math
 import re
 import string
 
 import numpy as np
+
+from . import axes
 
 __all__ = [
     "format_value",
@@ -30,21 +33,16 @@ __all__ = [
     "sphere_names",
     "parse_combo",
     "AXES",
+    "DEFAULTS",
     "kind_of",
 ]
 
-#: sweep axes of the runs of each surface kind, in the order of the merged
-#: file's dimensions (then ``seed`` and ``force``); a flat surface has no
-#: radius and no body exponent
-AXES = {"sphere": ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness"),
-        "flat": ("hurst", "h_rms", "rolloff", "cutoff", "hardness")}
-#: the paper's setting of the optional axes: a paraboloid (m = 2), a spectrum from L
-#: down to the grid (no roll-off, no cutoff), an elastic half-space. Runs with these
-#: values have the names and settings they had before the axes existed.
-DEFAULTS = {"exponent": 2.0, "rolloff": None, "cutoff": None, "hardness": None}
-#: tag of each axis in a run's name, ``H0.7_R0.5_h0.009[_m4][_rolloff0.25][_cutoff0.01][_hardness0.01]``
-TAGS = {"hurst": "H", "radius": "R", "h_rms": "h", "exponent": "_m", "rolloff": "_rolloff",
-        "cutoff": "_cutoff", "hardness": "_hardness"}
+#: sweep axes of the runs of each surface kind, in the order of the merged file's dimensions
+#: (then ``seed`` and ``force``), from the registry :data:`roughcontact.study.axes.AXES`
+AXES = {kind: axes.names(kind) for kind in ("sphere", "flat")}
+#: the paper's setting of the optional axes (a paraboloid, no roll-off, no cutoff, elastic):
+#: runs with these values have the names and settings they had before the axes existed
+DEFAULTS = {a.name: a.paper for a in axes.optional_axes()}
 
 
 # --------------------------------------------------------------------------
@@ -66,36 +64,31 @@ def kind_of(radius) -> str:
 
 
 def coordinate(axis: str, value, length: float) -> float:
-    """Value of a run's axis as a coordinate of the merged files: the paper's
-    settings as numbers with the same meaning (rolloff null = the system size L,
+    """Value of a run's axis as a coordinate of the merged files (:meth:`axes.Axis.coordinate`):
+    the paper's settings as numbers with the same meaning (rolloff null = the system size L,
     cutoff null = 0, i.e. no short wavelength removed, hardness null = inf, elastic)."""
-    if value is None:
-        return {"rolloff": float(length), "cutoff": 0.0, "hardness": math.inf}[axis]
-    return float(value)
+    return axes.axis(axis).coordinate(value, length)
 
 
 def axis_value(axis: str, coordinate_value: float, length: float):
     """The inverse of :func:`coordinate`: the run's value of an optional axis (``None`` for the
     paper's setting: rolloff = L, cutoff = 0, hardness = inf), else the number."""
-    paper = coordinate(axis, None, length)
-    return None if coordinate_value == paper else float(coordinate_value)
+    return axes.axis(axis).value_of(coordinate_value, length)
 
 
 def combinations(cfg: dict) -> list[dict]:
-    """One dict per (H, R, h_rms and the optional axes) in sweep order; flat
-    surfaces (R = inf) take only the default body exponent (they have no body)."""
+    """One dict per point of the sweep's axes (:data:`axes.AXES`) in sweep order (the
+    registry's order, the last axis fastest); an axis a surface kind does not sweep (a flat
+    surface's body exponent) takes its paper value."""
     out = []
     for hurst in cfg["hurst"]:
         for radius in cfg["radius"]:
-            exponents = cfg["exponent"] if math.isfinite(radius) else [DEFAULTS["exponent"]]
-            for exponent in exponents:
-                for h_rms in cfg["h_rms"]:
-                    for rolloff in cfg["rolloff"]:
-                        for cutoff in cfg["cutoff"]:
-                            for hardness in cfg["hardness"]:
-                                out.append({"hurst": hurst, "radius": radius, "exponent": exponent, "h_rms": h_rms,
-                                            "rolloff": rolloff, "cutoff": cutoff, "hardness": hardness,
-                                            "kind": kind_of(radius)})
+            kind = kind_of(radius)
+            rest = [a for a in axes.AXES.values() if a.name not in ("hurst", "radius")]
+            values = [cfg[a.name] if kind in a.kinds else [a.paper] for a in rest]
+            for point in itertools.product(*values):
+                combo = {"hurst": hurst, "radius": radius, **{a.name: v for a, v in zip(rest, point)}}
+                out.append({name: combo[name] for name in axes.AXES} | {"kind": kind})
     return out
 
 
@@ -104,18 +97,22 @@ def runs(cfg: dict) -> list[dict]:
     return [{**combo, "seed": seed} for combo in combinations(cfg) for seed in cfg["seeds"]]
 
 
+#: the axes every run name carries, in the name's order (the others only off the paper's setting)
+_NAMED = tuple(a for a in ("hurst", "radius", "h_rms") if a in axes.AXES)
+
+
 def combo_name(run: dict) -> str:
     """Name of a run's (H, R, h_rms, ...) directory: ``H0.7_R0.5_h0.009``, plus a tag
-    for every optional axis off its default (``_m4``, ``_rolloff0.25``, ...)."""
-    name = "_".join(f"{TAGS[a]}{format_value(run[a])}" for a in ("hurst", "radius", "h_rms"))
-    for axis, default in DEFAULTS.items():
-        if run.get(axis, default) != default:
-            name += f"{TAGS[axis]}{format_value(run[axis])}"
+    for every optional axis off its paper setting (``_m4``, ``_rolloff0.25``, ...)."""
+    name = "_".join(f"{axes.axis(a).tag}{format_value(run[a])}" for a in _NAMED)
+    for axis in axes.optional_axes():
+        if run.get(axis.name, axis.paper) != axis.paper:
+            name += f"_{axis.tag}{format_value(run[axis.name])}"
     return name
 
 
-_COMBO = re.compile(r"H(?P<hurst>[^_/]+)_R(?P<radius>[^_/]+)_h(?P<h_rms>[^_/]+?)"
-                    + "".join(rf"(?:{TAGS[a]}(?P<{a}>[^_/]+?))?" for a in DEFAULTS) + "$")
+_COMBO = re.compile("_".join(rf"{axes.axis(a).tag}(?P<{a}>[^_/]+?)" for a in _NAMED)
+                    + "".join(rf"(?:_{a.tag}(?P<{a.name}>[^_/]+?))?" for a in axes.optional_axes()) + "$")
 
 
 def parse_combo(name: str) -> dict:
@@ -123,10 +120,10 @@ def parse_combo(name: str) -> dict:
     match = _COMBO.match(name)
     if not match:
         raise ValueError(f"{name!r} is not a run name like H0.7_R0.5_h0.009[_m4][_rolloff0.25]...")
-    out = {axis: parse_value(match.group(axis)) for axis in ("hurst", "radius", "h_rms")}
-    for axis, default in DEFAULTS.items():
-        text = match.group(axis)
-        out[axis] = default if text is None else parse_value(text)
+    out = {axis: parse_value(match.group(axis)) for axis in _NAMED}
+    for axis in axes.optional_axes():
+        text = match.group(axis.name)
+        out[axis.name] = axis.paper if text is None else parse_value(text)
     return out
 
 

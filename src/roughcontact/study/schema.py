@@ -52,6 +52,7 @@ __all__ = [
     "load_schema",
     "printable",
     "schema_error",
+    "schema_file",
     "short_text",
 ]
 
@@ -64,10 +65,45 @@ SCHEMA_PATH = Path(__file__).with_name("config.schema.yaml")
 
 
 def load_schema(schema) -> dict:
+    """The schema *schema* (a path or a loaded dict); ``None``: the package's own, the file
+    :data:`SCHEMA_PATH` with the sweep axes' entries (:func:`roughcontact.study.axes.schema_properties`)
+    inserted before ``seeds``."""
     if isinstance(schema, dict):
         return schema
-    path = Path(schema if schema is not None else SCHEMA_PATH).resolve()
+    if schema is None:
+        return _package_schema(SCHEMA_PATH.stat().st_mtime_ns)
+    path = Path(schema).resolve()
     return _parse_schema(str(path), path.stat().st_mtime_ns)
+
+
+@functools.lru_cache(maxsize=4)
+def _package_schema(mtime_ns: int) -> dict:
+    from .axes import schema_properties
+
+    root = copy.deepcopy(_parse_schema(str(SCHEMA_PATH.resolve()), mtime_ns))
+    properties = {}
+    for name, node in root["properties"].items():
+        if name == "seeds":
+            properties.update(schema_properties())
+        properties[name] = node
+    root["properties"] = properties
+    return root
+
+
+def schema_file() -> str:
+    """Path of a JSON file holding :func:`load_schema` ``(None)`` (written once per content, in
+    the temporary directory): what Snakemake's ``validate()`` reads."""
+    import hashlib
+    import os
+    import tempfile
+
+    text = json.dumps(load_schema(None), sort_keys=True)
+    path = Path(tempfile.gettempdir()) / f"roughcontact-schema-{hashlib.sha256(text.encode()).hexdigest()[:16]}.json"
+    if not path.exists():
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_text(text, encoding="utf-8")
+        os.replace(tmp, path)
+    return str(path)
 
 
 @functools.lru_cache(maxsize=8)
@@ -278,14 +314,15 @@ def schema_error(err, root: dict) -> ConfigError:
         names = ", ".join(f"'{key_text(path + [str(e)])}'" for e in extra)
         return ConfigError(
             f"unknown config key {names}; allowed keys {'at top level' if not path else 'in ' + where}: "
-            + ", ".join(allowed)
+            + ", ".join(allowed), key=key_text(path + [str(extra[0])]) if extra else None
         )
     if err.validator == "required":
         missing = next((k for k in err.validator_value if k not in err.instance), "?")
         node = _node(root, root, path + [missing])
-        return ConfigError(f"missing config key '{key_text(path + [missing])}'; allowed: {_describe(node, root)}")
+        return ConfigError(f"missing config key '{key_text(path + [missing])}'; allowed: {_describe(node, root)}",
+                           key=key_text(path + [missing]))
     return ConfigError(f"config key '{key_text(path)}' = {short_text(err.instance)} is not allowed; "
-                       f"allowed: {_describe(_documented(root, path), root)}")
+                       f"allowed: {_describe(_documented(root, path), root)}", key=key_text(path))
 
 
 def _documented(root: dict, path) -> dict:
@@ -343,7 +380,7 @@ def finite_error(path, value, schema: dict | None = None, allow_inf: bool | None
     if not node.get("type"):
         node = {**node, "type": "number"}
     return ConfigError(f"config key '{key_text(path)}' = {short_text(value)} is not allowed; "
-                       f"allowed: {_describe(node, root, finite=True)}")
+                       f"allowed: {_describe(node, root, finite=True)}", key=key_text(path))
 
 
 def fill_defaults(instance, node, root):

@@ -13,9 +13,10 @@ import math
 import numpy as np
 
 from ..bem import DEFAULT_MAXITER
-from .runs import DEFAULTS, force_grid, kind_of, parse_combo
+from . import axes
+from .runs import force_grid, kind_of, parse_combo
 
-__all__ = ["JobSettings", "job_settings", "settings_from_wildcards"]
+__all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -38,12 +39,11 @@ class JobSettings:
         (:func:`roughcontact.bem.solve`), the stiffness's extra solves included.
     stiffness_method, rel_step :
         How ``k = dF/dd`` is computed (:func:`roughcontact.bem.stiffness`).
-    exponent, rolloff, cutoff :
-        The optional axes: body ``z = (R/m)(r/R)^m``, roll-off and cutoff wavelengths
-        (``None``: none).
-    hardness_e_star :
-        Penetration hardness in units of ``E*`` (``None``: elastic);
-        :attr:`hardness` is the pressure.
+    options : tuple of (str, float)
+        The optional axes of :data:`roughcontact.study.axes.AXES` off the paper's setting, in
+        the registry's order, under their configuration names and units (``hardness`` in units
+        of ``E*``); each is also an attribute (``settings.rolloff``), the paper's value where
+        it is not listed.
     """
 
     hurst: float
@@ -60,10 +60,14 @@ class JobSettings:
     stiffness_method: str
     rel_step: float
     maxiter: int = DEFAULT_MAXITER
-    exponent: float = DEFAULTS["exponent"]
-    rolloff: float | None = DEFAULTS["rolloff"]
-    cutoff: float | None = DEFAULTS["cutoff"]
-    hardness_e_star: float | None = DEFAULTS["hardness"]
+    options: tuple = ()
+
+    def __getattr__(self, name: str):
+        """The value of an optional axis (its paper value where :attr:`options` does not list it)."""
+        spec = axes.AXES.get(name)
+        if spec is None or not spec.optional:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        return dict(self.options).get(name, spec.paper)
 
     @property
     def kind(self) -> str:
@@ -75,10 +79,22 @@ class JobSettings:
         """Whether the half-space is periodic (the nominally flat surfaces)."""
         return self.kind == "flat"
 
-    @property
-    def hardness(self) -> float | None:
-        """Penetration hardness as a pressure (the unit of ``e_star``); ``None``: elastic."""
-        return None if self.hardness_e_star is None else self.hardness_e_star * self.e_star
+    def value(self, name: str):
+        """The run's value of the axis *name* (configuration units)."""
+        return getattr(self, name)
+
+    def arguments(self, role: str) -> dict:
+        """Keyword arguments of the axes acting as *role* (:data:`roughcontact.study.axes.ROLES`):
+        ``roughness`` for the surface generator, ``body`` for the body, ``solver`` for the
+        contact solver (converted by :attr:`~roughcontact.study.axes.Axis.to_solver`, e.g. the
+        hardness to a pressure); an axis at a ``None`` paper setting is passed as ``None``."""
+        out = {}
+        for spec in axes.AXES.values():
+            if spec.role != role or spec.name == "radius" or self.kind not in spec.kinds:
+                continue
+            value = self.value(spec.name)
+            out[spec.name] = spec.to_solver(value, self.e_star) if spec.to_solver and value is not None else value
+        return out
 
     def forces_normalized(self) -> np.ndarray:
         """The load path ``F/(E* L²)``, log-spaced."""
@@ -89,17 +105,14 @@ class JobSettings:
         return self.forces_normalized() * self.e_star * self.length**2
 
     def axes(self) -> dict:
-        """The optional axes off the paper's setting (:data:`~roughcontact.study.runs.DEFAULTS`),
-        under their configuration names (``hardness`` in units of ``E*``)."""
-        values = {"exponent": self.exponent, "rolloff": self.rolloff, "cutoff": self.cutoff,
-                  "hardness": self.hardness_e_star}
-        return {axis: value for axis, value in values.items() if value != DEFAULTS[axis]}
+        """The optional axes off the paper's setting, under their configuration names
+        (``hardness`` in units of ``E*``)."""
+        return dict(self.options)
 
     def record(self) -> dict:
         """The settings as a flat mapping of plain values: what a run file's ``config_hash``
         and attributes are made of. Optional axes at the paper's setting are left out."""
-        out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
-               if field.name not in ("exponent", "rolloff", "cutoff", "hardness_e_star")}
+        out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self) if field.name != "options"}
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
 
     def describe(self) -> str:
@@ -109,22 +122,29 @@ class JobSettings:
         return f"H = {self.hurst:g}, R = {r}, h_rms = {self.h_rms:g}{extra}, seed = {self.seed}, n = {self.n}"
 
 
+def options_of(run: dict) -> tuple:
+    """:attr:`JobSettings.options` of a run (a dict with the axes' values, missing ones at the
+    paper's setting)."""
+    out = []
+    for spec in axes.optional_axes():
+        value = run.get(spec.name, spec.paper)
+        if value != spec.paper:
+            out.append((spec.name, float(value)))
+    return tuple(out)
+
+
 def job_settings(cfg: dict, run: dict) -> JobSettings:
     """The :class:`JobSettings` of one run (a dict of :func:`roughcontact.study.runs.runs`)
     of the resolved configuration *cfg*."""
     radius = float(run["radius"])
     rng = cfg["forces"][kind_of(radius)]
     solver = cfg["solver"]
-    optional = {axis: None if run.get(axis, default) is None else float(run.get(axis, default))
-                for axis, default in DEFAULTS.items()}
     return JobSettings(
         hurst=float(run["hurst"]), radius=radius, h_rms=float(run["h_rms"]), seed=int(run["seed"]),
         n=int(cfg["grid"]["n"]), length=float(cfg["grid"]["length"]), e_star=float(cfg["e_star"]),
         force_from=float(rng["from"]), force_to=float(rng["to"]), force_count=int(rng["count"]),
         tol=float(solver["tol"]), stiffness_method=solver["stiffness"], rel_step=float(solver["rel_step"]),
-        maxiter=int(solver.get("maxiter", DEFAULT_MAXITER)),
-        exponent=optional["exponent"], rolloff=optional["rolloff"], cutoff=optional["cutoff"],
-        hardness_e_star=optional["hardness"])
+        maxiter=int(solver.get("maxiter", DEFAULT_MAXITER)), options=options_of(run))
 
 
 def settings_from_wildcards(cfg: dict, wildcards) -> JobSettings:

@@ -1,0 +1,291 @@
+"""The sweep axes of a study: one :class:`Axis` per swept quantity, registered here once.
+
+Everything that iterates over the axes reads :data:`AXES`: the configuration's schema (each
+axis's entry, :func:`schema_properties`) and its normalisation, run names
+(:mod:`roughcontact.study.runs`), job settings (:mod:`roughcontact.study.settings`), the
+surface and solver arguments of the indent job, the merged files' coordinates, the
+command line's flags and the claims' columns. Adding an axis is one :func:`register` call
+in this module (its schema, tag, unit, paper value and where it acts) plus its test; see the
+package guide (``docs/guide/package.md``) for a worked example.
+
+Units: lengths in the unit of ``grid.length``, pressures in units of ``E*``. A run's axis
+value is what the configuration lists (``None``: the paper's setting, for an optional axis);
+its *coordinate* in the merged files is a number with the same meaning
+(:meth:`Axis.coordinate`: a roll-off of ``None`` is the system size ``L``, a cutoff 0, a
+hardness ``inf``).
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Callable
+
+__all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES"]
+
+#: where an axis acts on a run: the roughness of the surface (an argument of
+#: :func:`roughcontact.surfaces.self_affine` and :func:`~roughcontact.surfaces.rough_sphere`),
+#: the body it is superposed on (an argument of ``rough_sphere`` only), or the contact solver
+#: (an argument of :func:`roughcontact.bem.iter_load_path`)
+ROLES = ("roughness", "body", "solver")
+
+
+@dataclasses.dataclass(frozen=True)
+class Axis:
+    """One sweep axis.
+
+    Attributes
+    ----------
+    name : str
+        Configuration key (a list of values), merged-file dimension, settings key and the
+        keyword of the surface or solver function it is passed to.
+    tag : str
+        Its tag in a run's name (``H`` in ``H0.7_R0.5_h0.009``, ``m`` in ``..._m4``).
+    long_name, unit : str
+        Attributes of the merged files' coordinate (CF ``units`` in the study's units).
+    description : str
+        The configuration reference's sentence (the schema's ``description``).
+    item_schema : dict
+        JSON schema of one value of the list (``null`` allowed where ``optional``).
+    role : str
+        One of :data:`ROLES`.
+    kinds : tuple of str
+        The surface kinds (``sphere``, ``flat``) whose runs sweep it; the others take the
+        paper's value.
+    optional : bool
+        Whether the axis has a paper setting (``paper``) and may be left out of a config; a
+        run at the paper's setting has no tag in its name and no key in its settings' record,
+        so adding an optional axis leaves every earlier run's name and hash unchanged.
+    paper : float or None
+        The paper's setting (optional axes only): the config's default is ``[paper]``.
+    paper_coordinate : callable
+        ``L -> coordinate`` of a ``None`` value (optional axes whose paper setting is ``None``).
+    may_be_empty : bool
+        Whether the config's list may be empty (the generated surfaces' axes, with measured
+        inputs only).
+    flag_help : str
+        Help of its ``roughcontact indent`` flag ``--<name with dashes>``.
+    claim : str
+        The claim that tests the axis off the paper's setting (claims (a)-(f) say
+        ``untested`` there and name it), or ``""``.
+    to_solver : callable
+        ``(value, e_star) -> argument`` of the solver (``role == "solver"``).
+    check : callable or None
+        ``check(cfg, kinds)``: the cross-key checks a JSON schema cannot express; raises
+        :class:`~roughcontact.errors.ConfigError`.
+    """
+
+    name: str
+    tag: str
+    long_name: str
+    unit: str
+    description: str
+    item_schema: dict
+    role: str
+    kinds: tuple = ("sphere", "flat")
+    optional: bool = True
+    paper: float | None = None
+    paper_coordinate: Callable[[float], float] | None = None
+    may_be_empty: bool = False
+    flag_help: str = ""
+    claim: str = ""
+    to_solver: Callable | None = None
+    check: Callable | None = None
+
+    @property
+    def flag(self) -> str:
+        """The ``roughcontact indent`` flag of the axis."""
+        return "--" + self.name.replace("_", "-")
+
+    def coordinate(self, value, length: float) -> float:
+        """The value of a run as a coordinate of the merged files (module docstring)."""
+        if value is None:
+            return float(self.paper_coordinate(length))
+        return float(value)
+
+    def value_of(self, coordinate: float, length: float):
+        """The inverse of :meth:`coordinate`: ``None`` at the paper's setting of a nullable axis."""
+        if self.optional and self.paper is None and coordinate == self.coordinate(None, length):
+            return None
+        return float(coordinate)
+
+    def normalise(self, values) -> list:
+        """The config's list sorted, as floats, ``None`` (the paper's setting) first."""
+        return sorted((None if v is None else float(v) for v in values), key=lambda v: (v is not None, v))
+
+    def schema(self) -> dict:
+        """The axis's entry in the configuration schema."""
+        entry = {"description": self.description, "type": "array", "minItems": 0 if self.may_be_empty else 1,
+                 "uniqueItems": True, "items": self.item_schema}
+        if self.optional:
+            entry["default"] = [self.paper]
+        return entry
+
+
+#: every axis, in the order of the merged files' dimensions (then ``seed`` and ``force``)
+AXES: dict[str, Axis] = {}
+
+
+def register(axis_: Axis) -> Axis:
+    """Add *axis_* to :data:`AXES` (after the ones registered before it)."""
+    if axis_.name in AXES:
+        raise ValueError(f"axis {axis_.name!r} is registered already")
+    if axis_.role not in ROLES:
+        raise ValueError(f"axis {axis_.name!r}: role {axis_.role!r} is none of {ROLES}")
+    AXES[axis_.name] = axis_
+    return axis_
+
+
+def axis(name: str) -> Axis:
+    """The registered axis *name*."""
+    return AXES[name]
+
+
+def names(kind: str | None = None) -> tuple[str, ...]:
+    """The axes' names in order; those a *kind* of surface sweeps if given."""
+    return tuple(a.name for a in AXES.values() if kind is None or kind in a.kinds)
+
+
+def optional_axes() -> tuple[Axis, ...]:
+    """The axes with a paper setting (off it, a run's name has their tag)."""
+    return tuple(a for a in AXES.values() if a.optional)
+
+
+def schema_properties() -> dict:
+    """``{name: schema entry}`` of every axis, for :func:`roughcontact.study.schema.load_schema`."""
+    return {a.name: a.schema() for a in AXES.values()}
+
+
+def _number(**bounds) -> dict:
+    return {"type": "number", **bounds}
+
+
+def _nullable(**bounds) -> dict:
+    return {"oneOf": [{"type": "null"}, {"type": "number", **bounds}]}
+
+
+# --------------------------------------------------------------------------
+# the axes of Pohrt & Popov (2013): H, R, h_rms
+# --------------------------------------------------------------------------
+register(Axis(
+    "hurst", "H", "Hurst exponent H", "1",
+    "Hurst exponents H of the generated surfaces (required, non-empty, unless topography or spectrum is given; "
+    "then may be empty or missing)",
+    _number(exclusiveMinimum=0, exclusiveMaximum=2), "roughness", optional=False, may_be_empty=True,
+    flag_help="Hurst exponent H, 0 < H < 2"))
+register(Axis(
+    "radius", "R", "sphere radius R", "length", "sphere radii R (.inf = nominally flat, periodic)",
+    _number(exclusiveMinimum=0, **{"x-allow-inf": True}), "body", kinds=("sphere",), optional=False,
+    flag_help="sphere radius R; inf = nominally flat"))
+
+
+# --------------------------------------------------------------------------
+# beyond the paraboloid (the paper's Conclusions)
+# --------------------------------------------------------------------------
+def _check_exponent(cfg: dict, kinds: set) -> None:
+    from ..errors import ConfigError
+
+    if "sphere" not in kinds:
+        return
+    for i, exponent in enumerate(cfg["exponent"]):
+        if exponent in cfg["hurst"]:
+            raise ConfigError(
+                f"config key 'exponent[{i}]' = {exponent:g} equals a Hurst exponent: the body and the roughness "
+                "then have parallel asymptotes and eqs. 16-17 no crossover; allowed: exponents other than every H",
+                key=f"exponent[{i}]")
+
+
+register(Axis(
+    "exponent", "m", "exponent m of the body of revolution z = (R/m)(r/R)^m (2: paraboloid)", "1",
+    "exponents m of the bodies of revolution z = (R/m)(r/R)^m pressed by the spheres (2 = the paper's "
+    "paraboloid, 1 = a cone of slope 1); not used by flat surfaces",
+    _number(exclusiveMinimum=0, maximum=8), "body", kinds=("sphere",), paper=2.0,
+    flag_help="body of revolution z = (R/m)(r/R)^m of the sphere (default 2: the paraboloid)", check=_check_exponent))
+register(Axis(
+    "h_rms", "h", "rms roughness height", "length",
+    "rms roughness heights h of the generated surfaces (required, non-empty, unless topography or spectrum is "
+    "given; then may be empty or missing)",
+    _number(exclusiveMinimum=0), "roughness", optional=False, may_be_empty=True,
+    flag_help="rms roughness height"))
+
+
+# --------------------------------------------------------------------------
+# the spectrum: roll-off and cutoff
+# --------------------------------------------------------------------------
+def _check_spectrum(cfg: dict, kinds: set) -> None:
+    from ..errors import ConfigError
+    from .config import full_contact_slope
+
+    n, length = cfg["grid"]["n"], cfg["grid"]["length"]
+    if None in cfg["rolloff"] and length in cfg["rolloff"]:
+        raise ConfigError(f"config key 'rolloff' lists both null and grid.length = {length:g}, the same spectrum (a "
+                          "roll-off at L is none); allowed: one of them", key="rolloff")
+    rolloffs = [length if r is None else r for r in cfg["rolloff"]]
+    cutoffs = [0.0 if c is None else c for c in cfg["cutoff"]]
+    for i, rolloff in enumerate(cfg["rolloff"]):
+        if rolloff is not None and rolloff > length:
+            raise ConfigError(f"config key 'rolloff[{i}]' = {rolloff:g} is not allowed; allowed: null or a wavelength "
+                              f"<= grid.length = {length:g} (the longest wavelength of the surface)",
+                              key=f"rolloff[{i}]")
+    for i, cutoff in enumerate(cfg["cutoff"]):
+        if cutoff is not None and cutoff < 2 * length / n:
+            raise ConfigError(f"config key 'cutoff[{i}]' = {cutoff:g} is not allowed; allowed: null or a wavelength "
+                              f">= 2 cells = 2 grid.length/grid.n = {2 * length / n:.3g}", key=f"cutoff[{i}]")
+        if cutoff is not None and cutoff >= min(rolloffs):
+            raise ConfigError(f"config key 'cutoff[{i}]' = {cutoff:g} is not allowed; allowed: a wavelength below every "
+                              f"roll-off ({min(rolloffs):g}), else no self-affine band is left", key=f"cutoff[{i}]")
+    if max(cutoffs) > 0 and "flat" in kinds and cfg["forces"].get("flat"):
+        slope = min(full_contact_slope(h, n, length, rolloff=r, cutoff=c or None)
+                    for h in cfg["hurst"] for r in rolloffs for c in cutoffs) * min(cfg["h_rms"])
+        if cfg["forces"]["flat"]["to"] >= 0.5 * slope:
+            raise ConfigError(
+                f"config key 'forces.flat.to' = {cfg['forces']['flat']['to']:g} would press the flat surfaces with "
+                f"a cutoff close to full contact (rms slope ~ {slope:.3g}); allowed: to < {0.5 * slope:.3g}",
+                key="forces.flat.to")
+
+
+register(Axis(
+    "rolloff", "rolloff", "roll-off wavelength of the spectrum (grid.length: none)", "length",
+    "roll-off wavelengths of the roughness spectrum (length unit; C(q) is constant for q < 2 pi/rolloff); "
+    "null = grid.length (no roll-off)",
+    _nullable(exclusiveMinimum=0), "roughness", paper_coordinate=float,
+    flag_help="roll-off wavelength of the spectrum (default: L)", claim="j"))
+register(Axis(
+    "cutoff", "cutoff", "short-wavelength cutoff of the spectrum (0: none)", "length",
+    "short-wavelength cutoffs of the roughness spectrum (length unit; C(q) = 0 for q > 2 pi/cutoff); "
+    "null = none (every grid mode)",
+    _nullable(exclusiveMinimum=0), "roughness", paper_coordinate=lambda length: 0.0,
+    flag_help="short-wavelength cutoff (default: none)", claim="i", check=_check_spectrum))
+
+
+# --------------------------------------------------------------------------
+# plasticity: a penetration hardness
+# --------------------------------------------------------------------------
+def _check_hardness(cfg: dict, kinds: set) -> None:
+    from ..errors import ConfigError
+
+    for i, hardness in enumerate(cfg["hardness"]):
+        if hardness is None:
+            continue
+        if cfg["solver"]["stiffness"] == "difference":
+            raise ConfigError(f"config key 'solver.stiffness' = 'difference' is not allowed with 'hardness[{i}]' = "
+                              f"{hardness:g}; allowed: punch (the unloading stiffness of a plastic contact)",
+                              key="solver.stiffness")
+        for kind in sorted(kinds):
+            to = cfg["forces"][kind]["to"]
+            # fully plastic: F = hardness * area; a sphere's contact must stay within L/4 of its apex
+            limit = hardness if kind == "flat" else math.pi * hardness / 16
+            if to >= limit:
+                raise ConfigError(
+                    f"config key 'hardness[{i}]' = {hardness:g} (units of E*) is too soft for forces.{kind}.to = "
+                    f"{to:g}: a fully plastic contact would cover {'the whole grid' if kind == 'flat' else 'more than L/4'}"
+                    f"; allowed: hardness > {to / (limit / hardness):.3g} or a smaller forces.{kind}.to",
+                    key=f"hardness[{i}]")
+
+
+register(Axis(
+    "hardness", "hardness", "penetration hardness (inf: elastic)", "e_star",
+    "penetration hardness of the half-space in units of E* (pressure is capped there, cells flow plastically); "
+    "null = elastic",
+    _nullable(exclusiveMinimum=0), "solver", paper_coordinate=lambda length: math.inf,
+    flag_help="penetration hardness in units of E* (default: elastic)", claim="k",
+    to_solver=lambda value, e_star: value * e_star, check=_check_hardness))
