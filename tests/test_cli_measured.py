@@ -140,7 +140,7 @@ def test_unreadable_scan(tmp_path, clean_tmp, capsys):
 def test_edge_message_names_the_flag(scan, tmp_path, clean_tmp, capsys):
     out = tmp_path / "run.nc"
     err = _bad(capsys, _args(scan, out, 20.0, 0, {"from": 1e-3, "to": 0.5, "count": 3}), out)
-    assert "lower --force-to below" in err, err
+    assert "lower --force-to to 0.001 or below" in err, err
 
 
 def test_units_spelled_with_mu(scan):

@@ -6,6 +6,7 @@ What the ``indent`` rule and ``roughcontact indent`` call with a
 """
 from __future__ import annotations
 
+import dataclasses
 import logging
 import time
 
@@ -16,7 +17,8 @@ from ..errors import ConvergenceError, DomainTooSmallError, IndentError
 from . import provenance, runfile
 from .settings import JobSettings
 
-__all__ = ["make_surface", "compute_run", "write_run", "run_indent"]
+__all__ = ["PathSettings", "solve_load_path", "path_settings", "make_surface", "compute_run", "write_run",
+           "run_indent"]
 
 logger = logging.getLogger(__name__)
 
@@ -31,40 +33,86 @@ def make_surface(s: JobSettings) -> np.ndarray:
                                  **s.arguments("body"))
 
 
-def compute_run(s: JobSettings, progress=None) -> dict:
-    """Solve the warm-started load path of one run; return arrays over force.
+@dataclasses.dataclass(frozen=True)
+class PathSettings:
+    """How one load path is solved: what the generated and the measured jobs share.
 
-    Each state is reduced to its numbers (depth, stiffness, contact cells)
-    as soon as it is solved, so only two states are alive at a time.
-    *progress*, if given, is called as ``progress(i, total, text)`` after each
-    load. Progress lines go to this module's logger.
-
-    Raises :class:`~roughcontact.errors.IndentError` (naming the run and what to change)
-    when a solve does not converge or the contact reaches the free-space grid edge.
+    Attributes
+    ----------
+    length, e_star : float
+        Side ``L`` of the heights' square and effective modulus ``E*`` (forces are reported as
+        ``F/(E* L²)``, stiffnesses as ``k/(E* L)``).
+    periodic, edge_contact : bool
+        The half-space (:func:`roughcontact.bem.iter_load_path`); ``edge_contact``: a finite
+        rough punch may touch its outer ring of cells.
+    tol, maxiter, stiffness_method, rel_step :
+        Solver and stiffness settings (:func:`roughcontact.bem.solve`, :func:`~roughcontact.bem.stiffness`).
+    hardness : float or None
+        Penetration hardness as a pressure (``None``: elastic): adds the loading tangent and the
+        plastic cells (:data:`roughcontact.study.runfile.PLASTIC_VARIABLES`).
+    name : str
+        The run, as error messages and progress lines name it.
+    force_key : str
+        The config key (or flag) of the largest force, named by error messages.
+    edge_hint : str
+        What to change when the contact reaches the edge of a free grid (after "lower
+        <force_key> to <last good load> or below").
     """
-    L, E = s.length, s.e_star
-    forces = s.forces()
+
+    length: float
+    e_star: float
+    periodic: bool
+    tol: float
+    maxiter: int
+    stiffness_method: str
+    rel_step: float
+    name: str
+    force_key: str
+    edge_hint: str = "use more cells (grid.n) on a larger grid.length"
+    hardness: float | None = None
+    edge_contact: bool = False
+
+
+def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress=None, *,
+                    units: tuple[float, str, float, str] | None = None) -> dict:
+    """Solve the warm-started load path of heights *z* at *forces* (force units); return
+    the per-load arrays of :data:`roughcontact.study.runfile.VARIABLES` and ``force``.
+
+    The one indent core: generated surfaces (:func:`compute_run`) and measured ones
+    (:func:`roughcontact.study.measured.run_job`) differ only in how they make ``z``. Each
+    state is reduced to its numbers as soon as it is solved, so only two states are alive at
+    a time. *progress*, if given, is called as ``progress(i, total, text)`` after each load;
+    the same line goes to this module's logger. *units*: ``(force scale, force unit,
+    stiffness scale, stiffness unit)`` to add the load and stiffness in physical units to the
+    progress lines (e.g. N and N/m).
+
+    Raises :class:`~roughcontact.errors.IndentError` (naming the run, the load and what to
+    change) when a solve does not converge, a stiffness is not positive or the contact
+    reaches the edge of a free grid.
+    """
+    L, E = p.length, p.e_star
     total = len(forces)
-    z = make_surface(s)
-    cell = (L / s.n) ** 2
+    cell = L**2 / z.size
     out = {name: np.zeros(total, dtype=runfile.VARIABLES[name].dtype)
-           for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if s.value("hardness") is not None else ())}
-    out["force"] = forces
-    logger.info("indent %s: %d loads F/(E*L^2) = %g ... %g, tol = %g, stiffness = %s", s.describe(), total,
-                s.force_from, s.force_to, s.tol, s.stiffness_method)
-    path = bem.iter_load_path(z, forces, length=L, e_star=E, periodic=s.periodic, tol=s.tol, maxiter=s.maxiter,
-                              **s.arguments("solver"))
+           for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if p.hardness is not None else ())}
+    out["force"] = np.asarray(forces, dtype=float)
+    path = bem.iter_load_path(z, forces, length=L, e_star=E, periodic=p.periodic, tol=p.tol, maxiter=p.maxiter,
+                              hardness=p.hardness, edge_contact=p.edge_contact)
     i = 0  # the load being solved: the generator raises while solving load i
     clock = time.perf_counter()
     try:
         for i, state in enumerate(path):
-            _record(s, out, i, state, cell)
+            _record(p, out, i, state, cell)
             now = time.perf_counter()
             text = (f"load step {i + 1}/{total}: F/(E*L^2) = {forces[i] / (E * L**2):.3e}, "
                     f"iterations = {state.iterations}, contact cells = {out['contact_cells'][i]}, "
-                    f"k/(E*L) = {out['stiffness'][i] / (E * L):.4e}, {now - clock:.2f} s")
+                    f"k/(E*L) = {out['stiffness'][i] / (E * L):.4e}")
+            if units is not None:
+                f_scale, f_unit, k_scale, k_unit = units
+                text += f", F = {forces[i] * f_scale:.4g} {f_unit}, k = {out['stiffness'][i] * k_scale:.4g} {k_unit}"
+            text += f", {now - clock:.2f} s"
             clock = now
-            logger.info(text)
+            logger.info("%s: %s", p.name, text)
             if progress is not None:
                 progress(i + 1, total, text)
             i += 1  # the next load (enumerate sets it again when its state is solved)
@@ -72,36 +120,51 @@ def compute_run(s: JobSettings, progress=None) -> dict:
         fnorm = forces[i] / (E * L**2)
         last = f"{forces[i - 1] / (E * L**2):.3g}" if i else "the first load"
         raise IndentError(
-            f"indent {s.describe()}: the contact reached the edge of the free-space grid at load step "
-            f"{i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}); lower forces.sphere.to to {last} or below "
-            f"or use more cells (grid.n) on a larger grid.length"
+            f"indent {p.name}: the contact reached the edge of the free-space grid at load step "
+            f"{i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}); lower {p.force_key} to {last} or below "
+            f"or {p.edge_hint}"
         ) from exc
     return out
 
 
-def _record(s: JobSettings, out: dict, i: int, state, cell: float) -> None:
+def compute_run(s: JobSettings, progress=None) -> dict:
+    """Solve the load path of one generated run (:func:`make_surface`, :func:`solve_load_path`)."""
+    logger.info("indent %s: %d loads F/(E*L^2) = %g ... %g, tol = %g, stiffness = %s", s.describe(), s.force_count,
+                s.force_from, s.force_to, s.tol, s.stiffness_method)
+    return solve_load_path(make_surface(s), s.forces(), path_settings(s), progress)
+
+
+def path_settings(s: JobSettings) -> PathSettings:
+    """The :class:`PathSettings` of a generated run (the solver axes through their role)."""
+    return PathSettings(length=s.length, e_star=s.e_star, periodic=s.periodic, tol=s.tol, maxiter=s.maxiter,
+                        stiffness_method=s.stiffness_method, rel_step=s.rel_step, name=s.describe(),
+                        force_key=f"forces.{s.kind}.to", **s.arguments("solver"))
+
+
+def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
     """Check one solved state and store its numbers at load *i* of *out*."""
     total = len(out["force"])
-    fnorm = state.force / (s.e_star * s.length**2)
+    fnorm = state.force / (p.e_star * p.length**2)
+    where = f"load step {i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}"
     if not state.converged:
         raise IndentError(
-            f"indent {s.describe()}: the contact solver did not converge at load step {i + 1}/{total} "
-            f"(F/(E*L^2) = {fnorm:.3g}, {state.iterations} iterations, tol = {s.tol:g}); raise solver.maxiter, "
-            f"loosen solver.tol, use more cells (grid.n) or a smaller load (forces.{s.kind}.to)"
+            f"indent {p.name}: the contact solver did not converge at {where}, {state.iterations} iterations, "
+            f"tol = {p.tol:g}); raise solver.maxiter, loosen solver.tol, use more cells (grid.n) or a smaller "
+            f"load ({p.force_key})"
         )
     try:
-        k = bem.stiffness(state, method=s.stiffness_method, rel_step=s.rel_step)
+        k = bem.stiffness(state, method=p.stiffness_method, rel_step=p.rel_step)
     except (ConvergenceError, ValueError) as exc:
-        other = "punch" if s.stiffness_method == "difference" else "difference"
+        other = "punch" if p.stiffness_method == "difference" else "difference"
         raise IndentError(
-            f"indent {s.describe()}: the stiffness ({s.stiffness_method}) failed at load step {i + 1}/{total} "
-            f"(F/(E*L^2) = {fnorm:.3g}): {exc}; try solver.stiffness = {other} or more cells (grid.n)"
+            f"indent {p.name}: the stiffness ({p.stiffness_method}) failed at {where}): {exc}; try "
+            f"solver.stiffness = {other} or more cells (grid.n)"
         ) from exc
     cells = int(np.count_nonzero(state.contact))
-    if not (np.isfinite(k) and k > 0):
+    if not (np.isfinite(k) and k > 0):   # e.g. a periodic surface pressed into full contact
         raise IndentError(
-            f"indent {s.describe()}: non-positive stiffness k = {k!r} at load step {i + 1}/{total} "
-            f"(F/(E*L^2) = {fnorm:.3g}, {cells} contact cells); raise forces.{s.kind}.from or grid.n"
+            f"indent {p.name}: non-positive stiffness k = {k!r} at {where}, {cells} of {state.contact.size} cells "
+            f"in contact); lower {p.force_key} or raise the smallest force or grid.n"
         )
     out["depth"][i] = state.depth
     out["stiffness"][i] = k
@@ -111,59 +174,30 @@ def _record(s: JobSettings, out: dict, i: int, state, cell: float) -> None:
     out["converged"][i] = int(bool(state.converged))
     if "loading_stiffness" in out:  # with a hardness: the loading tangent along the plastic path too
         try:
-            loading = bem.stiffness(state, method="loading", rel_step=s.rel_step)
+            loading = bem.stiffness(state, method="loading", rel_step=p.rel_step)
         except (ConvergenceError, ValueError) as exc:
             raise IndentError(
-                f"indent {s.describe()}: the loading stiffness failed at load step {i + 1}/{total} "
-                f"(F/(E*L^2) = {fnorm:.3g}): {exc}; use more cells (grid.n) or a smaller load (forces.{s.kind}.to)"
+                f"indent {p.name}: the loading stiffness failed at {where}): {exc}; use more cells (grid.n) "
+                f"or a smaller load ({p.force_key})"
             ) from exc
         if not (np.isfinite(loading) and loading > 0):
             raise IndentError(
-                f"indent {s.describe()}: non-positive loading stiffness {loading!r} at load step {i + 1}/{total} "
-                f"(F/(E*L^2) = {fnorm:.3g}); raise forces.{s.kind}.from or grid.n"
+                f"indent {p.name}: non-positive loading stiffness {loading!r} at {where}); raise the smallest "
+                "force or grid.n"
             )
         out["loading_stiffness"][i] = loading
         out["plastic_cells"][i] = int(np.count_nonzero(state.plastic))
 
 
 def write_run(path, s: JobSettings, out: dict) -> None:
-    """Write one run atomically (temp file, then rename) with provenance."""
-    import netCDF4
-
-    with provenance.atomic_path(path) as tmp:
-        with netCDF4.Dataset(tmp, "w", format="NETCDF4") as nc:
-            nc.setncatts(provenance.provenance_attrs(
-                config=s.record(),
-                title=runfile.TITLE,
-                kind=s.kind,
-                seed=s.seed,
-                grid_n=s.n,
-                grid_length=s.length,
-                e_star=s.e_star,
-                periodic=s.periodic,
-                solver_tol=s.tol,
-                solver_maxiter=s.maxiter,
-                stiffness_method=s.stiffness_method,
-                stiffness_rel_step=s.rel_step,
-                force_normalized_from=s.force_from,
-                force_normalized_to=s.force_to,
-                force_count=s.force_count,
-                **s.axes(),
-            ))
-            nc.createDimension("force", len(out["force"]))
-            var = nc.createVariable("force", "f8", ("force",))
-            var[:] = out["force"]
-            var.setncatts(runfile.FORCE_ATTRS)
-            for name, (dtype, long, units) in runfile.SCALARS.items():
-                v = nc.createVariable(name, dtype, ())
-                v.assignValue(getattr(s, name))
-                v.setncatts({"long_name": long, "units": units})
-            for name in (*runfile.RUN_VARIABLES, *(v for v in runfile.PLASTIC_VARIABLES if v in out)):
-                meta = runfile.VARIABLES[name]
-                long = f"{meta.long_name} ({s.stiffness_method})" if name == "stiffness" else meta.long_name
-                v = nc.createVariable(name, meta.dtype, ("force",))
-                v[:] = out[name]
-                v.setncatts({"long_name": long, "units": meta.units, "coordinates": "hurst radius h_rms seed"})
+    """Write one generated run (:func:`roughcontact.study.runfile.write_run`) with provenance."""
+    runfile.write_run(path, out, stiffness_method=s.stiffness_method, scalars={name: getattr(s, name) for name in runfile.SCALARS},
+                      attrs=provenance.provenance_attrs(
+                          config=s.record(), kind=s.kind, seed=s.seed, grid_n=s.n, grid_length=s.length,
+                          e_star=s.e_star, periodic=s.periodic, solver_tol=s.tol, solver_maxiter=s.maxiter,
+                          stiffness_method=s.stiffness_method, stiffness_rel_step=s.rel_step,
+                          force_normalized_from=s.force_from, force_normalized_to=s.force_to,
+                          force_count=s.force_count, **s.axes()))
 
 
 def run_indent(settings: JobSettings, output, log=None, progress: bool = False) -> dict:

@@ -37,9 +37,9 @@ import os
 import numpy as np
 
 from .. import bem, surfaces
-from ..errors import DomainTooSmallError, IndentError, InputFileError
+from ..errors import IndentError, InputFileError
 from ..surfaces.bodies import paraboloid
-from . import provenance, statistics
+from . import provenance, runfile, statistics
 from .measured_config import LENGTH_UNITS, plain_unit, to_metres, to_pascals
 from .runs import force_grid, kind_of
 
@@ -229,72 +229,57 @@ def job_heights(job: MeasuredJob, source_file) -> tuple[np.ndarray, float, bool]
 
 
 def run_job(job: MeasuredJob, source_file, output) -> dict:
-    """Solve one load path and write it to *output* (NetCDF, atomic); nothing is written on error.
+    """Solve one load path (:func:`roughcontact.study.indent.solve_load_path`, the indent core)
+    and write it to *output* (NetCDF, atomic); nothing is written on error.
 
     ``source_file``: the file of :func:`prepare_surface` (topography) or the spectrum table.
     Raises :class:`~roughcontact.errors.IndentError` when a body's contact reaches the outer
     ring of cells, or a solve does not converge.
     """
+    from .indent import PathSettings, solve_load_path
+
     z, length, periodic = job_heights(job, source_file)
     e = job.e_star
     normalized = force_grid(job.force_from, job.force_to, job.force_count)
     forces = normalized * e * length**2
-    edge = job.kind == "flat" and not periodic   # a flat free tile is a rough punch of side L
-    out = {name: np.zeros(len(forces)) for name in ("depth", "stiffness", "contact_area")}
-    out.update(contact_cells=np.zeros(len(forces), dtype=np.int64), iterations=np.zeros(len(forces), dtype=np.int64))
-    i = 0
-    try:
-        for i, state in enumerate(bem.iter_load_path(z, forces, length=length, e_star=e, periodic=periodic,
-                                                     tol=job.tol, maxiter=job.maxiter, edge_contact=edge)):
-            if not state.converged:
-                raise IndentError(f"{job.describe()}: the contact solver did not converge at F/(E* L^2) = "
-                                  f"{normalized[i]:.3g}; raise solver.maxiter or loosen solver.tol")
-            k = bem.stiffness(state, method=job.stiffness_method, rel_step=job.rel_step)
-            if not (np.isfinite(k) and k > 0):   # a periodic surface pressed into full contact
-                raise IndentError(f"{job.describe()}: stiffness k = {k!r} at F/(E* L^2) = {normalized[i]:.3g} "
-                                  f"({int(np.count_nonzero(state.contact))} of {z.size} cells in contact); "
-                                  f"lower forces.{job.kind}.to")
-            out["depth"][i] = state.depth
-            out["stiffness"][i] = k
-            out["contact_cells"][i] = int(np.count_nonzero(state.contact))
-            out["contact_area"][i] = state.contact_area
-            out["iterations"][i] = state.iterations
-            logger.info("%s: F/(E* L^2) = %.3e, %d contact cells, k/(E* L) = %.4e", job.describe(),
-                        normalized[i], out["contact_cells"][i], out["stiffness"][i] / (e * length))
-    except DomainTooSmallError:
-        where = "the scan's edge" if job.source == "topography" else "the grid's edge"
-        raise IndentError(f"{job.describe()}: loads whose contact would reach {where}: at F/(E* L^2) = "
-                          f"{normalized[i]:.3g} the contact touches the outer ring of cells; lower "
-                          f"forces.sphere.to below {normalized[i]:.3g}, use a smaller radius or larger tiles") from None
+    where = "the scan's edge" if job.source == "topography" else "the grid's edge"
+    settings = PathSettings(
+        length=length, e_star=e, periodic=periodic, tol=job.tol, maxiter=job.maxiter,
+        stiffness_method=job.stiffness_method, rel_step=job.rel_step, name=job.describe(),
+        force_key=f"forces.{job.kind}.to",
+        edge_hint=f"use a smaller radius or larger tiles (loads whose contact would reach {where})",
+        edge_contact=job.kind == "flat" and not periodic)   # a flat free tile is a rough punch of side L
+    scale_f, scale_k = _scales(job)
+    out = solve_load_path(z, forces, settings, units=(scale_f, "N", scale_k, "N/m"))
     _write_run(job, output, out, normalized, length)
     return out
 
 
-def _write_run(job: MeasuredJob, output, out: dict, normalized, length: float) -> None:
-    import xarray as xr
+def _scales(job: MeasuredJob) -> tuple[float, float]:
+    """N per (pressure unit * length unit²) and N/m per (pressure unit * length unit)."""
+    return (to_pascals(job.pressure_unit) * to_metres(job.length_unit) ** 2,
+            to_pascals(job.pressure_unit) * to_metres(job.length_unit))
 
-    scale_f = to_pascals(job.pressure_unit) * to_metres(job.length_unit) ** 2   # N per (pressure unit * L^2)
-    scale_k = to_pascals(job.pressure_unit) * to_metres(job.length_unit)        # N/m per (pressure unit * L)
+
+def _write_run(job: MeasuredJob, output, out: dict, normalized, length: float) -> None:
+    """The run file (:func:`roughcontact.study.runfile.write_run`) in physical units: force in N,
+    stiffness in N/m, lengths in ``units.length``, with ``force_normalized``,
+    ``stiffness_normalized`` and ``contact_area_fraction`` beside them."""
+    scale_f, scale_k = _scales(job)
     unit = job.length_unit
-    data = {
-        "stiffness": (out["stiffness"] * scale_k, {"long_name": "normal contact stiffness dF/dd", "units": "N m-1"}),
-        "stiffness_normalized": (out["stiffness"] / (job.e_star * length), {"long_name": "k/(E* L)", "units": "1"}),
-        "depth": (out["depth"], {"long_name": "indentation depth from first touch", "units": unit}),
-        "contact_area": (out["contact_area"], {"long_name": "contact area", "units": f"{unit}2"}),
-        "contact_area_fraction": (out["contact_area"] / length**2, {"long_name": "A/L^2", "units": "1"}),
-        "contact_cells": (out["contact_cells"], {"long_name": "grid cells in contact", "units": "1"}),
-        "iterations": (out["iterations"], {"long_name": "solver iterations", "units": "1"}),
-    }
-    coords = {"force": ("force", normalized * job.e_star * length**2 * scale_f,
-                        {"long_name": "normal force F", "units": "N"}),
-              "force_normalized": ("force", normalized, {"long_name": "F/(E* L^2)", "units": "1"})}
-    ds = xr.Dataset({k: ("force", v, a) for k, (v, a) in data.items()}, coords=coords,
-                    attrs=provenance.provenance_attrs(config=dataclasses.asdict(job),
-                                                      title="roughcontact measured run", length=length,
-                                                      e_star=job.e_star, e_star_units=job.pressure_unit,
-                                                      units_length=unit, half_space=_half_space(job)))
-    with provenance.atomic_path(output) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
+    runfile.write_run(
+        output, out, stiffness_method=job.stiffness_method,
+        units={"force": (scale_f, "N"), "stiffness": (scale_k, "N m-1"), "depth": (1.0, unit),
+               "contact_area": (1.0, f"{unit}2")},
+        extra={"force_normalized": (normalized, {"long_name": "F/(E* L^2)", "units": "1"}),
+               "stiffness_normalized": (out["stiffness"] / (job.e_star * length),
+                                        {"long_name": "k/(E* L)", "units": "1", "coordinates": "force_normalized"}),
+               "contact_area_fraction": (out["contact_area"] / length**2,
+                                         {"long_name": "A/L^2", "units": "1", "coordinates": "force_normalized"})},
+        coordinates=("force_normalized",),
+        attrs=provenance.provenance_attrs(config=dataclasses.asdict(job), kind="measured " + job.kind,
+                                          length=length, e_star=job.e_star, e_star_units=job.pressure_unit,
+                                          units_length=unit, half_space=_half_space(job)))
 
 
 def _half_space(job: MeasuredJob) -> str:

@@ -12,9 +12,10 @@ import dataclasses
 from .axes import AXES
 
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "SCALARS", "AXIS_ATTRS",
-           "FORCE_ATTRS", "TITLE"]
+           "FORCE_ATTRS", "TITLE",
+           "write_run"]
 
-#: the ``title`` attribute that marks a run file
+#: the ``title`` attribute that marks a run file (generated or measured)
 TITLE = "roughcontact indentation run"
 
 
@@ -59,3 +60,61 @@ SCALARS = {
 #: coordinates of the merged files
 AXIS_ATTRS = {**{a.name: {"long_name": a.long_name, "units": a.unit} for a in AXES.values()},
               "seed": {"long_name": "random seed of the surface", "units": "1"}}
+
+
+def write_run(path, out: dict, *, attrs: dict, stiffness_method: str, units: dict | None = None,
+              scalars: dict | None = None, extra: dict | None = None, coordinates: tuple = ()) -> None:
+    """Write one run file (NetCDF4, atomic: temp file, then rename): the one run-file format of
+    generated and measured runs.
+
+    Parameters
+    ----------
+    out : dict
+        ``force`` and the per-load arrays of :data:`VARIABLES` (``force`` in force units).
+    attrs : dict
+        Global attributes (provenance, settings); ``title`` is set to :data:`TITLE`.
+    stiffness_method : str
+        How the stiffness was computed (named in its ``long_name``).
+    units : dict, optional
+        ``{name: (scale, units)}``: write ``out[name] * scale`` with these CF units instead of the
+        study's normalised units (a measured run: ``force`` in N, ``stiffness`` in N/m, lengths
+        in the scan's unit).
+    scalars : dict, optional
+        ``{name: value}`` of :data:`SCALARS` (a generated run's H, R, h_rms and seed).
+    extra : dict, optional
+        ``{name: (values, attrs)}`` further per-load variables (e.g. ``stiffness_normalized``).
+    coordinates : tuple of str
+        Names of *extra* per-load variables that are coordinates of the others (``force_normalized``).
+    """
+    import netCDF4
+
+    from . import provenance
+
+    units = units or {}
+    scalars = scalars or {}
+    extra = extra or {}
+    labels = " ".join((*scalars, *coordinates))
+    with provenance.atomic_path(path) as tmp:
+        with netCDF4.Dataset(tmp, "w", format="NETCDF4") as nc:
+            nc.setncatts({**attrs, "title": TITLE})
+            nc.createDimension("force", len(out["force"]))
+            scale, unit = units.get("force", (1.0, FORCE_ATTRS["units"]))
+            var = nc.createVariable("force", "f8", ("force",))
+            var[:] = out["force"] * scale
+            var.setncatts({**FORCE_ATTRS, "units": unit})
+            for name, value in scalars.items():
+                dtype, long, unit = SCALARS[name]
+                v = nc.createVariable(name, dtype, ())
+                v.assignValue(value)
+                v.setncatts({"long_name": long, "units": unit})
+            for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES if v in out)):
+                meta = VARIABLES[name]
+                scale, unit = units.get(name, (1.0, meta.units))
+                long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
+                v = nc.createVariable(name, meta.dtype, ("force",))
+                v[:] = out[name] * scale if scale != 1.0 else out[name]
+                v.setncatts({"long_name": long, "units": unit, **({"coordinates": labels} if labels else {})})
+            for name, (values, var_attrs) in extra.items():
+                v = nc.createVariable(name, "f8", ("force",))
+                v[:] = values
+                v.setncatts(var_attrs)
