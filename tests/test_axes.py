@@ -17,7 +17,7 @@ import yaml
 from roughcontact import errors
 from roughcontact.study import claims
 from roughcontact.study import config
-from roughcontact.study import merge
+from roughcontact.study import io as study_io
 from roughcontact.study import runs
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -53,7 +53,7 @@ def test_run_names_tag_only_the_axes_off_the_paper_setting(run):
 
 def test_merged_dimensions_and_plastic_variables(run):
     work, cfg = run
-    ds = merge.read_groups(work / "results/stiffness.nc")["sphere"]
+    ds = study_io.read_groups(work / "results/stiffness.nc")["sphere"]
     assert ds["stiffness"].dims == (*runs.AXES["sphere"], "seed", "force"), ds["stiffness"].dims
     assert ds["exponent"].values.tolist() == [2.0, 4.0], ds["exponent"].values
     assert ds["cutoff"].values.tolist() == [0.0, 0.05], "cutoff null is the coordinate 0"

@@ -7,7 +7,7 @@ import xarray as xr
 
 from roughcontact.models import superposition
 from roughcontact.study import calibration
-from roughcontact.study.merge import write_groups
+from roughcontact.study.io import write_groups
 
 FORCES = np.logspace(-6, -2, 13)
 HURST = [0.5, 0.8]

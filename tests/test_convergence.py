@@ -4,7 +4,7 @@ import pytest
 import xarray as xr
 
 from roughcontact.study import convergence
-from roughcontact.study.merge import write_groups
+from roughcontact.study.io import write_groups
 
 FORCES = np.array([1e-6, 1e-5, 1e-4])
 

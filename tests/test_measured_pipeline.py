@@ -24,7 +24,7 @@ ST = pytest.importorskip("SurfaceTopography")
 from roughcontact import bem, surfaces
 from roughcontact.errors import ConfigError, IndentError, InputFileError
 from roughcontact.study import config, measured
-from roughcontact.study.merge import read_groups
+from roughcontact.study.io import read_groups
 
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = Path(os.environ.get("ROUGHCONTACT_TOPOGRAPHIES", ROOT.parent / "shared" / "topographies"))

@@ -22,7 +22,7 @@ from roughcontact import errors
 from roughcontact.models import paper
 from roughcontact.study import config
 from roughcontact.study import indent
-from roughcontact.study import merge
+from roughcontact.study import io as study_io
 from roughcontact.study import runfile
 from roughcontact.study import runs, scorecard
 from roughcontact.study import settings
@@ -51,7 +51,7 @@ def run(tmp_path_factory):
 def test_merged_file_has_a_group_per_kind_without_padding(run):
     """stiffness.nc: one group per surface kind with its own force grid: nothing NaN, counts integers."""
     work, cfg = run
-    groups = merge.read_groups(work / "results/stiffness.nc")
+    groups = study_io.read_groups(work / "results/stiffness.nc")
     assert sorted(groups) == ["flat", "sphere"], sorted(groups)
     for kind, ds in groups.items():
         assert tuple(ds["stiffness"].dims) == (*runs.AXES[kind], "seed", "force"), ds["stiffness"].dims
@@ -81,7 +81,7 @@ def test_merged_file_provenance(run):
 
 def test_stiffness_positive_and_increasing(run):
     work, _ = run
-    for kind, ds in merge.read_groups(work / "results/stiffness.nc").items():
+    for kind, ds in study_io.read_groups(work / "results/stiffness.nc").items():
         k = ds["stiffness"].transpose(..., "force").values.reshape(-1, ds.sizes["force"])
         assert (k > 0).all(), kind
         # k = dF/dd grows with the contact set; equal when the set did not change
@@ -95,7 +95,7 @@ def test_hertz_limit_at_the_largest_load(run):
     Hertz contact (radius 0.155 L = 10 cells) to a few per cent, and the seeds
     scatter by a few per cent: 15 % bounds all three."""
     work, cfg = run
-    ens = merge.read_groups(work / "results/ensemble.nc")["sphere"]
+    ens = study_io.read_groups(work / "results/ensemble.nc")["sphere"]
     for radius in ens["radius"].values:
         sub = ens.sel(radius=radius).isel(force=-1)
         k_hertz = paper.hertz_stiffness(float(sub["force"]), radius=radius, e_star=cfg["e_star"])
@@ -105,7 +105,7 @@ def test_hertz_limit_at_the_largest_load(run):
 
 def test_ensemble_and_tables(run):
     work, cfg = run
-    ens = merge.read_groups(work / "results/ensemble.nc")
+    ens = study_io.read_groups(work / "results/ensemble.nc")
     for kind, ds in ens.items():
         for name in ("k_mean", "k_std", "k_sem", "contact_cells_mean"):
             assert name in ds, f"{kind}/{name}"
@@ -252,14 +252,14 @@ def test_merge_names_a_truncated_or_foreign_file(run, tmp_path):
     bad = tmp_path / "truncated.nc"
     bad.write_bytes(good.read_bytes()[:300])
     with pytest.raises(errors.MergeError, match="truncated.nc"):
-        merge.read_run(bad, expected)
+        study_io.read_run(bad, expected)
     foreign = tmp_path / "foreign.nc"
     xr.Dataset({"x": ("a", [1.0, 2.0])}).to_netcdf(foreign, engine="netcdf4")
     with pytest.raises(errors.MergeError, match="foreign.nc.*foreign"):
-        merge.read_run(foreign, expected)
+        study_io.read_run(foreign, expected)
     other = dataclasses.replace(expected, tol=1e-6)
     with pytest.raises(errors.MergeError, match="other settings"):
-        merge.read_run(good, other)
+        study_io.read_run(good, other)
 
 
 def test_failed_job_names_parameters_and_leaves_no_file(tmp_path):

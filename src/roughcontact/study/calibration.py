@@ -30,7 +30,8 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..models import superposition
-from .merge import read_groups
+from .ensemble import resolved
+from .io import read_groups
 from .zeta import paper_setting
 
 __all__ = ["Calibration", "ensemble_points", "calibrate", "main"]
@@ -59,7 +60,7 @@ def ensemble_points(study) -> list[dict]:
             for h_rms in ds["h_rms"].values:
                 sub = ds.sel(hurst=hurst, radius=radius, h_rms=h_rms).transpose("seed", "force")
                 k = sub["stiffness"].values
-                use = sub["contact_cells"].values.mean(0) >= cfg["fit"]["zeta"]["min_cells"]
+                use = resolved(sub["contact_cells"].values.mean(0), cfg["fit"]["zeta"]["min_cells"])
                 mean = k.mean(0)
                 error = k.std(0, ddof=1) / math.sqrt(k.shape[0]) / mean
                 out.append({"study": Path(study).name, "hurst": float(hurst), "radius": float(radius),

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .merge import read_groups
+from .io import read_groups
 from .statistics import BOOTSTRAP_SEED, interval
 
 __all__ = ["summary", "stiffness_ratios", "against_eq16"]

@@ -18,6 +18,7 @@ import logging
 import numpy as np
 
 from .plotting import pyplot, save_png
+from .ensemble import resolved
 from .statistics import bootstrap_indices, interval
 
 __all__ = ["local_exponents", "exponent_table", "curves", "run_exponents"]
@@ -49,14 +50,14 @@ def local_exponents(force, stiffness, contact_cells, *, window: int, min_cells: 
         ``(exponent, low, high)`` per load; NaN where the window is not resolved.
     """
     half = window // 2
-    resolved = contact_cells.mean(0) >= min_cells
+    use = resolved(contact_cells.mean(0), min_cells)
     log_f = np.log(force)
     log_k = np.log(stiffness.mean(0))
     log_boot = np.log(stiffness[indices].mean(1))                       # (resamples, loads)
     out = np.full((3, force.size), np.nan)
     for i in range(half, force.size - half):
         span = slice(i - half, i + half + 1)
-        if not resolved[span].all():
+        if not use[span].all():
             continue
         x = log_f[span] - log_f[span].mean()
         out[0, i] = float(((log_k[span] - log_k[span].mean()) * x).sum() / (x @ x))
@@ -95,7 +96,7 @@ def exponent_table(groups: dict, cfg: dict):
 
 def run_exponents(cfg, stiffness_nc, out_csv, out_png):
     """``exponents`` rule: stiffness.nc -> exponents.csv (local exponents with intervals) and a figure."""
-    from .merge import read_groups, write_csv
+    from .io import read_groups, write_csv
 
     table = exponent_table(read_groups(stiffness_nc), cfg)
     write_csv(table, out_csv)

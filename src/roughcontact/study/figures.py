@@ -14,6 +14,7 @@ import math
 from .. import surfaces
 from ..models import paper
 from . import runs
+from .ensemble import resolved
 
 log = logging.getLogger(__name__)
 
@@ -135,7 +136,7 @@ def fig3(plt, inputs: Inputs, key):
     F = sub["force"].values / (E * L**2)
     k = sub["k_mean"].values / (E * L)
     err = np.nan_to_num(sub["k_sem"].values / (E * L))
-    res = sub["contact_cells_mean"].values >= cfg["fit"]["zeta"]["min_cells"]
+    res = resolved(sub["contact_cells_mean"].values, cfg["fit"]["zeta"]["min_cells"])
     zf = inputs.zeta_used(hurst)
     fig, ax = plt.subplots(figsize=(6, 4.6))
     ax.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
@@ -242,7 +243,7 @@ def collapse(plt, inputs: Inputs, _key):
         ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
         ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
         sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
-        ok = sub["contact_cells_mean"].values >= cfg["fit"]["zeta"]["min_cells"]
+        ok = resolved(sub["contact_cells_mean"].values, cfg["fit"]["zeta"]["min_cells"])
         ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{j}", alpha=0.7)
     ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
            title="all sphere runs (ensemble means, >= min_cells) over eq. 16")
@@ -261,7 +262,7 @@ def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs):
 
     import pandas as pd
 
-    from .merge import read_groups
+    from .io import read_groups
     from .plotting import pyplot, save_png
 
     plt = pyplot()

@@ -299,7 +299,7 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
     """
     import xarray as xr
 
-    from .merge import write_groups
+    from .io import write_groups
 
     runs = [xr.load_dataset(p, engine="netcdf4") for p in run_files]
     order = run_order(cfg, source, name, len(runs) // max(1, len(cfg["radius"])))

@@ -45,7 +45,7 @@ def draw_heights(ax, surface_file, name: str):
 
 def draw_spectrum(ax, spectrum_file, unit: str):
     """The radially averaged spectrum, the fit's bins and the fitted power law over its band."""
-    from .merge import read_groups
+    from .io import read_groups
 
     ds = read_groups(spectrum_file)["spectrum"]
     a = ds.attrs
@@ -64,7 +64,7 @@ def draw_spectrum(ax, spectrum_file, unit: str):
 def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
     """k(F) (N, N/m) of every radius: the mean over the tiles, its band, Hertz for spheres, and
     the models' predictions of *spectrum_file* (if given)."""
-    from .merge import read_groups
+    from .io import read_groups
 
     groups = read_groups(merged_file)
     models = read_groups(spectrum_file) if spectrum_file is not None else {}

@@ -1,80 +1,26 @@
-"""Merge the run files of a study and their ensemble statistics over seeds.
+"""Merge the run files of a study into one file per study, and their ensemble statistics.
 
 Imports xarray and pandas (the ``pipeline`` extra); ``import roughcontact``
-does not import this module.
+does not import this module. Reading and writing files is :mod:`roughcontact.study.io`.
 
 All forces in the tables are normalised, F/(E* L²); stiffnesses k/(E* L).
 """
 from __future__ import annotations
 
 import logging
-import math
-import os
 
 import numpy as np
 
 from ..errors import MergeError
 from . import provenance, runfile, runs
-from .settings import JobSettings, job_settings
+from .ensemble import ensemble
+from .io import read_groups, read_run, write_csv, write_groups, write_netcdf  # noqa: F401  (until every caller imports io)
+from .settings import job_settings
 
-__all__ = ["read_run", "merge_runs", "ensemble", "write_groups", "read_groups", "write_netcdf", "write_csv",
-           "run_merge"]
+__all__ = ["merge_runs", "run_merge"]
 
 
 log = logging.getLogger(__name__)
-
-
-# --------------------------------------------------------------------------
-# I/O
-# --------------------------------------------------------------------------
-def write_netcdf(ds, path) -> None:
-    """Atomic NetCDF4 write (temp file, then rename)."""
-    with provenance.atomic_path(path) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
-
-
-def write_csv(df, path) -> None:
-    with provenance.atomic_path(path) as tmp:
-        df.to_csv(tmp, index=False)  # shortest round-trip repr: values read back are the values written
-
-
-def read_run(path, expected: JobSettings | None = None):
-    """Open one run file, check it and return it loaded in memory.
-
-    Raises :class:`~roughcontact.errors.MergeError` naming *path* for a truncated, foreign or
-    stale file.  *expected* (the job settings of the current config) enables the stale check.
-    """
-    import xarray as xr
-
-    path = str(path)
-    hint = f"delete {path} and rerun snakemake to recompute it"
-    if not os.path.exists(path):
-        raise MergeError(f"{path}: run file is missing; rerun snakemake to compute it")
-    try:
-        with xr.open_dataset(path, engine="netcdf4") as ds:
-            ds = ds.load()
-    except Exception as exc:
-        raise MergeError(f"{path}: not a readable NetCDF file ({type(exc).__name__}: {exc}); "
-                         f"it may be truncated; {hint}") from exc
-    missing = [v for v in (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS) if v not in ds.variables]
-    if missing or ds.attrs.get("title") != runfile.TITLE:
-        what = f"lacks {', '.join(missing)}" if missing else "is not a roughcontact indentation run"
-        raise MergeError(f"{path}: foreign NetCDF file ({what}); {hint}")
-    if list(ds.dims) != ["force"]:
-        raise MergeError(f"{path}: foreign NetCDF file (dimensions {dict(ds.sizes)}, expected only 'force'); {hint}")
-    if expected is not None:
-        for key in runfile.SCALARS:
-            got, want = float(ds[key]), float(getattr(expected, key))
-            if not (got == want):
-                raise MergeError(f"{path}: holds {key} = {got:g}, expected {want:g} from its name; {hint}")
-        want = provenance.config_hash(expected.record())
-        if ds.attrs.get("config_hash") != want:
-            raise MergeError(f"{path}: was computed with other settings (config_hash {ds.attrs.get('config_hash')} "
-                             f"!= {want} of the current config); {hint} or run snakemake with --rerun-triggers params")
-        forces = expected.forces()
-        if ds.sizes["force"] != len(forces) or not np.allclose(ds["force"].values, forces, rtol=1e-12, atol=0):
-            raise MergeError(f"{path}: its force grid differs from the current config; {hint}")
-    return ds
 
 
 # --------------------------------------------------------------------------
@@ -140,49 +86,6 @@ def merge_runs(cfg: dict, paths) -> dict:
         )
         groups[kind] = ds
     return groups
-
-
-def ensemble(ds):
-    """Mean, standard deviation and standard error of k over seeds (and means
-    of depth, contact area and contact cells) of one kind's Dataset."""
-    k = ds["stiffness"]
-    n_seeds = ds.sizes["seed"]
-    std = k.std("seed", ddof=1) if n_seeds > 1 else k.isel(seed=0) * np.nan
-    per_load = {
-        "k_mean": (k.mean("seed"), {"long_name": "ensemble mean stiffness", "units": "e_star * length"}),
-        "k_std": (std, {"long_name": "standard deviation of k over seeds (ddof=1)", "units": "e_star * length"}),
-        "k_sem": (std / math.sqrt(n_seeds), {"long_name": "standard error of the mean k", "units": "e_star * length"}),
-        "depth_mean": (ds["depth"].mean("seed"), {"long_name": "mean indentation depth", "units": "length"}),
-        "contact_area_mean": (ds["contact_area"].mean("seed"), {"long_name": "mean contact area", "units": "length**2"}),
-        "contact_cells_mean": (ds["contact_cells"].mean("seed"), {"long_name": "mean contact cells", "units": "1"}),
-    }
-    if "loading_stiffness" in ds:
-        per_load["loading_k_mean"] = (ds["loading_stiffness"].mean("seed"), {
-            "long_name": "ensemble mean loading tangent along the plastic path", "units": "e_star * length"})
-        per_load["plastic_cells_mean"] = (ds["plastic_cells"].mean("seed"), {"long_name": "mean plastic cells",
-                                                                                "units": "1"})
-    import xarray as xr
-
-    return xr.Dataset({name: value.assign_attrs(attrs) for name, (value, attrs) in per_load.items()},
-                      attrs={**ds.attrs, "n_seeds": n_seeds})
-
-
-def write_groups(path, groups: dict, attrs: dict) -> None:
-    """Write ``{kind: Dataset}`` as the groups of one NetCDF4 file (atomic);
-    *attrs* become the root group's attributes (provenance)."""
-    import xarray as xr
-
-    tree = xr.DataTree.from_dict({"/": xr.Dataset(attrs=attrs), **groups})
-    with provenance.atomic_path(path) as tmp:
-        tree.to_netcdf(tmp, engine="netcdf4")
-
-
-def read_groups(path) -> dict:
-    """``{kind: Dataset}`` of a file written by :func:`write_groups`, loaded in memory."""
-    import xarray as xr
-
-    with xr.open_datatree(path, engine="netcdf4") as tree:
-        return {name: node.to_dataset().load() for name, node in tree.children.items()}
 
 
 # --------------------------------------------------------------------------

@@ -347,7 +347,7 @@ def run_crossover(cfg, stiffness_nc, zeta_csv, out_csv, out_nc):
     import pandas as pd
 
     from . import provenance
-    from .merge import read_groups, write_csv, write_netcdf
+    from .io import read_groups, write_csv, write_netcdf
 
     table, reps = crossover_table(read_groups(stiffness_nc), pd.read_csv(zeta_csv), cfg)
     reps.attrs.update(provenance.provenance_attrs(config=cfg, title="roughcontact: crossover force replicates"))

@@ -12,7 +12,8 @@ import numpy as np
 
 from ..models import paper
 from . import provenance, runs
-from .merge import read_groups, write_csv, write_netcdf
+from .ensemble import resolved
+from .io import read_groups, write_csv, write_netcdf
 from .statistics import bootstrap_indices
 
 __all__ = ["paper_setting", "fit_zeta", "run_fit_zeta"]
@@ -67,7 +68,7 @@ def _zeta_points(groups, cfg, hurst):
                     sub = sub.sel(radius=radius)
                 F = sub["force"].values
                 k = sub["stiffness"].values
-                ok = sub["contact_cells"].values >= zc["min_cells"]
+                ok = resolved(sub["contact_cells"].values, zc["min_cells"])
                 if math.isfinite(radius):
                     m = float(sub["exponent"]) if "exponent" in sub.coords else 2.0
                     f_tr = paper.crossover_force(radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=paper.zeta_estimate(hurst), exponent=m)

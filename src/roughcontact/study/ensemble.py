@@ -1,0 +1,44 @@
+"""Ensemble statistics over seeds, and the rule that says which loads are resolved.
+
+Forces in the merged files are in force units (``force``) and normalised (``force_normalized``,
+F/(E* L²)); stiffnesses in ``e_star * length``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["ensemble", "resolved"]
+
+
+def resolved(contact_cells, min_cells: int):
+    """Whether each load is resolved: its (ensemble-mean) number of contact cells is at least
+    ``fit.zeta.min_cells`` (*min_cells*). The one rule every fit, verdict, figure and score
+    applies before trusting a load; *contact_cells* an array or DataArray of mean cells."""
+    return contact_cells >= min_cells
+
+
+def ensemble(ds):
+    """Mean, standard deviation and standard error of k over seeds (and means
+    of depth, contact area and contact cells) of one kind's Dataset."""
+    k = ds["stiffness"]
+    n_seeds = ds.sizes["seed"]
+    std = k.std("seed", ddof=1) if n_seeds > 1 else k.isel(seed=0) * np.nan
+    per_load = {
+        "k_mean": (k.mean("seed"), {"long_name": "ensemble mean stiffness", "units": "e_star * length"}),
+        "k_std": (std, {"long_name": "standard deviation of k over seeds (ddof=1)", "units": "e_star * length"}),
+        "k_sem": (std / math.sqrt(n_seeds), {"long_name": "standard error of the mean k", "units": "e_star * length"}),
+        "depth_mean": (ds["depth"].mean("seed"), {"long_name": "mean indentation depth", "units": "length"}),
+        "contact_area_mean": (ds["contact_area"].mean("seed"), {"long_name": "mean contact area", "units": "length**2"}),
+        "contact_cells_mean": (ds["contact_cells"].mean("seed"), {"long_name": "mean contact cells", "units": "1"}),
+    }
+    if "loading_stiffness" in ds:
+        per_load["loading_k_mean"] = (ds["loading_stiffness"].mean("seed"), {
+            "long_name": "ensemble mean loading tangent along the plastic path", "units": "e_star * length"})
+        per_load["plastic_cells_mean"] = (ds["plastic_cells"].mean("seed"), {"long_name": "mean plastic cells",
+                                                                                "units": "1"})
+    import xarray as xr
+
+    return xr.Dataset({name: value.assign_attrs(attrs) for name, (value, attrs) in per_load.items()},
+                      attrs={**ds.attrs, "n_seeds": n_seeds})
