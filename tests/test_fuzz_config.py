@@ -237,6 +237,7 @@ def outcome(cfg: dict) -> tuple[str, str | dict]:
     try:
         return "accepted", config.resolve_config(cfg)
     except errors.ConfigError as err:
+        assert err.key is not None and f"'{err.key}'" in str(err), f"ConfigError.key {err.key!r} not named: {err}"
         return "rejected", config.error_line(err)
 
 

@@ -26,26 +26,38 @@ from .study.settings import JobSettings, job_settings
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
 _DETRENDS = ("height", "slope", "curvature", "center", "none")
 
-# config keys as they appear in error messages -> the command-line flag
+#: config keys (:attr:`ConfigError.key`) -> the command-line flag of ``indent``, beside each
+#: sweep axis's own (``'hurst[0]'`` -> ``--hurst``: :func:`_indent_flags`)
 _FLAGS = {
-    **{f"'{a.name}[0]'": a.flag for a in AXES.values()}, "'seeds[0]'": "--seed",
-    "'grid.n'": "--n", "'grid.length'": "--length", "'e_star'": "--e-star", "'solver.tol'": "--tol",
-    "'solver.stiffness'": "--stiffness", "'solver.rel_step'": "--rel-step", "'solver.maxiter'": "--maxiter",
-    "'forces.sphere.from'": "--force-from", "'forces.flat.from'": "--force-from",
-    "'forces.sphere.to'": "--force-to", "'forces.flat.to'": "--force-to",
-    "'forces.sphere.count'": "--force-count", "'forces.flat.count'": "--force-count",
+    "seeds[0]": "--seed",
+    "grid.n": "--n", "grid.length": "--length", "e_star": "--e-star", "solver.tol": "--tol",
+    "solver.stiffness": "--stiffness", "solver.rel_step": "--rel-step", "solver.maxiter": "--maxiter",
+    "forces.sphere.from": "--force-from", "forces.flat.from": "--force-from",
+    "forces.sphere.to": "--force-to", "forces.flat.to": "--force-to",
+    "forces.sphere.count": "--force-count", "forces.flat.count": "--force-count",
 }
-#: number flags -> their config key; each must be finite (--radius may be inf: a flat surface)
+#: number flags -> their config key; each must be finite (--radius may be inf: a flat surface); and
+#: each sweep axis's flag -> its key (:func:`_number_flags`)
 _NUMBER_FLAGS = {
-    **{a.name: (a.name, 0) for a in AXES.values()}, "length": ("grid", "length"),
+    "length": ("grid", "length"),
     "e_star": ("e_star",), "force_from": ("forces", "{kind}", "from"), "force_to": ("forces", "{kind}", "to"),
     "tol": ("solver", "tol"), "rel_step": ("solver", "rel_step"),
 }
 #: config keys of ``roughcontact measured`` -> its flags (beside :data:`_FLAGS`)
 _MEASURED_FLAGS = {
-    "'units.length'": "--unit", "'units.e_star'": "--e-star-unit", "'tile'": "--tile", "'e_star'": "--e-star",
-    "'topography[0].file'": "SCAN", "'topography[0].size'": "--size", "'topography[0].detrend'": "--detrend",
+    "units.length": "--unit", "units.e_star": "--e-star-unit", "tile": "--tile", "e_star": "--e-star",
+    "topography[0].file": "SCAN", "topography[0].size": "--size", "topography[0].detrend": "--detrend",
 }
+
+
+def _indent_flags() -> dict:
+    """:data:`_FLAGS` and every sweep axis's key -> flag (the registry, read when called)."""
+    return {**{f"{a.name}[0]": a.flag for a in AXES.values()}, **_FLAGS}
+
+
+def _number_flags() -> dict:
+    """:data:`_NUMBER_FLAGS` and every sweep axis (the registry, read when called)."""
+    return {**{a.name: (a.name, 0) for a in AXES.values()}, **_NUMBER_FLAGS}
 #: the subcommands of :func:`build_parser`
 COMMANDS = ("indent", "measured", "check-config")
 
@@ -138,7 +150,7 @@ def _check_numbers(args) -> None:
     config (:func:`roughcontact.study.schema.finite_error`); raises ConfigError."""
     loaded = schema.load_schema(None)
     kind = runs.kind_of(args.radius)
-    for name, path in _NUMBER_FLAGS.items():
+    for name, path in _number_flags().items():
         value = getattr(args, name)
         if value is None:
             continue
@@ -152,7 +164,7 @@ def _mapping(value, path):
     """*value* if it is a mapping, else the ConfigError of --config's key *path*."""
     if not isinstance(value, dict):
         raise ConfigError(f"config key '{schema.key_text(path)}' = {schema.short_text(value)} is not allowed; "
-                                 "allowed: a mapping")
+                                 "allowed: a mapping", key=schema.key_text(path))
     return value
 
 
@@ -198,19 +210,20 @@ def measured_config_from_args(args) -> dict:
     unit = plain_unit(args.unit)
     if unit not in LENGTH_UNITS:
         raise ConfigError(f"config key 'units.length' = {args.unit!r} is not allowed; allowed: one of "
-                          f"{', '.join(LENGTH_UNITS)}")
+                          f"{', '.join(LENGTH_UNITS)}", key="units.length")
     if args.e_star_unit not in PRESSURE_UNITS:
         raise ConfigError(f"config key 'units.e_star' = {args.e_star_unit!r} is not allowed; allowed: one of "
-                          f"{', '.join(PRESSURE_UNITS)}")
+                          f"{', '.join(PRESSURE_UNITS)}", key="units.e_star")
     if args.detrend not in _DETRENDS:
         raise ConfigError(f"config key 'topography[0].detrend' = {args.detrend!r} is not allowed; allowed: one of "
-                          f"{', '.join(_DETRENDS)}")
+                          f"{', '.join(_DETRENDS)}", key="topography[0].detrend")
     if args.size is not None and not (math.isfinite(args.size) and args.size > 0):
         raise ConfigError(f"config key 'topography[0].size' = {args.size!r} is not allowed; allowed: a finite "
-                          "number > 0")
+                          "number > 0", key="topography[0].size")
     path = os.path.abspath(os.path.expanduser(args.scan))
     if not os.path.isfile(path):
-        raise ConfigError(f"config key 'topography[0].file' = {args.scan!r}: no such file ({path})")
+        raise ConfigError(f"config key 'topography[0].file' = {args.scan!r}: no such file ({path})",
+                          key="topography[0].file")
     kind = runs.kind_of(args.radius)
     forces = dict(schema.default_of(schema.load_schema(None), ["forces", kind]))
     for key, value in zip(("from", "to", "count"), (args.force_from, args.force_to, args.force_count)):
@@ -243,7 +256,7 @@ def _measured(args) -> int:
     try:
         cfg = measured_config_from_args(args)
     except ConfigError as err:
-        return bad(_flagged(str(err), {**_FLAGS, **_MEASURED_FLAGS}))
+        return bad(_flagged(err, {**_indent_flags(), **_MEASURED_FLAGS}))
     entry = cfg["topography"][0]
     handler = None
     if not args.quiet:
@@ -284,10 +297,15 @@ def _measured(args) -> int:
     return 0
 
 
-def _flagged(message: str, flags: dict = _FLAGS) -> str:
-    for key, flag in flags.items():
-        message = message.replace(f"config key {key}", f"{flag} ({key.strip(chr(39))})")
-    return message
+def _flagged(err: ConfigError, flags: dict | None = None) -> str:
+    """The one line of a config error in the command line's words: the key it is about
+    (:attr:`ConfigError.key`) named by its flag, e.g. ``--hurst (hurst[0]) = 3 is not allowed``."""
+    flags = _indent_flags() if flags is None else flags
+    message = str(err)
+    flag = flags.get(err.key)
+    if flag is None:
+        return message
+    return message.replace(f"config key '{err.key}'", f"{flag} ({err.key})", 1)
 
 
 def main(argv=None) -> int:
@@ -312,7 +330,7 @@ def main(argv=None) -> int:
     try:
         settings = settings_from_args(args)
     except ConfigError as err:
-        print(f"roughcontact indent: invalid argument: {_flagged(str(err))}", file=sys.stderr)
+        print(f"roughcontact indent: invalid argument: {_flagged(err)}", file=sys.stderr)
         return 2
     try:
         indent.run_indent(settings, args.output, log=args.log, progress=not args.quiet)

@@ -85,14 +85,15 @@ def _entries(cfg: dict, key: str, defaults: dict, base: Path) -> list[dict]:
         path = (path if path.is_absolute() else base / path).resolve()
         if not path.is_file():
             raise ConfigError(f"config key '{key}[{i}].file' = '{entry['file']}': no such file ({path}); "
-                              f"allowed: a file, relative to the config file's directory {base}")
+                              f"allowed: a file, relative to the config file's directory {base}",
+                              key=f"{key}[{i}].file")
         entry["file"] = str(path)
         if entry["name"] is None:
             entry["name"] = path.name.split(".")[0] or "scan"
             entry["name"] = "".join(c if c.isalnum() or c in "._-" else "_" for c in entry["name"])
         if entry["name"] in names:
             raise ConfigError(f"config key '{key}[{i}]' has the name '{entry['name']}' of {key}[{names[entry['name']]}]; "
-                              f"allowed: distinct names (set {key}[{i}].name)")
+                              f"allowed: distinct names (set {key}[{i}].name)", key=f"{key}[{i}].name")
         names[entry["name"]] = i
         out.append(entry)
     return out
@@ -113,23 +114,24 @@ def resolve_inputs(cfg: dict, base_dir: str | os.PathLike | None = None) -> None
         try:
             table = read_psd(entry["file"], convention=entry["convention"])
         except InputFileError as err:
-            raise ConfigError(f"config key 'spectrum[{i}].file': {err}") from None
+            raise ConfigError(f"config key 'spectrum[{i}].file': {err}", key=f"spectrum[{i}].file") from None
         unit = None if table.unit is None else table.unit.replace("µ", "u").replace("μ", "u")
         if unit is not None and unit not in LENGTH_UNITS:
             raise ConfigError(f"config key 'spectrum[{i}].file': {table.source}: length unit {table.unit!r}; "
-                              f"allowed: {', '.join(LENGTH_UNITS)} (or none: units.length)")
+                              f"allowed: {', '.join(LENGTH_UNITS)} (or none: units.length)", key=f"spectrum[{i}].file")
     both = set(topography_names(cfg)) & set(spectrum_names(cfg))
     if both:
         raise ConfigError(f"config keys 'topography' and 'spectrum' both name '{min(both)}'; "
-                          "allowed: distinct names")
+                          "allowed: distinct names", key="spectrum")
     band = cfg.get("fit", {}).get("spectrum", {}).get("band")
     if band is not None and not band[0] > band[1]:
         raise ConfigError(f"config key 'fit.spectrum.band' = {list(band)}: the first wavelength must be the "
-                          "longer; allowed: [longest, shortest] wavelength, longest > shortest > 0")
+                          "longer; allowed: [longest, shortest] wavelength, longest > shortest > 0",
+                          key="fit.spectrum.band")
     if has_measured(cfg):
         units = cfg.get("units") or {}
         for key in ("length", "e_star"):
             if units.get(key) is None:
                 allowed = LENGTH_UNITS if key == "length" else PRESSURE_UNITS
                 raise ConfigError(f"missing config key 'units.{key}' (measured inputs are in physical units); "
-                                  f"allowed: one of {', '.join(allowed)}")
+                                  f"allowed: one of {', '.join(allowed)}", key=f"units.{key}")

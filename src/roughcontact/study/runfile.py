@@ -56,10 +56,13 @@ SCALARS = {
     "seed": ("i8", "random seed of the surface", "1"),
 }
 
-#: attributes of the sweep axes (:data:`roughcontact.study.axes.AXES`) and of ``seed`` as
-#: coordinates of the merged files
-AXIS_ATTRS = {**{a.name: {"long_name": a.long_name, "units": a.unit} for a in AXES.values()},
-              "seed": {"long_name": "random seed of the surface", "units": "1"}}
+def __getattr__(name: str):
+    """``AXIS_ATTRS``: attributes of the sweep axes (:data:`roughcontact.study.axes.AXES`, read
+    when asked) and of ``seed`` as coordinates of the merged files."""
+    if name == "AXIS_ATTRS":
+        return {**{a.name: {"long_name": a.long_name, "units": a.unit} for a in AXES.values()},
+                "seed": {"long_name": "random seed of the surface", "units": "1"}}
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def write_run(path, out: dict, *, attrs: dict, stiffness_method: str, units: dict | None = None,

@@ -9,6 +9,7 @@ workflow turns names into paths with its own patterns (:func:`run_path`).
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import re
@@ -37,12 +38,17 @@ __all__ = [
     "kind_of",
 ]
 
-#: sweep axes of the runs of each surface kind, in the order of the merged file's dimensions
-#: (then ``seed`` and ``force``), from the registry :data:`roughcontact.study.axes.AXES`
-AXES = {kind: axes.names(kind) for kind in ("sphere", "flat")}
-#: the paper's setting of the optional axes (a paraboloid, no roll-off, no cutoff, elastic):
-#: runs with these values have the names and settings they had before the axes existed
-DEFAULTS = {a.name: a.paper for a in axes.optional_axes()}
+def __getattr__(name: str):
+    """``AXES``: the sweep axes of the runs of each surface kind, in the order of the merged
+    file's dimensions (then ``seed`` and ``force``); ``DEFAULTS``: the paper's setting of the
+    optional axes (a paraboloid, no roll-off, no cutoff, elastic), whose runs have the names
+    and settings they had before the axes existed. Both read the registry
+    :data:`roughcontact.study.axes.AXES` when asked, so an axis registered later is in them."""
+    if name == "AXES":
+        return {kind: axes.names(kind) for kind in ("sphere", "flat")}
+    if name == "DEFAULTS":
+        return {a.name: a.paper for a in axes.optional_axes()}
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 # --------------------------------------------------------------------------
@@ -111,13 +117,16 @@ def combo_name(run: dict) -> str:
     return name
 
 
-_COMBO = re.compile("_".join(rf"{axes.axis(a).tag}(?P<{a}>[^_/]+?)" for a in _NAMED)
-                    + "".join(rf"(?:_{a.tag}(?P<{a.name}>[^_/]+?))?" for a in axes.optional_axes()) + "$")
+@functools.lru_cache(maxsize=4)
+def _combo_pattern(registered: tuple) -> re.Pattern:
+    """The regular expression of :func:`combo_name` for the *registered* axes."""
+    return re.compile("_".join(rf"{axes.axis(a).tag}(?P<{a}>[^_/]+?)" for a in _NAMED)
+                      + "".join(rf"(?:_{a.tag}(?P<{a.name}>[^_/]+?))?" for a in axes.optional_axes()) + "$")
 
 
 def parse_combo(name: str) -> dict:
     """The axes of a run directory name (:func:`combo_name`); ``ValueError`` if it is not one."""
-    match = _COMBO.match(name)
+    match = _combo_pattern(tuple(axes.AXES)).match(name)
     if not match:
         raise ValueError(f"{name!r} is not a run name like H0.7_R0.5_h0.009[_m4][_rolloff0.25]...")
     out = {axis: parse_value(match.group(axis)) for axis in _NAMED}

@@ -1,0 +1,112 @@
+"""A sweep axis registered in one place (roughcontact.study.axes) reaches the schema, the
+configuration, run names, job settings, the surface or solver arguments, the merged files'
+coordinates and the command line; the registry's own axes keep their names and hashes."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from roughcontact import errors
+from roughcontact.cli import build_parser
+from roughcontact.study import axes, config, provenance, runfile, runs, schema, settings
+
+BASE = {"hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 2}
+
+
+@pytest.fixture
+def toy_axis():
+    """The package guide's worked example: a roll-off exponent of the spectrum, passed to the
+    surface generator (role ``roughness``), paper value 0 (none); removed afterwards."""
+    spec = axes.register(axes.Axis(
+        "rolloff_power", "rp", "power of the roll-off", "1", "power of the roll-off plateau (0: flat plateau)",
+        {"type": "number", "minimum": 0, "maximum": 4}, "roughness", paper=0.0,
+        flag_help="power of the roll-off plateau (default 0)"))
+    schema._package_schema.cache_clear()
+    yield spec
+    del axes.AXES[spec.name]
+    schema._package_schema.cache_clear()
+
+
+def test_registered_axis_is_a_config_key_with_its_default(toy_axis):
+    cfg = config.resolve_config(BASE)
+    assert cfg["rolloff_power"] == [0.0], f"default of the new axis: {cfg['rolloff_power']}"
+
+
+def test_registered_axis_is_checked_by_its_schema(toy_axis):
+    with pytest.raises(errors.ConfigError) as info:
+        config.resolve_config({**BASE, "rolloff_power": [5.0]})
+    assert info.value.key == "rolloff_power[0]", f"error key: {info.value.key}"
+
+
+def test_registered_axis_multiplies_the_runs(toy_axis):
+    cfg = config.resolve_config({**BASE, "rolloff_power": [0.0, 1.5]})
+    assert len(runs.runs(cfg)) == 4, f"runs: {[runs.combo_name(r) for r in runs.runs(cfg)]}"
+
+
+def test_run_name_carries_the_tag_off_the_paper_value(toy_axis):
+    cfg = config.resolve_config({**BASE, "rolloff_power": [0.0, 1.5]})
+    names = [runs.combo_name(c) for c in runs.combinations(cfg)]
+    assert names == ["H0.7_R0.5_h0.009", "H0.7_R0.5_h0.009_rp1.5"], f"names: {names}"
+
+
+def test_run_name_parses_back(toy_axis):
+    parsed = runs.parse_combo("H0.7_R0.5_h0.009_rp1.5")
+    assert parsed["rolloff_power"] == 1.5, f"parsed: {parsed}"
+
+
+def test_settings_pass_the_axis_to_its_role(toy_axis):
+    cfg = config.resolve_config({**BASE, "rolloff_power": [1.5]})
+    job = settings.job_settings(cfg, runs.runs(cfg)[0])
+    assert job.arguments("roughness")["rolloff_power"] == 1.5, f"arguments: {job.arguments('roughness')}"
+
+
+def test_merged_coordinate_has_the_axis_attributes(toy_axis):
+    assert runfile.AXIS_ATTRS["rolloff_power"] == {"long_name": "power of the roll-off", "units": "1"}, \
+        f"attributes: {runfile.AXIS_ATTRS.get('rolloff_power')}"
+
+
+def test_command_line_has_the_axis_flag(toy_axis):
+    args = build_parser().parse_args(["indent", "--hurst", "0.7", "--radius", "0.5", "--h-rms", "9e-3",
+                                      "--rolloff-power", "1.5", "-o", "x.nc"])
+    assert args.rolloff_power == 1.5, f"parsed flag: {args.rolloff_power}"
+
+
+def test_paper_setting_keeps_the_run_hash(toy_axis):
+    """A run at the new axis's paper value has the settings record (and so the config_hash) of
+    the same run without the axis: finished runs stay valid."""
+    cfg = config.resolve_config(BASE)
+    record = settings.job_settings(cfg, runs.runs(cfg)[0]).record()
+    assert "rolloff_power" not in record, f"record: {record}"
+
+
+def test_registry_order_is_the_merged_dimension_order():
+    assert runs.AXES["sphere"] == ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness"), \
+        f"sphere dimensions: {runs.AXES['sphere']}"
+
+
+def test_flat_surfaces_do_not_sweep_the_body_axes():
+    assert runs.AXES["flat"] == ("hurst", "h_rms", "rolloff", "cutoff", "hardness"), \
+        f"flat dimensions: {runs.AXES['flat']}"
+
+
+@pytest.mark.parametrize("extra, recorded", [({}, "61a64f8073b3e8ec"),
+                                             ({"hardness": [0.3], "rolloff": [0.25]}, "ab53f61d41f06bf7")])
+def test_run_hash_is_the_recorded_one(extra, recorded):
+    """The config_hash of a sphere run on 129² with every other setting at the schema's default,
+    recorded with the code before the axis registry (commit 4bed618): the registry changed no
+    finished run's identity (a hash of the settings' text, exact on every machine)."""
+    cfg = config.resolve_config({**BASE, "grid": {"n": 129}, **extra})
+    record = settings.job_settings(cfg, runs.runs(cfg)[0]).record()
+    assert provenance.config_hash(record) == recorded, f"config_hash of {record}"
+
+
+def test_nullable_axis_coordinate_round_trips():
+    length = 2.0
+    value = runs.axis_value("rolloff", runs.coordinate("rolloff", None, length), length)
+    assert value is None, f"rolloff at the paper's setting came back as {value}"
+
+
+def test_hardness_coordinate_of_the_elastic_setting_is_inf():
+    assert math.isinf(runs.coordinate("hardness", None, 1.0)), "elastic hardness coordinate is not inf"
+
