@@ -20,6 +20,8 @@ import dataclasses
 import math
 from typing import Callable
 
+from ..errors import ConfigError
+
 __all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES"]
 
 #: where an axis acts on a run: the roughness of the surface (an argument of
@@ -182,8 +184,6 @@ register(Axis(
 # beyond the paraboloid (the paper's Conclusions)
 # --------------------------------------------------------------------------
 def _check_exponent(cfg: dict, kinds: set) -> None:
-    from ..errors import ConfigError
-
     if "sphere" not in kinds:
         return
     for i, exponent in enumerate(cfg["exponent"]):
@@ -212,8 +212,7 @@ register(Axis(
 # the spectrum: roll-off and cutoff
 # --------------------------------------------------------------------------
 def _check_spectrum(cfg: dict, kinds: set) -> None:
-    from ..errors import ConfigError
-    from .config import full_contact_slope
+    from .limits import full_contact_slope
 
     n, length = cfg["grid"]["n"], cfg["grid"]["length"]
     if None in cfg["rolloff"] and length in cfg["rolloff"]:
@@ -261,8 +260,6 @@ register(Axis(
 # plasticity: a penetration hardness
 # --------------------------------------------------------------------------
 def _check_hardness(cfg: dict, kinds: set) -> None:
-    from ..errors import ConfigError
-
     for i, hardness in enumerate(cfg["hardness"]):
         if hardness is None:
             continue

@@ -19,7 +19,7 @@ Cross-key checks
 After the schema, :func:`resolve_config` requires an odd
 ``fit.slopes.window``; ``forces.sphere`` / ``forces.flat`` for the radii
 listed, with ``from < to`` and forces within floating-point range; flat
-surfaces pressed short of full contact (:func:`full_contact_slope`); and a
+surfaces pressed short of full contact (:func:`roughcontact.study.limits.full_contact_slope`); and a
 smooth-body contact radius within L/4 of the free-space grid.  Each sweep axis brings its
 own checks (:attr:`roughcontact.study.axes.Axis.check`): exponents other than every H,
 roll-off and cutoff wavelengths that leave a self-affine band on the grid, hardnesses above
@@ -37,6 +37,7 @@ import numpy as np
 from ..errors import ConfigError
 from ..models import paper
 from .axes import AXES
+from .limits import full_contact_slope
 from .measured_config import resolve_inputs
 from .runs import kind_of
 from .schema import (
@@ -51,7 +52,6 @@ from .schema import (
 
 __all__ = [
     "error_line",
-    "full_contact_slope",
     "load_config",
     "resolve_config",
 ]
@@ -83,25 +83,6 @@ def load_config(path: str | os.PathLike) -> dict:
         raise ConfigError(f"config file {printable(str(path))} is not valid YAML{where}: "
                           f"{printable(problem)}") from err
     return data if data is not None else {}
-
-
-def full_contact_slope(hurst: float, n: int, length: float, *, rolloff: float | None = None,
-                       cutoff: float | None = None) -> float:
-    """Estimated rms slope / h_rms of a self-affine surface with C(q) ~ q^(-2H-2)
-    between q0 = 2 pi / L and the Nyquist wave number q1 = pi n / L (or the
-    cutoff 2 pi/cutoff), constant below the roll-off 2 pi/rolloff."""
-    with np.errstate(all="ignore"):  # extreme (but finite) L or H: the estimate is then inf or nan
-        q_top = np.pi * n / length if cutoff is None else min(np.pi * n / length, 2 * np.pi / cutoff)
-        q = np.geomspace(2 * np.pi / length, q_top, 4001)
-        lnq = np.log(q)
-        psd = np.maximum(q, 2 * np.pi / (length if rolloff is None else rolloff)) ** (-2 * hurst - 2)
-
-        def trap(y):
-            return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(lnq)))
-
-        num = trap(q**4 * psd)  # int q^3 C(q) dq = int q^4 C dlnq
-        den = trap(q**2 * psd)  # int q C(q) dq = int q^2 C dlnq
-        return float(np.sqrt(num / den))
 
 
 def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = None) -> dict:

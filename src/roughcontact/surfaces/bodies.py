@@ -88,18 +88,20 @@ def paraboloid(n: int, *, radius: float, length: float = 1.0) -> np.ndarray:
 
 def rough_sphere(n: int, *, radius: float, hurst: float, h_rms: float,
                  length: float = 1.0, seed: int | None = 0, exponent: float = 2.0,
-                 rolloff: float | None = None, cutoff: float | None = None) -> np.ndarray:
+                 rolloff: float | None = None, cutoff: float | None = None,
+                 realization_of: int | None = None) -> np.ndarray:
     """Rough sphere ``z = z_p + z_r``: paraboloid plus self-affine roughness (Fig. 2).
 
     ``z_p`` is :func:`body_of_revolution` with ``exponent`` (default 2: the paraboloid),
-    ``z_r`` is :func:`self_affine` with the other arguments; the body is added in place,
+    ``z_r`` is :func:`self_affine` with the other arguments (``realization_of``: the surface of a
+    finer grid, seen on this one); the body is added in place,
     row block by row block, so the peak memory is that of :func:`self_affine`. The
     defaults give the same bytes as before ``exponent``, ``rolloff`` and ``cutoff`` existed.
     """
     check_finite_positive("radius", radius)
     check_finite_positive("exponent", exponent)
     heights = self_affine(n, hurst=hurst, h_rms=h_rms, length=length, seed=seed,
-                          rolloff=rolloff, cutoff=cutoff)
+                          rolloff=rolloff, cutoff=cutoff, realization_of=realization_of)
     x = _coordinates(n, length)
     for rows in row_blocks(n, n):
         heights[rows] += body_height(np.hypot(x[rows, None], x[None, :]), radius, exponent)

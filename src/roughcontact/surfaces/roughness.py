@@ -130,7 +130,7 @@ def _ifft2_in_place(a: np.ndarray) -> None:
 
 def self_affine(n: int, *, hurst: float, h_rms: float, length: float = 1.0,
                 seed: int | None = 0, rolloff: float | None = None,
-                cutoff: float | None = None) -> np.ndarray:
+                cutoff: float | None = None, realization_of: int | None = None) -> np.ndarray:
     """Random self-affine, statistically isotropic, periodic roughness (eqs. 1–3).
 
     ``h(x) = Σ_q B(q) cos(q·x + φ(q))`` with ``B ∝ √C2D(q)`` and phases uniform on
@@ -168,6 +168,13 @@ def self_affine(n: int, *, hurst: float, h_rms: float, length: float = 1.0,
         (at least two cells, and a non-empty self-affine band); ``None`` (default)
         keeps every mode of the grid. ``λ_c = 2L/n`` puts ``q_c`` on the Nyquist
         wavenumber and still drops the grid's corners ``|q| > q_c``.
+    realization_of : int, optional
+        The grid ``N ≥ n`` whose realisation to return, seen on this ``n × n`` grid: the surface
+        of ``self_affine(N, ...)`` (same seed, spectrum and rms ``h_rms`` over ``N × N``)
+        low-passed to the modes ``|k_x|, |k_y| < n/2`` and sampled at this grid's nodes, so that
+        coarser grids carry the same physical surface (a grid-convergence study of one
+        ensemble). ``None`` (default): ``N = n``, the surface of this grid itself. Its rms is
+        ``h_rms`` less the power of the dropped modes.
 
     Returns
     -------
@@ -185,9 +192,33 @@ def self_affine(n: int, *, hurst: float, h_rms: float, length: float = 1.0,
     check_finite_positive("length", length)
     if seed is not None and not isinstance(seed, numbers.Integral):
         raise ValueError(f"seed must be an integer or None, got {seed!r}")
+    if realization_of is not None and realization_of != n:
+        return _coarsened(n, realization_of, hurst=hurst, h_rms=h_rms, length=length, seed=seed,
+                          rolloff=rolloff, cutoff=cutoff)
     q_r, q_c = band(length, rolloff=rolloff, cutoff=cutoff, n=n)
     spectrum = _spectrum(n, length, hurst, seed, q_r, q_c)
     _ifft2_in_place(spectrum)
     heights = spectrum.real
     heights -= heights.mean()
     return heights * (h_rms / np.sqrt(np.mean(heights**2)))
+
+
+def _coarsened(n: int, fine: int, *, hurst, h_rms, length, seed, rolloff, cutoff) -> np.ndarray:
+    """:func:`self_affine` ``(fine, ...)`` low-passed to ``|k| < n/2`` per direction and sampled on
+    the ``n × n`` grid (``realization_of``).
+
+    The fine heights are ``h = c · ifft2(S)`` with ``c = h_rms / rms(ifft2(S))``; by Parseval
+    ``rms² = Σ|S|²/N⁴`` (``S(0) = 0``), so ``c`` needs no fine transform. A mode ``k`` of the
+    fine grid is ``S(k) e^{2πi k·j/N}/N²`` at node ``j``; at the coarse node ``x = jL/n`` it is
+    ``S(k) e^{2πi k·j/n}/N²``, i.e. the coarse grid's own ``ifft2`` of ``S(k) n²/N²``.
+    """
+    check_grid_size(fine)
+    if fine < n:
+        raise ValueError(f"realization_of must be a grid of at least n = {n} points, got {fine!r}")
+    q_r, q_c = band(length, rolloff=rolloff, cutoff=cutoff, n=n)
+    spectrum = _spectrum(fine, length, hurst, seed, q_r, q_c)
+    scale = h_rms / np.sqrt(np.sum(np.abs(spectrum) ** 2) / float(fine) ** 4)
+    keep = np.arange(-((n - 1) // 2), (n - 1) // 2 + 1)     # |k| < n/2: an even grid's Nyquist mode dropped
+    coarse = np.zeros((n, n), dtype=complex)
+    coarse[np.ix_(keep % n, keep % n)] = spectrum[np.ix_(keep % fine, keep % fine)] * (n / fine) ** 2 * scale
+    return np.fft.ifft2(coarse).real
