@@ -227,7 +227,8 @@ def test_profiles_are_one_seeded_stream(monkeypatch):
     whole = mdr.sphere_stiffness([1e-5, 1e-3], **kwargs)
     monkeypatch.setattr(profiles, "_CHUNK_CELLS", 129 * 7)   # blocks of 7 rows
     chunked = mdr.sphere_stiffness([1e-5, 1e-3], **kwargs)
-    assert np.array_equal(whole.stiffness, chunked.stiffness), "chunking changes the result"
+    # the same profiles in other blocks: equal up to the summation order of the means (1e-13)
+    np.testing.assert_allclose(chunked.stiffness, whole.stiffness, rtol=1e-13, err_msg="chunking changes the result")
 
 
 # --- ensembles ------------------------------------------------------------------------------
