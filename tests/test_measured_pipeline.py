@@ -131,21 +131,23 @@ def test_scan_smaller_than_the_tile(tmp_path):
     assert not out.parent.exists() or not any(out.parent.iterdir())
 
 
-@pytest.mark.parametrize("content, needle", [
-    (bytes(range(256)) * 4, "unknown or unreadable file format"),
-    (None, "heights are constant"),
-])
-def test_unusable_scans(tmp_path, content, needle):
+def test_unreadable_scan_stops_the_config(tmp_path):
+    """A file no reader knows is rejected when the configuration is resolved (check-config
+    opens every scan), before any job."""
+    (tmp_path / "bad.nc").write_bytes(bytes(range(256)) * 4)
+    with pytest.raises(ConfigError) as err:
+        _resolved(tmp_path, topography=["bad.nc"])
+    assert "topography[0].file" in _one_line(err) and "unknown or unreadable file format" in _one_line(err)
+
+
+def test_constant_scan(tmp_path):
     path = tmp_path / "bad.nc"
-    if content is None:
-        ST.Topography(np.full((64, 64), 2.0), (6.4, 6.4), unit="µm").to_netcdf(str(path))
-    else:
-        path.write_bytes(content)
+    ST.Topography(np.full((64, 64), 2.0), (6.4, 6.4), unit="µm").to_netcdf(str(path))
     cfg = _resolved(tmp_path, topography=["bad.nc"])
     out = tmp_path / "out" / "surface.nc"
     with pytest.raises(InputFileError) as err:
         measured.prepare_surface(cfg, cfg["topography"][0], out)
-    assert needle in _one_line(err)
+    assert "heights are constant" in _one_line(err)
     assert not out.exists()
 
 
@@ -175,11 +177,22 @@ def _deflection_only(path):
 @pytest.mark.parametrize("write, needle", [
     (_line_scan, "a line scan"),
     (_deflection_only, "no height channel"),
+])
+def test_scans_the_config_rejects(tmp_path, write, needle):
+    """What reading the height channel tells (check-config opens every scan): before any job."""
+    name = "bad.mi" if write is _deflection_only else "bad.nc"
+    write(tmp_path / name)
+    with pytest.raises(ConfigError) as err:
+        _resolved(tmp_path, topography=[name])
+    assert needle in _one_line(err) and "topography[0].file" in _one_line(err)
+
+
+@pytest.mark.parametrize("write, needle", [
     (_mostly_missing, "are undefined, more than max_missing"),
     (_non_square, "pixels are not square"),
 ])
 def test_scans_the_stage_rejects(tmp_path, write, needle):
-    name = "bad.mi" if write is _deflection_only else "bad.nc"
+    name = "bad.nc"
     write(tmp_path / name)
     cfg = _resolved(tmp_path, topography=[name])
     out = tmp_path / "out" / "surface.nc"
@@ -198,11 +211,10 @@ def test_non_square_pixels_with_interpolate(tmp_path):
 
 def test_physical_size_from_neither_file_nor_config(tmp_path):
     np.save(tmp_path / "raw.npy", np.random.default_rng(0).normal(size=(64, 64)))
-    cfg = _resolved(tmp_path, topography=["raw.npy"])
+    with pytest.raises(ConfigError) as err:
+        _resolved(tmp_path, topography=["raw.npy"])
+    assert "'topography[0].size'" in _one_line(err) and "gives no physical size" in _one_line(err)
     out = tmp_path / "surface.nc"
-    with pytest.raises(InputFileError) as err:
-        measured.prepare_surface(cfg, cfg["topography"][0], out)
-    assert "gives no physical size" in _one_line(err) and not out.exists()
     cfg = _resolved(tmp_path, topography=[{"file": "raw.npy", "size": 6400, "unit": "nm"}])
     measured.prepare_surface(cfg, cfg["topography"][0], out)
     _, length, attrs = measured.read_surface(out)

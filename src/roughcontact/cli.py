@@ -271,7 +271,7 @@ def _measured(args) -> int:
             try:
                 measured.prepare_surface(cfg, entry, surface)
             except InputFileError as err:
-                return bad(str(err))
+                return bad(err.reworded({"length": "--size"}))
             except ImportError as err:   # no SurfaceTopography: not the input's fault
                 print(f"roughcontact measured: FAILED: {' '.join(str(err).split())}", file=sys.stderr)
                 return 1

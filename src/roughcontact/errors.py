@@ -39,7 +39,27 @@ class ConfigError(RoughContactError, ValueError):
 
 
 class InputFileError(RoughContactError, ValueError):
-    """An input file (a measured topography, a spectrum table) that cannot be used."""
+    """An input file (a measured topography, a spectrum table) that cannot be used.
+
+    ``str(err)`` is one line naming the file and what is wrong.
+
+    Attributes
+    ----------
+    parameter : str or None
+        The argument of the reading function that would fix it (``"length"`` where the file gives
+        no physical size), spelled ``parameter=`` in the message; :meth:`reworded` names it as
+        a caller's interface does (``--size``, ``topography[0].size``).
+    """
+
+    def __init__(self, message: str, *, parameter: str | None = None):
+        super().__init__(message)
+        self.parameter = parameter
+
+    def reworded(self, names: dict) -> str:
+        """The message with ``parameter=`` named by ``names[parameter]`` (unchanged without one)."""
+        if self.parameter is None or self.parameter not in names:
+            return str(self)
+        return str(self).replace(f"{self.parameter}=", names[self.parameter])
 
 
 class ConvergenceError(RoughContactError, RuntimeError):

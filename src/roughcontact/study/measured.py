@@ -84,8 +84,11 @@ def prepare_surface(cfg: dict, entry: dict, output) -> None:
     study_unit = cfg["units"]["length"]
     unit = entry["unit"] or study_unit
     detrend = None if entry["detrend"] == "none" else entry["detrend"]
-    scan = surfaces.from_topography(entry["file"], unit=unit, length=entry["size"], detrend=detrend,
-                                    interpolate=bool(entry.get("interpolate", False)))
+    try:
+        scan = surfaces.from_topography(entry["file"], unit=unit, length=entry["size"], detrend=detrend,
+                                        interpolate=bool(entry.get("interpolate", False)))
+    except InputFileError as err:   # the config's words for the reader's arguments
+        raise InputFileError(err.reworded({"length": f"size (in the topography entry {entry['name']})"})) from None
     factor = _scale(scan.unit, study_unit, entry["file"])
     tile = cfg["tile"] or scan.n
     if tile > scan.n:

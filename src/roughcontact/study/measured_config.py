@@ -99,6 +99,25 @@ def _entries(cfg: dict, key: str, defaults: dict, base: Path) -> list[dict]:
     return out
 
 
+def _check_scans(cfg: dict) -> None:
+    """Read every scan's height channel (:func:`roughcontact.surfaces.measured.check_topography`),
+    so that a truncated, damaged or misnamed file stops the configuration, not a job."""
+    from ..surfaces.measured import check_topography
+
+    study_unit = (cfg.get("units") or {}).get("length")
+    for i, entry in enumerate(cfg["topography"]):
+        unit = plain_unit(entry["unit"] or study_unit)
+        try:
+            check_topography(entry["file"], length=entry["size"], unit=None if unit is None else unit)
+        except InputFileError as err:
+            if err.parameter == "length":   # the entry's size is missing, or given where the file has one
+                key = f"topography[{i}].size"
+                raise ConfigError(f"config key '{key}': {err.reworded({'length': 'the size'})}", key=key) from None
+            raise ConfigError(f"config key 'topography[{i}].file': {err}", key=f"topography[{i}].file") from None
+        except ValueError as err:   # a unit SurfaceTopography does not know
+            raise ConfigError(f"config key 'topography[{i}].unit': {err}", key=f"topography[{i}].unit") from None
+
+
 def resolve_inputs(cfg: dict, base_dir: str | os.PathLike | None = None) -> None:
     """Complete the ``topography`` and ``spectrum`` entries of *cfg* in place.
 
@@ -110,6 +129,8 @@ def resolve_inputs(cfg: dict, base_dir: str | os.PathLike | None = None) -> None
     base = Path(base_dir if base_dir is not None else os.getcwd()).resolve()
     cfg["topography"] = _entries(cfg, "topography", _TOPOGRAPHY_DEFAULTS, base)
     cfg["spectrum"] = _entries(cfg, "spectrum", _SPECTRUM_DEFAULTS, base)
+    if cfg["topography"]:
+        _check_scans(cfg)
     for i, entry in enumerate(cfg["spectrum"]):  # a bad table stops the workflow before any job
         try:
             table = read_psd(entry["file"], convention=entry["convention"])

@@ -60,7 +60,7 @@ from .instrument_files import (
     source_name,
 )
 
-__all__ = ["DETREND_MODES", "MeasuredSurface", "from_topography"]
+__all__ = ["DETREND_MODES", "MeasuredSurface", "check_topography", "from_topography"]
 
 #: Levelling modes that SurfaceTopography's ``detrend`` accepts (``None``: no levelling).
 #: ``"height"`` (alias ``"rms-tilt"``) removes the plane of least rms height, ``"slope"`` the
@@ -365,3 +365,17 @@ def _window(h, dx, dy, n, coarsen, window, square, interpolate, name, unit):
     grid = fine.reshape(m, coarsen, m, coarsen).mean(axis=(1, 3))
     return grid, {"window_x0": float(x0), "window_y0": float(y0), "window_side": float(side),
                   "window_i0": -1, "window_j0": -1, "window_pixels": -1, "interpolated": 1}
+
+
+def check_topography(path, *, channel=None, length: float | None = None, unit: str | None = None) -> dict:
+    """Open an instrument file and read its height channel, as :func:`from_topography` would,
+    without levelling or cutting it: what ``roughcontact check-config`` does for each scan.
+
+    Returns the record of the file (format, channel, file unit, where the size comes from).
+    Raises :class:`~roughcontact.errors.InputFileError`, one line naming the file, for a file
+    that is missing, unreadable, empty, of unknown format, misnamed, cut short or damaged, or
+    that gives no physical size when ``length`` is not given.
+    """
+    ST, IO, units_module = import_surface_topography()
+    _, record = read_file(path, channel, length, check_unit(unit, units_module), ST, IO, units_module)
+    return record
