@@ -13,6 +13,7 @@ import math
 import numpy as np
 import pytest
 
+from roughcontact.models import scorecard as registry
 from roughcontact.study import scorecard
 from roughcontact.study.measured_models import crossover_force, predict
 from roughcontact.models import paper
@@ -35,9 +36,9 @@ def test_predict_agrees_with_scorecard(hurst):
                                   exponent=2.0, n=n, rolloff=length, cutoff=0.0, hardness=math.inf,
                                   zeta_fit=zeta)
     out = predict(FORCES, fit, radius=radius, e_star=e_star, length=length, n=n, zeta=zeta)
-    assert list(out) == list(scorecard.MODELS) + ["crossover_force"]
-    for name, model in scorecard.MODELS.items():
-        expected = model(FORCES, combo)
+    assert list(out) == list(registry.models()) + ["crossover_force"]
+    for name, model in registry.models().items():
+        expected = model.predict(FORCES, combo.surface())
         finite = np.isfinite(expected)
         assert finite.any()
         np.testing.assert_allclose(out[name][finite], expected[finite], rtol=1e-6, err_msg=name)

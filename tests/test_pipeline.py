@@ -24,7 +24,8 @@ from roughcontact.study import config
 from roughcontact.study import indent
 from roughcontact.study import io as study_io
 from roughcontact.study import runfile
-from roughcontact.study import runs, scorecard
+from roughcontact.models import scorecard as registry
+from roughcontact.study import runs
 from roughcontact.study import settings
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -168,8 +169,8 @@ def test_model_scorecard(run):
     work, cfg = run
     table = pd.read_csv(work / "results/models.csv")
     spheres = [c for c in runs.combinations(cfg) if c["kind"] == "sphere"]
-    assert set(table["model"]) == set(scorecard.MODELS), set(table["model"])
-    assert len(table) == len(scorecard.MODELS) * len(spheres), f"{len(table)} rows for {len(spheres)} combinations"
+    assert set(table["model"]) == set(registry.models()), set(table["model"])
+    assert len(table) == len(registry.models()) * len(spheres), f"{len(table)} rows for {len(spheres)} combinations"
     assert (table["max_rel_dev"] >= table["rms_rel_dev"]).all(), "rms deviation above the largest"
     assert (table.groupby("combination")["rank"].min() == 1).all(), "a combination without a best model"
     figures = sorted(p.name for p in (work / "results/models").iterdir())

@@ -16,9 +16,9 @@ from .plotting import pyplot, save_png
 
 __all__ = ["make_figures", "make_spectrum_figure", "draw_heights", "draw_spectrum", "draw_stiffness"]
 
-#: line style of each model's prediction
-MODEL_STYLES = {"eq16_paper": ("eq. 16", ":"), "greenwood_tripp": ("Greenwood-Tripp", (0, (5, 1, 1, 1))),
-                "mdr": ("MDR", (0, (1, 2))), "persson": ("Persson", "-.")}
+#: line styles of the models' predictions, in the order of the spectrum file's ``model`` coordinate
+#: (the registry's, :mod:`roughcontact.models.scorecard`), repeated if there are more models
+LINE_STYLES = (":", "--", (0, (3, 1, 1, 1, 1, 1)), (0, (5, 1)), (0, (5, 1, 1, 1)), (0, (1, 2)), "-.")
 
 
 def draw_heights(ax, surface_file, name: str):
@@ -87,11 +87,11 @@ def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
                                 alpha=0.25, lw=0)
             if kind in models:
                 pred = models[kind].sel(radius=radius) if kind == "sphere" else models[kind]
-                for model, (text, style) in MODEL_STYLES.items():
+                for i, model in enumerate(pred["model"].values.tolist()):
                     k = pred["stiffness"].sel(model=model).values
                     if np.any(np.isfinite(k)):
-                        ax.loglog(pred["force"].values, k, linestyle=style, color=color, lw=0.9,
-                                  label=f"{text}" + (f", R = {radius:g}" if kind == "sphere" else ", flat"))
+                        ax.loglog(pred["force"].values, k, linestyle=LINE_STYLES[i % len(LINE_STYLES)], color=color,
+                                  lw=0.9, label=f"{model}" + (f", R = {radius:g}" if kind == "sphere" else ", flat"))
             if kind == "sphere":
                 from .measured_config import to_metres, to_pascals
 

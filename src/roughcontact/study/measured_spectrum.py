@@ -20,16 +20,15 @@ import math
 
 import numpy as np
 
+from ..models.scorecard import models
 from . import provenance
 from .measured_config import to_metres, to_pascals
 from .runs import force_grid, kind_of
 
-__all__ = ["fit_scan", "run_spectrum", "MODEL_NAMES"]
+__all__ = ["fit_scan", "run_spectrum"]
 
 logger = logging.getLogger(__name__)
 
-#: the models in the order of the files (those :func:`measured_models.predict` returns)
-MODEL_NAMES = ("eq16_paper", "greenwood_tripp", "mdr", "persson")
 
 
 def _tiles(surface_file):
@@ -97,12 +96,13 @@ def run_spectrum(cfg: dict, name: str, surface_file, out_csv, out_nc) -> None:
             continue
         rng = cfg["forces"][kind]
         force = force_grid(rng["from"], rng["to"], rng["count"]) * e * length**2
-        k = np.full((len(MODEL_NAMES), len(radii), len(force)), np.nan)
+        names = list(models())     # every model of the registry, NaN where one does not apply
+        k = np.full((len(names), len(radii), len(force)), np.nan)
         crossover = np.full(len(radii), np.nan)
         for j, radius in enumerate(radii):
             out = measured_models.predict(force, fit, radius=radius, e_star=e, length=length, n=tile,
                                           h_rms=fit.h_rms)
-            for i, model in enumerate(MODEL_NAMES):
+            for i, model in enumerate(names):
                 if model in out:
                     k[i, j] = out[model] * per_metre
             crossover[j] = float(out["crossover_force"]) * newton
@@ -110,7 +110,7 @@ def run_spectrum(cfg: dict, name: str, surface_file, out_csv, out_nc) -> None:
         values = k if kind == "sphere" else k[:, 0]
         ds = xr.Dataset(
             {"stiffness": (dims, values, {"long_name": "model stiffness k(F)", "units": "N m-1"})},
-            coords={"model": ("model", list(MODEL_NAMES)),
+            coords={"model": ("model", names),
                     "force": ("force", force * newton, {"long_name": "normal force F", "units": "N"}),
                     "force_normalized": ("force", force / (e * length**2), {"long_name": "F/(E* L^2)", "units": "1"})})
         if kind == "sphere":

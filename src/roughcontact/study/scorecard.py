@@ -1,6 +1,6 @@
 """The model scorecard: contact theories against the BEM ensemble of every sphere combination.
 
-Each model of :data:`MODELS` predicts the stiffness ``k(F)`` of a rough sphere from what the
+Each model of the registry (:mod:`roughcontact.models.scorecard`) predicts the stiffness ``k(F)`` of a rough sphere from what the
 configuration says about the surface (H, h_rms, R, the body exponent m, L, n) and, for
 ``eq16_fitted``, the ζ(H) fitted on the same study. It is scored on the resolved loads of the
 ensemble mean (mean contact cells ≥ ``fit.zeta.min_cells``, as for the verdicts) by
@@ -20,25 +20,15 @@ import math
 
 import numpy as np
 
-from ..models import mdr as mdr_model
-from ..models import paper
-from ..models import persson as persson_model
-from ..models import superposition
-from ..models.zeta_law import zeta_law
-from ..surfaces.spectra import self_affine_spectrum
-from ..models.greenwood_tripp import self_affine_sphere_curve
+from ..models import scorecard as registry
 from . import provenance, runs
 from .plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval
 from .tables import write_html_table
 
-__all__ = ["MODELS", "Combination", "scorecard", "run_models"]
+__all__ = ["Combination", "scorecard", "run_models", "combo_label"]
 
 log = logging.getLogger(__name__)
-
-#: central separations d* (units of GT's σ) of the Greenwood–Tripp curve: F from ~1e-7 to ~20 E*L²
-#: on the paper's sphere
-_GT_DEPTHS = np.linspace(3.5, -1.5, 11)
 
 
 class Combination(dict):
@@ -51,101 +41,14 @@ class Combination(dict):
         return (self["rolloff"] == self["length"] and self["cutoff"] == 0.0
                 and math.isinf(self["hardness"]))
 
-
-def _eq16(force, c: Combination, zeta: float):
-    if not math.isfinite(zeta):
-        return None
-    return paper.stiffness_from_force(force, radius=c["radius"], hurst=c["hurst"], h_rms=c["h_rms"],
-                                      length=c["length"], e_star=c["e_star"], zeta=zeta, exponent=c["exponent"])
-
-
-def eq16_paper(force, c: Combination):
-    """Eq. 16 with ζ = 1.7/(H+1) (eq. 13)."""
-    return _eq16(force, c, float(paper.zeta_estimate(c["hurst"])))
-
-
-def eq16_fitted(force, c: Combination):
-    """Eq. 16 with the ζ(H) fitted on this study (eq. 11; flat runs, else the sphere's branch)."""
-    return _eq16(force, c, c["zeta_fit"])
-
-
-def eq16_law(force, c: Combination):
-    """Eq. 16 with ζ from the ζ(H) law calibrated on the flat surfaces of ``presets/zeta-law.yaml``
-    (:func:`roughcontact.models.zeta_law.zeta_law`, claim c')."""
-    return _eq16(force, c, float(zeta_law(c["hurst"])))
-
-
-def contact_scale(force, c: Combination):
-    """This package's model (:mod:`roughcontact.models.superposition`): eqs. 10 and 12 joined by
-    a p-norm, ζ = c_ζ · ζ_law(H), and for a spectrum with a roll-off or a cutoff the roughness
-    seen at the contact's scale (the grid's spectrum against the pure self-affine one); c_ζ and
-    p calibrated on the presets named in :data:`roughcontact.models.superposition.CALIBRATED`."""
-    spectra = {}
-    if c["rolloff"] != c["length"] or c["cutoff"] != 0.0:
-        spectra = dict(spectrum=_grid_spectrum(c), reference=_grid_spectrum(c, band=False))
-    return superposition.calibrated_stiffness(
-        force, radius=c["radius"], hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], e_star=c["e_star"],
-        exponent=c["exponent"], **spectra)
-
-
-def greenwood_tripp(force, c: Combination):
-    """Greenwood & Tripp (1967) on the summit statistics of the grid's own self-affine spectrum,
-    interpolated in log k against log F; NaN outside the solved range. Paraboloid, no roll-off
-    or cutoff only (the moments are those of the pure self-affine spectrum)."""
-    if c["exponent"] != 2.0 or c["rolloff"] != c["length"] or c["cutoff"] != 0.0:
-        return None
-    curve = self_affine_sphere_curve(hurst=c["hurst"], h_rms=c["h_rms"], n=c["n"], length=c["length"],
-                                     radius=c["radius"], e_star=c["e_star"], depths_star=_GT_DEPTHS)
-    ok = np.isfinite(curve.force) & np.isfinite(curve.stiffness) & (curve.force > 0)
-    f, k = curve.force[ok], curve.stiffness[ok]
-    order = np.argsort(f)
-    log_k = np.interp(np.log(force), np.log(f[order]), np.log(k[order]), left=np.nan, right=np.nan)
-    return np.exp(log_k)
-
-
-#: realisations of the MDR ensemble (relative standard error of k ≈ 0.2–1 % on the paper's sphere)
-MDR_REALIZATIONS = 1000
-
-
-def mdr(force, c: Combination):
-    """The method of dimensionality reduction: the mean stiffness of :data:`MDR_REALIZATIONS`
-    seeded 1D profiles with ``C1D = π q C2D`` of the grid's spectrum on a Winkler foundation,
-    the sphere as ``x²/R`` (:func:`roughcontact.models.mdr.sphere_stiffness`). Paraboloid only."""
-    if c["exponent"] != 2.0:
-        return None
-    return mdr_model.sphere_stiffness(
-        force, radius=c["radius"], hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"],
-        e_star=c["e_star"], rolloff=runs.axis_value("rolloff", c["rolloff"], c["length"]),
-        cutoff=runs.axis_value("cutoff", c["cutoff"], c["length"]), realizations=MDR_REALIZATIONS, seed=0).stiffness
-
-
-#: logarithmic bins per decade of the grid's spectrum for Persson's model (the grid's shells merged
-#: above the lowest modes: 130-220 bins for 129²-1025², stiffness within 2e-7 of all shells)
-PERSSON_BINS_PER_DECADE = 100
-
-
-def _grid_spectrum(c: Combination, *, band: bool = True):
-    """The grid's own self-affine spectrum of combination *c*, with its roll-off and cutoff
-    (``band=False``: without, the pure self-affine reference), on
-    :data:`PERSSON_BINS_PER_DECADE` bins per decade."""
-    extra = {axis: runs.axis_value(axis, c[axis], c["length"]) for axis in ("rolloff", "cutoff")} if band else {}
-    return self_affine_spectrum(hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"], n=c["n"],
-                                **extra).rebinned(PERSSON_BINS_PER_DECADE)
-
-
-def persson(force, c: Combination):
-    """Persson's interfacial law ū(p) from the grid's own discrete spectrum, acting over the
-    nominal pressure of the paraboloid (an axisymmetric compliant layer in series with the
-    half-space; :func:`roughcontact.models.persson.sphere_stiffness`, ``method="axisymmetric"``,
-    γ = 0.42). Paraboloid only."""
-    if c["exponent"] != 2.0:
-        return None
-    return persson_model.sphere_stiffness(force, _grid_spectrum(c), radius=c["radius"], e_star=c["e_star"]).stiffness
-
-
-#: model name -> function ``(force, combination) -> stiffness`` (``None``: does not apply)
-MODELS = {"eq16_paper": eq16_paper, "eq16_fitted": eq16_fitted, "eq16_law": eq16_law, "contact_scale": contact_scale,
-          "greenwood_tripp": greenwood_tripp, "mdr": mdr, "persson": persson}
+    def surface(self) -> registry.Surface:
+        """What the models read (:class:`roughcontact.models.scorecard.Surface`)."""
+        length = self["length"]
+        return registry.Surface(
+            hurst=self["hurst"], h_rms=self["h_rms"], radius=self["radius"], length=length, n=int(self["n"]),
+            e_star=self["e_star"], exponent=self["exponent"], zeta_fit=self["zeta_fit"],
+            rolloff=runs.axis_value("rolloff", self["rolloff"], length),
+            cutoff=runs.axis_value("cutoff", self["cutoff"], length))
 
 
 def _combinations(ds, cfg: dict, zeta_of: dict):
@@ -188,10 +91,7 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
         band = np.percentile(k_boot / k_mean - 1, [50 * (1 - level), 50 * (1 + level)], axis=0)
         label = combo_label(combo)
         dev_of = {}
-        for name, model in MODELS.items():
-            k_model = model(sub["force"].values, combo)
-            if k_model is None:
-                continue
+        for name, k_model in registry.predict(sub["force"].values, combo.surface()).items():
             use = resolved & np.isfinite(k_model)
             dev = k_model / k_mean - 1
             dev_of[name] = dev
@@ -219,20 +119,14 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
     return table, curves
 
 
-#: the lead paragraph of the scorecard page of the report
-SCORECARD_LEAD = ("Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
-                  "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
-                  "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
-                  "deviations; rank 1 is the best model of its combination. eq16_paper: eq. 16 with "
-                  "zeta = 1.7/(H+1); eq16_fitted: with the zeta fitted on this study; eq16_law: with the "
-                  "zeta(H) law calibrated on presets/zeta-law.yaml; contact_scale: this package's model, eqs. 10 and 12 "
-                  "joined by a p-norm with the roughness seen at the contact's scale, constants calibrated on "
-                  "named presets; "
-                  "greenwood_tripp: "
-                  "Greenwood & Tripp (1967) on the grid's spectral moments; mdr: the method of dimensionality "
-                  "reduction, 1000 seeded 1D profiles on a Winkler foundation; persson: Persson's interfacial "
-                  "law from the grid's spectrum as a compliant layer under the paraboloid. models.csv holds "
-                  "every digit.")
+def scorecard_lead() -> str:
+    """The lead paragraph of the scorecard page of the report (the registered models' summaries)."""
+    summaries = "; ".join(model.summary for model in registry.models().values())
+    return ("Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
+            "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
+            "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
+            f"deviations; rank 1 is the best model of its combination. {summaries}. models.csv holds "
+            "every digit.")
 
 
 def _figure(path, label: str, curve, table) -> None:
@@ -242,7 +136,7 @@ def _figure(path, label: str, curve, table) -> None:
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
     ax.axhline(0, color="0.4", lw=0.8)
-    for name in MODELS:
+    for name in registry.models():
         if name in curve:
             mark = table[(table["combination"] == label) & (table["model"] == name)]
             text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
@@ -266,7 +160,7 @@ def run_models(cfg, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures):
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, out_csv)
     write_groups(out_nc, curves, attrs)
-    write_html_table(table, out_html, title="Model scorecard", lead=SCORECARD_LEAD, verdict_columns=(),
+    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(), verdict_columns=(),
                      first=("combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low",
                             "max_rel_dev_ci_high", "rms_rel_dev", "n_loads"))
     names = runs.sphere_names(cfg)

@@ -1,0 +1,53 @@
+"""The models of the scorecard, one module each, registered where they are defined.
+
+A model predicts the stiffness ``k(F)`` of a rough body from a :class:`Surface`: the parameters
+of a generated surface (H, h_rms, the grid, roll-off and cutoff) or a measured spectrum fit
+(H and h_rms fitted, the measured spectrum and its moments). The generated scorecard
+(:mod:`roughcontact.study.scorecard`) and the measured one
+(:mod:`roughcontact.study.measured_models`) both loop over :func:`models`, so a new model is
+one module in this package that calls :func:`register` (worked example in the package guide,
+``docs/guide/package.md``); every module here is imported when the registry is first read.
+"""
+from __future__ import annotations
+
+import importlib
+import pkgutil
+
+from .registry import MODELS, Model, Surface, register
+
+__all__ = ["MODELS", "Model", "Surface", "register", "models", "predict"]
+
+#: the modules of the seven models of Pohrt & Popov's comparison and this package's, in the
+#: order of the tables and figures; further modules of this package follow in name order
+_ORDER = ("eq16", "contact_scale", "greenwood_tripp", "mdr", "persson")
+
+
+def _load() -> None:
+    """Import every module of this package once (each registers its models)."""
+    found = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name != "registry")
+    for name in sorted(found, key=lambda m: (_ORDER.index(m) if m in _ORDER else len(_ORDER), m)):
+        importlib.import_module(f"{__name__}.{name}")
+
+
+def models() -> dict[str, Model]:
+    """``{name: Model}`` of every registered model, in registration order."""
+    if not _loaded:
+        _load()
+        _loaded.append(True)
+    return dict(MODELS)
+
+
+_loaded: list = []
+
+
+def predict(force, surface: Surface) -> dict:
+    """``{name: k}`` of every model that applies to *surface* at the forces *force* (force
+    units, 1-D), each an array (NaN where the model has no solution)."""
+    import numpy as np
+
+    out = {}
+    for name, model in models().items():
+        k = model.predict(force, surface)
+        if k is not None:
+            out[name] = np.asarray(k, dtype=float)
+    return out

@@ -1,0 +1,115 @@
+"""The registry of the scorecard's models: what a model reads (:class:`Surface`), what it is
+(:class:`Model`) and :func:`register`."""
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Callable
+
+__all__ = ["Surface", "Model", "MODELS", "register", "PERSSON_BINS_PER_DECADE"]
+
+#: logarithmic bins per decade of a spectrum for the models that integrate over it (the grid's
+#: shells merged above the lowest modes: 130-220 bins for 129²-1025², Persson's stiffness within
+#: 2e-7 of all shells)
+PERSSON_BINS_PER_DECADE = 100
+
+
+@dataclasses.dataclass(frozen=True)
+class Surface:
+    """What a model of the scorecard may read about a rough body pressed into a half-space.
+
+    Units are the caller's, consistent: lengths in one unit, ``e_star`` a pressure, forces
+    ``e_star * length²`` and stiffnesses ``e_star * length``.
+
+    Attributes
+    ----------
+    hurst, h_rms : float
+        Hurst exponent and rms height of the roughness (generated, or fitted to a scan).
+    radius : float
+        Body radius ``R``; ``inf``: a nominally flat surface of side ``length``.
+    length, n : float, int
+        System size ``L`` and grid points per side (the grid's spectrum, MDR's profiles).
+    e_star : float
+        Effective modulus ``E*``.
+    exponent : float
+        Body of revolution ``z = (R/m)(r/R)^m`` (2: the paraboloid).
+    rolloff, cutoff : float or None
+        Roll-off and cutoff wavelengths of the generated spectrum (``None``: none).
+    zeta_fit : float
+        ζ of eq. 11 fitted on the same study (NaN: none).
+    spectrum : roughcontact.surfaces.spectra.Spectrum or None
+        A measured spectrum: models that integrate over a spectrum read it instead of the
+        grid's own self-affine one.
+    moments : roughcontact.surfaces.moments.SpectralMoments or None
+        The measured spectrum's moments (asperity statistics) instead of the self-affine ones.
+    """
+
+    hurst: float
+    h_rms: float
+    radius: float
+    length: float
+    n: int
+    e_star: float
+    exponent: float = 2.0
+    rolloff: float | None = None
+    cutoff: float | None = None
+    zeta_fit: float = math.nan
+    spectrum: object = None
+    moments: object = None
+
+    @property
+    def flat(self) -> bool:
+        """A nominally flat surface (``radius = inf``)."""
+        return math.isinf(self.radius)
+
+    @property
+    def pure_self_affine(self) -> bool:
+        """No roll-off and no cutoff: the spectrum eqs. 11-17 are written for."""
+        return self.rolloff is None and self.cutoff is None
+
+    def grid_spectrum(self, *, band: bool = True):
+        """The spectrum a model integrates over: the measured one, else the grid's own
+        self-affine spectrum with its roll-off and cutoff (``band=False``: without, the pure
+        self-affine reference), on :data:`PERSSON_BINS_PER_DECADE` bins per decade."""
+        from ...surfaces.spectra import self_affine_spectrum
+
+        if self.spectrum is not None:
+            return self.spectrum.rebinned(PERSSON_BINS_PER_DECADE)
+        extra = {"rolloff": self.rolloff, "cutoff": self.cutoff} if band else {}
+        return self_affine_spectrum(hurst=self.hurst, h_rms=self.h_rms, length=self.length, n=self.n,
+                                    **extra).rebinned(PERSSON_BINS_PER_DECADE)
+
+
+@dataclasses.dataclass(frozen=True)
+class Model:
+    """One model of the scorecard.
+
+    Attributes
+    ----------
+    name : str
+        Its name in ``models.csv``, the NetCDF files and the figures.
+    summary : str
+        One sentence for the report's lead paragraph.
+    predict : callable
+        ``predict(force, surface) -> k``: stiffness at each force (NaN where it has no
+        solution), or ``None`` where the model does not apply to *surface*.
+    reference : str
+        Where the model comes from (a DOI or the module that derives it).
+    """
+
+    name: str
+    summary: str
+    predict: Callable
+    reference: str = ""
+
+
+#: every registered model, in registration order
+MODELS: dict[str, Model] = {}
+
+
+def register(model: Model) -> Model:
+    """Add *model* to :data:`MODELS` (a second model of the same name is an error)."""
+    if model.name in MODELS:
+        raise ValueError(f"model {model.name!r} is registered already")
+    MODELS[model.name] = model
+    return model

@@ -1,0 +1,78 @@
+"""A model registered in one module (roughcontact.models.scorecard) is scored by the generated
+scorecard and predicted by the measured one; the registry holds the seven models in order."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+from test_scorecard import CFG, FORCE, HURST, ZETA, _groups
+
+from roughcontact.models import paper
+from roughcontact.models import scorecard as registry
+from roughcontact.study import scorecard
+from roughcontact.study.measured_models import predict
+from roughcontact.surfaces import self_affine
+from roughcontact.surfaces.spectrum_fit import fit_spectrum
+
+
+def hertz(force, s: registry.Surface):
+    """The smooth sphere, eq. 9: k = (6 R E*² F)^(1/3); no answer for a flat surface."""
+    if s.flat:
+        return None
+    return paper.hertz_stiffness(force, radius=s.radius, e_star=s.e_star)
+
+
+@pytest.fixture
+def hertz_model():
+    """The package guide's worked example: the smooth sphere as a model, removed afterwards."""
+    registry.models()   # the built-in models first
+    model = registry.register(registry.Model("hertz", "hertz: the smooth sphere, eq. 9", hertz, "eq. 9"))
+    yield model
+    del registry.MODELS["hertz"]
+
+
+def test_registry_order():
+    assert list(registry.models()) == ["eq16_paper", "eq16_fitted", "eq16_law", "contact_scale", "greenwood_tripp",
+                                       "mdr", "persson"], f"models: {list(registry.models())}"
+
+
+def test_second_registration_of_a_name_is_an_error():
+    with pytest.raises(ValueError, match="eq16_paper"):
+        registry.register(registry.Model("eq16_paper", "again", hertz))
+
+
+def test_generated_scorecard_scores_a_registered_model(hertz_model):
+    table, _ = scorecard.scorecard(_groups(np.ones(4)), pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    row = table[table["model"] == "hertz"]
+    assert len(row) == 1, f"models scored: {sorted(set(table['model']))}"
+
+
+def test_registered_model_deviation_is_its_closed_form(hertz_model):
+    """The ensemble is eq. 16 (fitted ζ); the row's largest deviation is that of eq. 9 from it."""
+    table, _ = scorecard.scorecard(_groups(np.ones(4)), pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    k16 = paper.stiffness_from_force(FORCE, radius=0.5, hurst=HURST, h_rms=9e-3, length=1.0, e_star=1.0, zeta=ZETA)
+    resolved = FORCE >= 1e-5
+    expected = np.abs(paper.hertz_stiffness(FORCE, radius=0.5, e_star=1.0)[resolved] / k16[resolved] - 1).max()
+    got = float(table[table["model"] == "hertz"]["max_rel_dev"].iloc[0])
+    assert got == pytest.approx(expected, rel=1e-12), f"max_rel_dev {got} against {expected}"
+
+
+def test_lead_paragraph_names_a_registered_model(hertz_model):
+    assert "hertz: the smooth sphere, eq. 9" in scorecard.scorecard_lead(), "lead paragraph"
+
+
+def test_measured_scorecard_predicts_a_registered_model(hertz_model):
+    h = self_affine(64, hurst=0.8, h_rms=0.009, length=1.0, seed=1)
+    fit = fit_spectrum(h, length=1.0, window=None, detrend="mean", resamples=10)
+    out = predict(FORCE, fit, radius=0.5, e_star=1.0, length=1.0, n=64)
+    np.testing.assert_allclose(out["hertz"], paper.hertz_stiffness(FORCE, radius=0.5, e_star=1.0), rtol=1e-14,
+                               err_msg="measured prediction of the registered model")
+
+
+def test_model_that_does_not_apply_is_left_out(hertz_model):
+    h = self_affine(64, hurst=0.8, h_rms=0.009, length=1.0, seed=1)
+    fit = fit_spectrum(h, length=1.0, window=None, detrend="mean", resamples=10)
+    out = predict(FORCE, fit, radius=math.inf, e_star=1.0, length=1.0, n=64)
+    assert "hertz" not in out, f"a flat surface got {sorted(out)}"
