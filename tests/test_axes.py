@@ -15,7 +15,7 @@ import pytest
 import yaml
 
 from roughcontact import errors
-from roughcontact.study import claims
+from roughcontact.study.claims.registry import off_theory
 from roughcontact.study import config
 from roughcontact.study import io as study_io
 from roughcontact.study import runs
@@ -110,8 +110,8 @@ def test_off_theory_reason_names_the_claim_of_each_axis(axis, value, claim):
     """A combination off the paper's setting in one optional axis is untested by eqs. 11-17,
     and the reason names the claim that tests that axis; the paper's setting has no reason."""
     paper = {"rolloff": 1.0, "cutoff": 0.0, "hardness": math.inf, "exponent": 2.0}
-    assert claims._off_theory(paper, 1.0) == "", "the paper's setting is judged"
-    reason = claims._off_theory({**paper, axis: value}, 1.0)
+    assert off_theory(paper, 1.0) == "", "the paper's setting is judged"
+    reason = off_theory({**paper, axis: value}, 1.0)
     assert reason.startswith("untested: ") and f"{axis} = {value:g} (claim {claim}" in reason, reason
 
 

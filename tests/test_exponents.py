@@ -7,7 +7,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from roughcontact.study import claims, exponents
+from roughcontact.study import exponents
+from roughcontact.study.claims.exponents import exponent_rows
 from roughcontact.study.statistics import bootstrap_indices
 
 FORCE = np.geomspace(1e-6, 1e-2, 13)
@@ -67,25 +68,25 @@ def _claim(rows, letter):
 
 
 def test_claim_l_is_consistent_where_an_interval_reaches_one():
-    rows = claims._exponent_claims(_table([0.6, 0.9, 0.97, 0.8], 0.05), ZETA, _cfg([None, 0.25]))
+    rows = exponent_rows(_table([0.6, 0.9, 0.97, 0.8], 0.05), ZETA, _cfg([None, 0.25]))
     row = _claim(rows, "l")
     assert row["verdict"] == "consistent", row
     assert row["measured"] == pytest.approx(0.97), "the largest local exponent"
 
 
 def test_claim_l_differs_where_every_interval_stays_below_one():
-    row = _claim(claims._exponent_claims(_table([0.6, 0.7, 0.65], 0.05), ZETA, _cfg([None, 0.25])), "l")
+    row = _claim(exponent_rows(_table([0.6, 0.7, 0.65], 0.05), ZETA, _cfg([None, 0.25])), "l")
     assert row["verdict"] == "differs", row
 
 
 def test_claim_l_is_untested_without_a_rolloff():
-    row = _claim(claims._exponent_claims(_table([0.6], 0.05), ZETA, _cfg([None])), "l")
+    row = _claim(exponent_rows(_table([0.6], 0.05), ZETA, _cfg([None])), "l")
     assert row["verdict"] == "untested" and "roll-off" in row["reason"], row
 
 
 def test_claim_m_compares_the_free_exponent_with_the_prl_law():
     """0.77 − 0.26 H at H = 0.8 is 0.562, inside (0.55, 0.57)."""
-    row = _claim(claims._exponent_claims(pd.DataFrame(), ZETA, _cfg([None])), "m")
+    row = _claim(exponent_rows(pd.DataFrame(), ZETA, _cfg([None])), "m")
     assert row["paper_value"] == pytest.approx(0.562, abs=1e-12), "PRL 2012 interpolated at H = 0.8"
     assert row["verdict"] == "consistent", row
 

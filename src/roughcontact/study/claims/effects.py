@@ -25,10 +25,12 @@ import math
 
 import numpy as np
 
-from . import runs
-from .statistics import bootstrap_indices, interval, verdict, verdict_bound
+from .. import runs
+from ..ensemble import resolved
+from ..statistics import bootstrap_indices, interval, verdict, verdict_bound
+from .registry import Claim, register, row
 
-__all__ = ["effect_claims", "INSENSITIVE_TOLERANCE"]
+__all__ = ["effect_rows", "INSENSITIVE_TOLERANCE"]
 
 #: k is "unchanged" by a cutoff or a hardness if no resolved load moves by more than this (relative)
 INSENSITIVE_TOLERANCE = 0.10
@@ -48,31 +50,29 @@ def _untested(axis, why, paper):
             "paper": paper, "verdict_text": f"untested: {why}"}
 
 
-def effect_claims(ds, cross, cfg: dict) -> list[dict]:
-    """Rows of claims (i)–(k) from the sphere Dataset *ds* (merged runs) and the
-    crossover table *cross* (for the low-force window); keyword dicts of
-    :func:`roughcontact.study.claims._claim`."""
+def effect_rows(ds, cross, cfg: dict, axis: str) -> list[dict]:
+    """Rows of the claim of one optional *axis* (cutoff: (i), rolloff: (j), hardness: (k)) from
+    the sphere Dataset *ds* (merged runs) and the crossover table *cross* (for the low-force
+    window); keyword dicts of :func:`roughcontact.study.claims.registry.row`."""
     L, E = cfg["grid"]["length"], cfg["e_star"]
     fit = cfg["fit"]
     level = float(fit["zeta"]["confidence"])
     indices = bootstrap_indices(ds.sizes["seed"], int(fit["zeta"]["bootstrap"]))
     force = ds["force"].values / (E * L**2)
     rows = []
-    for axis in ("cutoff", "rolloff", "hardness"):
-        paper = 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
-        baseline = runs.coordinate(axis, None, L)
-        values = ds[axis].values.tolist()
-        if baseline not in values or len(values) < 2:
-            rows.append(_untested(axis, f"no {axis} swept" if values == [baseline]
-                                  else f"no run without a {axis} to compare with", paper))
+    paper = 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
+    baseline = runs.coordinate(axis, None, L)
+    values = ds[axis].values.tolist()
+    if baseline not in values or len(values) < 2:
+        return [_untested(axis, f"no {axis} swept" if values == [baseline]
+                          else f"no run without a {axis} to compare with", paper)]
+    others = [d for d in ds["stiffness"].dims if d not in ("seed", "force", axis)]
+    for value in values:
+        if value == baseline:
             continue
-        others = [d for d in ds["stiffness"].dims if d not in ("seed", "force", axis)]
-        for value in values:
-            if value == baseline:
-                continue
-            for position in itertools.product(*(ds[d].values.tolist() for d in others)):
-                pick = dict(zip(others, position))
-                rows += _pair(axis, value, baseline, ds.sel(pick), pick, force, cross, cfg, indices, level, paper)
+        for position in itertools.product(*(ds[d].values.tolist() for d in others)):
+            pick = dict(zip(others, position))
+            rows += _pair(axis, value, baseline, ds.sel(pick), pick, force, cross, cfg, indices, level, paper)
     return rows
 
 
@@ -80,19 +80,20 @@ def _pair(axis, value, baseline, ds, pick, force, cross, cfg, indices, level, pa
     """The rows of one (axis value, combination) against the baseline."""
     claim, statement = _STATEMENTS[axis]
     with_, without = ds.sel({axis: value}), ds.sel({axis: baseline})
-    resolved = ((with_["contact_cells"].mean("seed") >= cfg["fit"]["zeta"]["min_cells"])
-                & (without["contact_cells"].mean("seed") >= cfg["fit"]["zeta"]["min_cells"])).values
+    min_cells = cfg["fit"]["zeta"]["min_cells"]
+    both = (resolved(with_["contact_cells"].mean("seed"), min_cells)
+            & resolved(without["contact_cells"].mean("seed"), min_cells)).values
     where = {**pick, axis: value}
     sweep = (f"sphere H = {pick['hurst']:g}, R = {pick['radius']:g}, h_rms = {pick['h_rms']:g}, {axis} = {value:g} "
              f"against {axis} = {baseline:g}, {ds.sizes['seed']} paired seeds, n = {cfg['grid']['n']}")
     if axis == "cutoff":
         # the apparent contact radius of the run without the cutoff, from k = 2 E* a (flat punch)
         radius = without["stiffness"].mean("seed").values / (2 * cfg["e_star"])
-        mask = resolved & (radius > value)
+        mask = both & (radius > value)
         names = [("stiffness", "")]
         loads = f"{int(mask.sum())} resolved loads with contact radius > cutoff {value:g}"
     elif axis == "hardness":
-        mask = resolved
+        mask = both
         names = [("stiffness", " (unloading stiffness)"), ("loading_stiffness", " (loading tangent)")]
         loads = f"{int(mask.sum())} resolved loads"
     else:
@@ -102,7 +103,7 @@ def _pair(axis, value, baseline, ds, pick, force, cross, cfg, indices, level, pa
         f_tr = match["Ftr_pred_fit"].iloc[0] if len(match) else math.nan
         if not math.isfinite(f_tr) and len(match):
             f_tr = match["Ftr_pred_estimate"].iloc[0]
-        mask = resolved & (force <= cfg["fit"]["slopes"]["low_max_ratio"] * f_tr)
+        mask = both & (force <= cfg["fit"]["slopes"]["low_max_ratio"] * f_tr)
         names = [("stiffness", "")]
         loads = f"{int(mask.sum())} resolved loads with F <= {cfg['fit']['slopes']['low_max_ratio']:g} F_tr"
     rows = []
@@ -131,3 +132,16 @@ def _pair(axis, value, baseline, ds, pick, force, cross, cfg, indices, level, pa
                      "note": ("measured: change of the low-force slope d ln k/d ln F" if axis == "rolloff"
                               else "measured: max |k_with/k_without - 1|"), **where})
     return rows
+
+
+def _claim_of(axis: str):
+    """The claim of one optional axis: its rows as rows of the table (:func:`effect_rows`)."""
+    def rows(inputs):
+        if "sphere" not in inputs.groups:
+            return []
+        return [row(**r) for r in effect_rows(inputs.groups["sphere"], inputs.cross, inputs.config, axis)]
+    return rows
+
+
+for _axis in ("cutoff", "rolloff", "hardness"):
+    register(Claim(_STATEMENTS[_axis][0], _STATEMENTS[_axis][1], _claim_of(_axis), needs=("groups",)))

@@ -1,0 +1,116 @@
+"""The paper's claims as a table (``claims.csv``): one row per quantitative claim
+and per combination it is tested on, with the measured value, its 95 %
+interval, the paper's value, the verdict (:mod:`.verdicts`) and the sweep and
+loads it rests on. Rows (a)–(f) of a combination with a cutoff, a roll-off or a
+hardness keep their measured values but say ``untested``: the paper's
+equations are for an elastic, purely self-affine surface, and claims (i)–(k)
+test those axes against the same seeds without them.
+
+Claims (Pohrt & Popov 2013): (a) eq. 16 describes the BEM ensemble; (b) the
+crossover force of eq. 17; (c) ζ(H) ≈ 1.7/(H+1) (eq. 13); (d) the low-force
+slope 1/(H+1) and (e) the high-force slope 1/3 (with the Hertz prefactor);
+(f) below F_tr roughness lowers k against the smooth sphere (Conclusions);
+(g) the scaling of F_tr with R and h_rms implied by eq. 17; (h) eq. 18's λ
+for H → 0. Beyond the paraboloid (Conclusions): (a), (b), (d)–(f) per body of
+revolution and for 1 < H < 2; (i) a short-wavelength cutoff leaves k unchanged
+where the contact is larger than the cutoff; (j) a roll-off's effect on the
+low-force slope; (k) elasticity on all scales is not crucial (a hardness cap
+leaves the unloading and the loading stiffness unchanged); (l), (m) the local
+exponents of flat surfaces against Pastewka et al. (2013) and Pohrt & Popov (2012).
+
+Each claim is one :class:`Claim` (its letter, statement, the inputs it needs and the function
+that gives its rows with value, interval, paper value and verdict), registered by a module of
+this package: :mod:`.paper` (a)-(h), :mod:`.zeta_law` (c'), :mod:`.effects` (i)-(k),
+:mod:`.exponents` (l), (m). :func:`claims_table` loops over the registry; a new claim is one
+object in one module (worked example in the package guide, ``docs/guide/package.md``).
+"""
+from __future__ import annotations
+
+import importlib
+import logging
+import pkgutil
+from pathlib import Path
+
+from ..tables import write_html_table
+from .registry import CLAIMS, Claim, ClaimInputs, register, row
+
+__all__ = ["Claim", "ClaimInputs", "CLAIMS", "register", "row", "claims", "claims_table", "run_claims", "CLAIMS_LEAD",
+           "EQ16_TOLERANCE", "prl2012_exponent"]
+
+log = logging.getLogger(__name__)
+
+#: the modules of the claims of Pohrt & Popov (2013) and the studies that extend them, in the order
+#: they are imported (each registers its claims); further modules of this package follow by name
+_ORDER = ("paper", "zeta_law", "effects", "exponents")
+_loaded: list = []
+
+
+def claims() -> dict[str, Claim]:
+    """``{letter: Claim}`` of every registered claim (every module of this package imported once)."""
+    if not _loaded:
+        found = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name != "registry")
+        for name in sorted(found, key=lambda m: (_ORDER.index(m) if m in _ORDER else len(_ORDER), m)):
+            importlib.import_module(f"{__name__}.{name}")
+        _loaded.append(True)
+    return dict(CLAIMS)
+
+
+def __getattr__(name: str):
+    """Constants of the claim modules, where they are defined: ``EQ16_TOLERANCE`` and
+    ``prl2012_exponent`` (claims (a), (m)); ``EFFECT_CLAIM`` and ``AXIS_COLUMNS`` (from the axis
+    registry)."""
+    if name in ("EQ16_TOLERANCE", "LAMBDA_EQ17", "LAMBDA_GT"):
+        from . import paper
+        return getattr(paper, name)
+    if name == "prl2012_exponent":
+        from .exponents import prl2012_exponent
+        return prl2012_exponent
+    if name in ("EFFECT_CLAIM", "AXIS_COLUMNS"):
+        from . import registry
+        return getattr(registry, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, exponents=None,
+                 zeta_replicates=None):
+    """``claims.csv``: one row per quantitative claim (every registered :class:`Claim` whose
+    inputs are given) and per combination it is tested on, with the measured value, its 95 %
+    interval, the paper's value, the verdict and the sweep and loads it rests on; ordered by
+    the claim's letter, then as each claim gives its rows."""
+    import pandas as pd
+
+    inputs = ClaimInputs(cross=cross, replicates=reps, zeta=zeta_df, config=cfg, groups=groups,
+                         exponents=exponents, zeta_replicates=zeta_replicates)
+    rows = []
+    for claim in claims().values():
+        if all(getattr(inputs, need) is not None for need in claim.needs):
+            rows += claim.rows(inputs)
+    return pd.DataFrame(rows).sort_values("claim", kind="stable", ignore_index=True)
+
+
+#: the lead paragraph of the claims page of the report
+CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
+               "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
+               "paper's value and the verdict: consistent (the paper's value lies inside the interval, or for a "
+               "bound the interval lies on the claimed side), differs (it is excluded) or untested (the sweep "
+               "cannot decide it; the reason says why). claims.csv holds every digit.")
+
+
+def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html):
+    """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
+    runs and the local exponents -> claims.csv and the same table as an HTML page for the report
+    (:mod:`roughcontact.study.tables`)."""
+    import pandas as pd
+    import xarray as xr
+
+    from ..io import read_groups, write_csv
+
+    cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
+    with xr.open_dataset(crossover_nc, engine="netcdf4") as reps, xr.open_dataset(zeta_nc, engine="netcdf4") as zds:
+        exponents = pd.read_csv(exponents_csv) if Path(exponents_csv).stat().st_size > 1 else pd.DataFrame()
+        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, read_groups(stiffness_nc), exponents,
+                             zds["zeta_replicates"].load())
+    write_csv(table, out_csv)
+    write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
+                     first=("claim", "statement", "verdict", "measured", "ci_low", "ci_high", "paper_value", "reason"))
+    log.info("claims:\n%s", table.to_string())

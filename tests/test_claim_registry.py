@@ -1,0 +1,88 @@
+"""A claim registered as one object (roughcontact.study.claims) gets its rows in the claims
+table; the registry holds the claims (a)-(m) of the study."""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+from test_scorecard import CFG, _groups
+
+from roughcontact.study import claims
+from roughcontact.study.claims import Claim, register, row
+from roughcontact.study.statistics import bootstrap_indices, interval, verdict_bound
+
+
+def stiffening(inputs):
+    """Claim (x): the ensemble-mean stiffness rises with the load (dk/dF > 0) on every sphere
+    combination; measured: the smallest relative rise of k between neighbouring loads, with its
+    bootstrap-over-seeds interval; consistent when the whole interval lies above 0."""
+    ds = inputs.groups["sphere"]
+    k = ds["stiffness"].squeeze().transpose("seed", "force").values
+    fit = inputs.config["fit"]["zeta"]
+    rise = lambda mean: (np.diff(mean, axis=-1) / mean[..., :-1]).min(-1)  # noqa: E731
+    samples = rise(k[bootstrap_indices(k.shape[0], int(fit["bootstrap"]))].mean(1))
+    low, high = interval(samples, float(fit["confidence"]))
+    return [row("x", "k rises with F at every load", float(rise(k.mean(0))), low, high, 0.0,
+                verdict_bound(0.0, low, high, side="above"), hurst=float(ds["hurst"][0]))]
+
+
+@pytest.fixture
+def stiffening_claim():
+    """The package guide's worked example: one claim object, removed afterwards."""
+    claims.claims()   # the built-in claims first
+    claim = register(Claim("x", "the ensemble-mean stiffness rises with the load", stiffening, needs=("groups",)))
+    yield claim
+    del claims.CLAIMS["x"]
+
+
+def _table(groups):
+    reps = xr.Dataset()
+    zeta = pd.DataFrame(columns=["hurst", "zeta", "zeta_ci_low", "zeta_ci_high", "zeta_estimate", "source",
+                                 "n_seeds", "n_points", "force_min", "force_max"])
+    cfg = {**CFG, "hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": list(range(4)), "rolloff": [None],
+           "cutoff": [None], "hardness": [None], "exponent": [2.0],
+           "fit": {**CFG["fit"], "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 3.0}}}
+    return claims.claims_table(pd.DataFrame(), reps, zeta, cfg, groups)
+
+
+def test_registry_holds_the_claims_of_the_study():
+    assert list(claims.claims()) == ["a", "b", "c", "d", "e", "f", "g", "h", "c'", "i", "j", "k", "l", "m"], \
+        f"claims: {list(claims.claims())}"
+
+
+def test_registered_claim_has_its_row(stiffening_claim):
+    table = _table(_groups(np.array([1.0, 1.02, 0.98, 1.01])))
+    rows = table[table["claim"] == "x"]
+    assert len(rows) == 1, f"claims in the table: {sorted(set(table['claim']))}"
+
+
+def test_registered_claim_verdict_follows_its_rule(stiffening_claim):
+    """The ensemble is eq. 16 times a constant per seed: k rises at every load, interval above 0."""
+    table = _table(_groups(np.array([1.0, 1.02, 0.98, 1.01])))
+    assert table[table["claim"] == "x"]["verdict"].iloc[0] == "consistent", table[table["claim"] == "x"].to_dict()
+
+
+def test_registered_claim_value_is_its_estimate(stiffening_claim):
+    groups = _groups(np.ones(4))
+    k = groups["sphere"]["stiffness"].squeeze().values[0]
+    expected = (np.diff(k) / k[:-1]).min()
+    got = float(_table(groups).query("claim == 'x'")["measured"].iloc[0])
+    assert got == pytest.approx(expected, rel=1e-12), f"measured {got}, expected {expected}"
+
+
+def test_claim_without_its_inputs_has_no_row(stiffening_claim):
+    table = _table(None)
+    assert "x" not in set(table["claim"]), "a claim ran without the inputs it needs"
+
+
+def test_second_claim_of_a_letter_is_an_error():
+    claims.claims()
+    with pytest.raises(ValueError, match="'a'"):
+        register(Claim("a", "again", stiffening))
+
+
+def test_rows_are_ordered_by_letter(stiffening_claim):
+    letters = _table(_groups(np.ones(4)))["claim"].tolist()
+    assert letters == sorted(letters), f"row order: {letters}"
+
