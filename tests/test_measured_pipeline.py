@@ -94,7 +94,7 @@ def test_config_resolves_paths_against_its_directory(tmp_path):
 
 
 def test_config_directory_is_that_of_the_last_file_naming_inputs(tmp_path):
-    from roughcontact.study.measured_config import config_directory
+    from roughcontact.study.measured.config import config_directory
 
     for sub, text in (("a", "topography: [x.nc]\n"), ("b", "spectrum: [p.csv]\n"), ("c", "hurst: [0.5]\n")):
         (tmp_path / sub).mkdir()

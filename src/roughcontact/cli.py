@@ -20,7 +20,7 @@ import sys
 from .errors import ConfigError, IndentError
 from .study import config, indent, runs, schema
 from .study.axes import AXES
-from .study.measured_config import LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_pascals
+from .study.measured.config import LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_pascals
 from .study.settings import JobSettings, job_settings
 
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)

@@ -16,17 +16,17 @@ os.environ.update(
 from roughcontact.errors import ConfigError  # noqa: E402  (numpy only)
 from roughcontact.study import (
     config as rc_config,
-    measured_config,
     runs as study_runs,
     schema,
     settings as study_settings,
 )  # noqa: E402
+from roughcontact.study.measured import config as measured_inputs  # noqa: E402
 
 try:
     # one line naming the key and what is allowed, before any job starts; the paths of
     # topography and spectrum are relative to the last config file that names them
     C = rc_config.resolve_config(
-        config, base_dir=measured_config.config_directory(workflow.configfiles)
+        config, base_dir=measured_inputs.config_directory(workflow.configfiles)
     )
 except ConfigError as err:
     raise SystemExit(rc_config.error_line(err))

@@ -38,7 +38,7 @@ from ..errors import ConfigError
 from ..models import paper
 from .axes import AXES
 from .limits import full_contact_slope
-from .measured_config import resolve_inputs
+from .measured.config import resolve_inputs
 from .runs import kind_of
 from .schema import (
     check_finite,
@@ -93,7 +93,7 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
     schema of the checkout).  *base_dir*: the directory of the config file, against which
     the relative paths of ``topography`` and ``spectrum`` are resolved (default: the current
     directory); the resolved config holds absolute paths
-    (:func:`roughcontact.study.measured_config.resolve_inputs`).
+    (:func:`roughcontact.study.measured.config.resolve_inputs`).
     """
     import jsonschema
 

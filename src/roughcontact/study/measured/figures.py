@@ -3,7 +3,7 @@
 What the ``measured_figures`` rule draws from the files of
 :func:`roughcontact.study.measured.prepare_surface`,
 :func:`roughcontact.study.measured.merge_surface` and
-:func:`roughcontact.study.measured_spectrum.run_spectrum`. matplotlib and xarray are imported
+:func:`roughcontact.study.measured.spectrum.run_spectrum`. matplotlib and xarray are imported
 inside.
 """
 from __future__ import annotations
@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from .plotting import pyplot, save_png
+from ..plotting import pyplot, save_png
 
 __all__ = ["make_figures", "make_spectrum_figure", "draw_heights", "draw_spectrum", "draw_stiffness"]
 
@@ -23,11 +23,11 @@ LINE_STYLES = (":", "--", (0, (3, 1, 1, 1, 1, 1)), (0, (5, 1)), (0, (5, 1, 1, 1)
 
 def draw_heights(ax, surface_file, name: str):
     """The measured heights ``h = −z`` (nm) of the scan's square on *ax*, tiles outlined."""
-    from .measured import read_surface
+    from .jobs import read_surface
 
     heights, length, attrs = read_surface(surface_file)
     unit = attrs["units_length"]
-    from .measured_config import to_metres
+    from .config import to_metres
 
     nm = to_metres(unit) / 1e-9
     image = ax.imshow(-heights.T * nm, origin="lower", extent=(0, length, 0, length), cmap="viridis")
@@ -45,7 +45,7 @@ def draw_heights(ax, surface_file, name: str):
 
 def draw_spectrum(ax, spectrum_file, unit: str):
     """The radially averaged spectrum, the fit's bins and the fitted power law over its band."""
-    from .io import read_groups
+    from ..io import read_groups
 
     ds = read_groups(spectrum_file)["spectrum"]
     a = ds.attrs
@@ -64,7 +64,7 @@ def draw_spectrum(ax, spectrum_file, unit: str):
 def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
     """k(F) (N, N/m) of every radius: the mean over the tiles, its band, Hertz for spheres, and
     the models' predictions of *spectrum_file* (if given)."""
-    from .io import read_groups
+    from ..io import read_groups
 
     groups = read_groups(merged_file)
     models = read_groups(spectrum_file) if spectrum_file is not None else {}
@@ -93,7 +93,7 @@ def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
                         ax.loglog(pred["force"].values, k, linestyle=LINE_STYLES[i % len(LINE_STYLES)], color=color,
                                   lw=0.9, label=f"{model}" + (f", R = {radius:g}" if kind == "sphere" else ", flat"))
             if kind == "sphere":
-                from .measured_config import to_metres, to_pascals
+                from .config import to_metres, to_pascals
 
                 e_pa = float(cfg["e_star"]) * to_pascals(cfg["units"]["e_star"])
                 r_m = float(radius) * to_metres(cfg["units"]["length"])

@@ -29,10 +29,10 @@ import math
 
 import numpy as np
 
-from .._validate import check_finite_positive, check_grid_size, check_radius
-from ..models import paper
-from ..models import scorecard as registry
-from ..surfaces.spectrum_fit import SpectrumFit
+from ..._validate import check_finite_positive, check_grid_size, check_radius
+from ...models import paper
+from ...models import scorecard as registry
+from ...surfaces.spectrum_fit import SpectrumFit
 
 __all__ = ["crossover_force", "predict", "surface_of"]
 

@@ -36,15 +36,15 @@ import os
 
 import numpy as np
 
-from .. import bem, surfaces
-from ..errors import IndentError, InputFileError
-from ..surfaces.bodies import paraboloid
-from . import provenance, runfile, statistics
-from .measured_config import LENGTH_UNITS, plain_unit, to_metres, to_pascals
-from .runs import force_grid, kind_of
+from ... import bem, surfaces
+from ...errors import IndentError, InputFileError
+from ...surfaces.bodies import paraboloid
+from .. import provenance, runfile, statistics
+from .config import LENGTH_UNITS, plain_unit, to_metres, to_pascals
+from ..runs import force_grid, kind_of
 
 __all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job",
-           "merge_surface", "sha256"]
+           "merge_surface", "run_order", "sha256"]
 
 logger = logging.getLogger(__name__)
 
@@ -239,7 +239,7 @@ def run_job(job: MeasuredJob, source_file, output) -> dict:
     Raises :class:`~roughcontact.errors.IndentError` when a body's contact reaches the outer
     ring of cells, or a solve does not converge.
     """
-    from .indent import PathSettings, solve_load_path
+    from ..indent import PathSettings, solve_load_path
 
     z, length, periodic = job_heights(job, source_file)
     e = job.e_star
@@ -302,7 +302,7 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
     """
     import xarray as xr
 
-    from .io import write_groups
+    from ..io import write_groups
 
     runs = [xr.load_dataset(p, engine="netcdf4") for p in run_files]
     order = run_order(cfg, source, name, len(runs) // max(1, len(cfg["radius"])))

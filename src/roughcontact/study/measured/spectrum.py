@@ -3,7 +3,7 @@
 What the ``measured_spectrum`` rule runs per scan: :func:`roughcontact.surfaces.spectrum_fit.fit_spectrum`
 over the scan's tiles (Hann window, each tile levelled; intervals a bootstrap over the tiles;
 band ``fit.spectrum.band``, wavelengths in ``units.length``, default L/2 to 8 cells of a tile),
-and :func:`roughcontact.study.measured_models.predict` at the forces of the measured runs, with
+and :func:`roughcontact.study.measured.models.predict` at the forces of the measured runs, with
 the measured rms height of the tiles (``fit.h_rms``: a measured scan rolls off, so the power
 law extrapolated to the tile's side would overestimate it) and the tile's side and cells.
 
@@ -20,10 +20,10 @@ import math
 
 import numpy as np
 
-from ..models.scorecard import models
-from . import provenance
-from .measured_config import to_metres, to_pascals
-from .runs import force_grid, kind_of
+from ...models.scorecard import models
+from .. import provenance
+from .config import to_metres, to_pascals
+from ..runs import force_grid, kind_of
 
 __all__ = ["fit_scan", "run_spectrum"]
 
@@ -32,7 +32,7 @@ logger = logging.getLogger(__name__)
 
 
 def _tiles(surface_file):
-    from .measured import read_surface
+    from .jobs import read_surface
 
     heights, length, attrs = read_surface(surface_file)
     n = heights.shape[0]
@@ -44,7 +44,7 @@ def _tiles(surface_file):
 
 def fit_scan(cfg: dict, surface_file):
     """``(fit, tile_length, tile)``: the :class:`SpectrumFit` of the tiles of a surface file."""
-    from ..surfaces.spectrum_fit import fit_spectrum
+    from ...surfaces.spectrum_fit import fit_spectrum
 
     blocks, length, tile, _ = _tiles(surface_file)
     band = cfg["fit"]["spectrum"]["band"]
@@ -71,8 +71,8 @@ def run_spectrum(cfg: dict, name: str, surface_file, out_csv, out_nc) -> None:
     import pandas as pd
     import xarray as xr
 
-    from . import measured_models
-    from .merge import write_csv, write_groups
+    from . import models as measured_models
+    from ..io import write_csv, write_groups
 
     fit, length, tile = fit_scan(cfg, surface_file)
     unit = cfg["units"]["length"]

@@ -16,8 +16,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..errors import ConfigError, InputFileError
-from ..surfaces.psd import read_psd
+from ...errors import ConfigError, InputFileError
+from ...surfaces.psd import read_psd
 
 __all__ = ["LENGTH_UNITS", "PRESSURE_UNITS", "config_directory", "has_measured", "resolve_inputs",
            "topography_names", "spectrum_names", "plain_unit", "to_metres", "to_pascals"]
@@ -102,7 +102,7 @@ def _entries(cfg: dict, key: str, defaults: dict, base: Path) -> list[dict]:
 def _check_scans(cfg: dict) -> None:
     """Read every scan's height channel (:func:`roughcontact.surfaces.measured.check_topography`),
     so that a truncated, damaged or misnamed file stops the configuration, not a job."""
-    from ..surfaces.measured import check_topography
+    from ...surfaces.measured import check_topography
 
     study_unit = (cfg.get("units") or {}).get("length")
     for i, entry in enumerate(cfg["topography"]):
