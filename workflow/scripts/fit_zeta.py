@@ -1,6 +1,6 @@
 """Snakemake `fit_zeta` job: results/stiffness.nc -> results/zeta.csv, results/zeta.nc (eq. 11)."""
 from roughcontact.study.logs import log_to
-from roughcontact.study.zeta import run_fit_zeta
+from roughcontact.study.zeta.fit import run_fit_zeta
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -32,7 +32,7 @@ from scipy.optimize import least_squares
 from ..models import superposition
 from .ensemble import resolved
 from .io import read_groups
-from .zeta import paper_setting
+from .zeta.fit import paper_setting
 
 __all__ = ["Calibration", "ensemble_points", "calibrate", "main"]
 

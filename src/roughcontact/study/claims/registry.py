@@ -140,7 +140,7 @@ def is_paper_setting(frame, length):
 
 def flat_zeta_rows(zeta_df):
     """Rows of zeta.csv fitted on flat runs at the paper's setting (not on a substituted roll-off,
-    cutoff or hardness: :func:`roughcontact.study.zeta.paper_setting` says so in the source)."""
+    cutoff or hardness: :func:`roughcontact.study.zeta.fit.paper_setting` says so in the source)."""
     if not len(zeta_df):
         return zeta_df
     return zeta_df[zeta_df["source"].astype(str) == "flat"]

@@ -1,4 +1,4 @@
-"""Claim (c'): a ζ(H) law whose form the data choose (:mod:`roughcontact.study.zeta_law`) beside eq. 13."""
+"""Claim (c'): a ζ(H) law whose form the data choose (:mod:`roughcontact.study.zeta.law`) beside eq. 13."""
 from __future__ import annotations
 
 import math
@@ -18,7 +18,7 @@ def _c_prime(inputs):
     eq. 13 has that form, and one row for the law's largest deviation from the measured ζ(H)
     against eq. 13's."""
     from ...models.zeta_law import LAWS
-    from ..zeta_law import MIN_HURST, fit_zeta_law
+    from ..zeta.law import MIN_HURST, fit_zeta_law
 
     cfg = inputs.config
     n = cfg["grid"]["n"]

@@ -10,11 +10,11 @@ import math
 
 import numpy as np
 
-from ..models import paper
-from . import provenance, runs
-from .ensemble import resolved
-from .io import read_groups, write_csv, write_netcdf
-from .statistics import bootstrap_indices
+from ...models import paper
+from .. import provenance, runs
+from ..ensemble import resolved
+from ..io import read_groups, write_csv, write_netcdf
+from ..statistics import bootstrap_indices
 
 __all__ = ["paper_setting", "fit_zeta", "run_fit_zeta"]
 

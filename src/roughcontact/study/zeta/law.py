@@ -23,9 +23,9 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.stats import norm
 
-from ..models import paper
-from ..models.zeta_law import LAWS
-from .statistics import interval
+from ...models import paper
+from ...models.zeta_law import LAWS
+from ..statistics import interval
 
 __all__ = ["MIN_HURST", "ZetaLaw", "fit_law", "fit_zeta_law"]
 
