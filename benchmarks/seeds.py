@@ -30,7 +30,7 @@ import numpy as np
 import pandas as pd
 
 from roughcontact.study import config
-from roughcontact.study import merge
+from roughcontact.study import io as study_io
 from roughcontact.study import verdicts
 
 COLUMNS = ["Ftr_measured", "Ftr_ci_low", "Ftr_ci_high", "Ftr_pred_fit", "verdict_fit",
@@ -59,7 +59,7 @@ def main() -> None:
     if not stiffness.exists():
         raise SystemExit(f"{stiffness} not found: run the sweep first, e.g. snakemake --cores 2 "
                          f"--configfile {args.configfile} --directory {args.directory}")
-    groups = merge.read_groups(stiffness)
+    groups = study_io.read_groups(stiffness)
     if "sphere" not in groups:
         raise SystemExit(f"{stiffness} holds no sphere runs: the crossover needs spheres")
     zeta = pd.read_csv(args.directory / "results" / "zeta.csv")

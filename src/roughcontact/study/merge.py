@@ -14,7 +14,7 @@ import numpy as np
 from ..errors import MergeError
 from . import provenance, runfile, runs
 from .ensemble import ensemble
-from .io import read_groups, read_run, write_csv, write_groups, write_netcdf  # noqa: F401  (until every caller imports io)
+from .io import read_run, write_groups
 from .settings import job_settings
 
 __all__ = ["merge_runs", "run_merge"]

@@ -153,7 +153,7 @@ def run_models(cfg, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures):
     :func:`roughcontact.study.runs.sphere_names`)."""
     import pandas as pd
 
-    from .merge import read_groups, write_csv, write_groups
+    from .io import read_groups, write_csv, write_groups
 
     table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), cfg)
     attrs = provenance.provenance_attrs(config=cfg, title="model scorecard: k_model/k_BEM - 1 per load",
