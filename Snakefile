@@ -33,6 +33,7 @@ localrules:
     measured_surface,
     measured_merge,
     measured_spectrum,
+    measured_scorecard,
     spectrum_merge,
     measured_figures,
     spectrum_figures,

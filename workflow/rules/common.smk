@@ -82,7 +82,9 @@ def tiles_of(wildcards):
 
 
 def measured_targets():
-    """Every merged file and figure of the measured inputs (empty without them)."""
-    return expand(rules.measured_figures.output.kf, topo=list(TOPOGRAPHY)) + expand(
-        rules.spectrum_figures.output.kf, spec=list(SPECTRUM)
+    """Every merged file, scorecard and figure of the measured inputs (empty without them)."""
+    return (
+        expand(rules.measured_figures.output.kf, topo=list(TOPOGRAPHY))
+        + expand(rules.measured_scorecard.output.html, topo=list(TOPOGRAPHY))
+        + expand(rules.spectrum_figures.output.kf, spec=list(SPECTRUM))
     )

@@ -124,6 +124,29 @@ rule measured_spectrum:
         "../scripts/measured_spectrum.py"
 
 
+# The scorecard of one scan: every model of the registry against the mean over its tiles.
+rule measured_scorecard:
+    input:
+        merged=rules.measured_merge.output.nc,
+        spectrum=rules.measured_spectrum.output.nc,
+    output:
+        csv="results/measured_scorecard/{topo}.csv",
+        html=report(
+            "results/measured_scorecard/{topo}.html",
+            caption="../report/measured_scorecard.rst",
+            category="Measured: {topo}",
+            labels={"table": "model scorecard"},
+        ),
+    log:
+        "logs/measured_scorecard/{topo}.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/measured_scorecard.py"
+
+
 # The report section of one scan: height map, spectrum with the fit, k(F) with the models.
 rule measured_figures:
     input:

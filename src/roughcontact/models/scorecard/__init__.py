@@ -22,19 +22,25 @@ __all__ = ["MODELS", "Model", "Surface", "register", "models", "predict"]
 _ORDER = ("eq16", "contact_scale", "greenwood_tripp", "mdr", "persson")
 
 
+def _rank(module: str) -> tuple:
+    """Where a module's models stand: :data:`_ORDER`, then the other modules by name."""
+    short = module.rsplit(".", 1)[-1]
+    return (_ORDER.index(short) if short in _ORDER else len(_ORDER), short)
+
+
 def _load() -> None:
     """Import every module of this package once (each registers its models)."""
-    found = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name != "registry")
-    for name in sorted(found, key=lambda m: (_ORDER.index(m) if m in _ORDER else len(_ORDER), m)):
+    for name in sorted((m.name for m in pkgutil.iter_modules(__path__) if m.name != "registry"), key=_rank):
         importlib.import_module(f"{__name__}.{name}")
 
 
 def models() -> dict[str, Model]:
-    """``{name: Model}`` of every registered model, in registration order."""
+    """``{name: Model}`` of every registered model: by module (:data:`_ORDER`, then by name), then
+    in the order each module registers them, whatever imported the modules first."""
     if not _loaded:
         _load()
         _loaded.append(True)
-    return dict(MODELS)
+    return dict(sorted(MODELS.items(), key=lambda item: _rank(getattr(item[1].predict, "__module__", ""))))
 
 
 _loaded: list = []

@@ -46,13 +46,14 @@ _loaded: list = []
 
 
 def claims() -> dict[str, Claim]:
-    """``{letter: Claim}`` of every registered claim (every module of this package imported once)."""
+    """``{letter: Claim}`` of every registered claim in letter order (every module of this package
+    imported once)."""
     if not _loaded:
         found = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name != "registry")
         for name in sorted(found, key=lambda m: (_ORDER.index(m) if m in _ORDER else len(_ORDER), m)):
             importlib.import_module(f"{__name__}.{name}")
         _loaded.append(True)
-    return dict(CLAIMS)
+    return dict(sorted(CLAIMS.items()))
 
 
 def __getattr__(name: str):

@@ -1,0 +1,8 @@
+"""Snakemake `measured_scorecard` job: every model against the tiles of one scan (CSV and report page)."""
+from roughcontact.study.logs import log_to
+from roughcontact.study.measured.scorecard import run_measured_scorecard
+
+snakemake = globals()["snakemake"]
+with log_to(snakemake.log[0]):
+    run_measured_scorecard(snakemake.params.cfg, snakemake.wildcards.topo, snakemake.input.merged,
+                           snakemake.input.spectrum, snakemake.output.csv, snakemake.output.html)
