@@ -140,7 +140,7 @@ def test_unreadable_scan(tmp_path, clean_tmp, capsys):
 def test_edge_message_names_the_flag(scan, tmp_path, clean_tmp, capsys):
     out = tmp_path / "run.nc"
     err = _bad(capsys, _args(scan, out, 20.0, 0, {"from": 1e-3, "to": 0.5, "count": 3}), out)
-    assert "lower --force-to to 0.001 or below" in err, err
+    assert "lower --force-to to 0.001 (F = 0.001024 N) or below" in err, err
 
 
 def test_units_spelled_with_mu(scan):
@@ -156,3 +156,71 @@ def test_measured_is_a_documented_command():
     assert "measured" in cli.COMMANDS
     text = cli.build_parser()._subparsers._group_actions[0].choices["measured"].format_help()
     assert "F/(E* L^2)" in text and "N/m" in text
+
+
+# --- physical units at the command line -------------------------------------------------------
+
+def _run(argv):
+    assert cli.main(argv) == 0, f"roughcontact {' '.join(argv)} failed"
+
+
+def test_forces_in_a_unit_are_the_forces_of_the_file(scan, tmp_path, clean_tmp):
+    """--force-unit mN: the file's force (N) is the given load path (geometric, 1e-3 N per mN)."""
+    out = tmp_path / "run.nc"
+    argv = _args(scan, out, 20.0, 1, {"from": 1e-4, "to": 1e-2, "count": 3}, "--force-unit", "mN")
+    _run(argv)
+    with xr.open_dataset(out) as ds:
+        np.testing.assert_allclose(ds["force"].values, [1e-7, 1e-6, 1e-5], rtol=1e-12, err_msg="force in N")
+
+
+def test_forces_in_a_unit_equal_their_normalised_path(scan, tmp_path, clean_tmp):
+    """The same loads given in µN and as F/(E* L^2), L = 32 cells of 0.1 µm, E* = 100 GPa:
+    F/(E* L^2) = F / (1e11 Pa x (3.2e-6 m)^2), so the same stiffnesses to 1e-12."""
+    unit_force = E_STAR * 1e9 * (32 * PIXEL * 1e-6) ** 2          # N per F/(E* L^2)
+    normalised = {"from": 1e-4, "to": 3e-3, "count": 3}
+    micro = {"from": normalised["from"] * unit_force / 1e-6, "to": normalised["to"] * unit_force / 1e-6, "count": 3}
+    a, b = tmp_path / "a.nc", tmp_path / "b.nc"
+    _run(_args(scan, a, 20.0, 1, normalised))
+    _run(_args(scan, b, 20.0, 1, micro, "--force-unit", "µN"))
+    with xr.open_dataset(a) as one, xr.open_dataset(b) as other:
+        np.testing.assert_allclose(other["stiffness"].values, one["stiffness"].values, rtol=1e-9,
+                                   err_msg="the same loads in two units")
+
+
+def test_e_star_from_two_bodies(scan, tmp_path, clean_tmp):
+    """--e1 210 --nu1 0.3 --e2 210 --nu2 0.3 (GPa): E* = 210/1.82 GPa in the file's provenance."""
+    out = tmp_path / "run.nc"
+    argv = _args(scan, out, 20.0, 1, SPHERE)
+    i = argv.index("--e-star")
+    argv[i:i + 2] = ["--e1", "210", "--nu1", "0.3", "--e2", "210", "--nu2", "0.3"]
+    _run(argv)
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["e_star"] == pytest.approx(210 / 1.82, rel=1e-14), f"E* = {ds.attrs['e_star']}"
+
+
+def test_progress_lines_in_the_force_unit(scan, tmp_path, clean_tmp, capsys):
+    out = tmp_path / "run.nc"
+    argv = [a for a in _args(scan, out, 20.0, 1, {"from": 1e-4, "to": 1e-2, "count": 3}, "--force-unit", "mN")
+            if a != "-q"]
+    _run(argv)
+    err = capsys.readouterr().err
+    assert "F = 0.01 mN" in err and "N/m" in err, f"progress lines: {err!r}"
+
+
+@pytest.mark.parametrize("change, needle", [
+    (["--e1", "210"], "--e-star (e_star) is given twice: --e-star and --e1"),
+    (["--force-unit", "kN"], "--force-unit (force_unit) = 'kN' is not allowed; allowed: one of N, mN, uN, nN"),
+])
+def test_bad_units_exit_2_with_one_line(scan, tmp_path, clean_tmp, capsys, change, needle):
+    out = tmp_path / "out" / "run.nc"
+    err = _bad(capsys, _args(scan, out, 20.0, 1, SPHERE, *change), out)
+    assert needle in err, err
+
+
+def test_poisson_ratio_out_of_range_names_its_flag(scan, tmp_path, clean_tmp, capsys):
+    out = tmp_path / "out" / "run.nc"
+    argv = _args(scan, out, 20.0, 1, SPHERE)
+    i = argv.index("--e-star")
+    argv[i:i + 2] = ["--e1", "210", "--nu1", "0.7"]
+    err = _bad(capsys, argv, out)
+    assert "--nu1 (e_star.nu1) = 0.7 is not allowed" in err, err

@@ -20,7 +20,8 @@ import sys
 from .errors import ConfigError, IndentError
 from .study import config, indent, runs, schema
 from .study.axes import AXES
-from .study.measured.config import LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_pascals
+from .study.measured.config import (FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_newtons,
+                                    to_pascals)
 from .study.settings import JobSettings, job_settings
 
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
@@ -35,6 +36,7 @@ _FLAGS = {
     "forces.sphere.from": "--force-from", "forces.flat.from": "--force-from",
     "forces.sphere.to": "--force-to", "forces.flat.to": "--force-to",
     "forces.sphere.count": "--force-count", "forces.flat.count": "--force-count",
+    "forces.sphere": "--force-from/--force-to", "forces.flat": "--force-from/--force-to",
 }
 #: number flags -> their config key; each must be finite (--radius may be inf: a flat surface); and
 #: each sweep axis's flag -> its key (:func:`_number_flags`)
@@ -46,6 +48,7 @@ _NUMBER_FLAGS = {
 #: config keys of ``roughcontact measured`` -> its flags (beside :data:`_FLAGS`)
 _MEASURED_FLAGS = {
     "units.length": "--unit", "units.e_star": "--e-star-unit", "tile": "--tile", "e_star": "--e-star",
+    "e_star.e1": "--e1", "e_star.nu1": "--nu1", "e_star.e2": "--e2", "e_star.nu2": "--nu2", "force_unit": "--force-unit",
     "topography[0].file": "SCAN", "topography[0].size": "--size", "topography[0].detrend": "--detrend",
 }
 
@@ -107,10 +110,12 @@ def build_parser() -> argparse.ArgumentParser:
                     "it, cut its largest centred square into --tile x --tile tiles and press tile --index under a "
                     "sphere of --radius (free half-space; inf = the tile as a nominally flat rough punch), as the "
                     "pipeline's measured_surface and measured_indent jobs do, and write the same NetCDF file. "
-                    "Lengths (--radius, --size, the heights and depths) are in --unit, E* in --e-star-unit. The "
-                    "load path is given normalised, F/(E* L^2) with L the side of the tile (as forces.sphere and "
-                    "forces.flat of a config); the file gives force in N and stiffness in N/m beside "
-                    "force_normalized and stiffness_normalized = k/(E* L). Bad input (missing or unreadable scan, "
+                    "Lengths (--radius, --size, the heights and depths) are in --unit, E* (--e-star, or --e1 and "
+                    "--nu1 with --e2 and --nu2 of the counter-body) in --e-star-unit. The load path is given in "
+                    "--force-unit (N, mN, uN, nN), or without it normalised, F/(E* L^2) with L the side of the tile "
+                    "(as forces.sphere and forces.flat of a config); progress lines and the file give force in N "
+                    "(or --force-unit) and stiffness in N/m beside force_normalized and stiffness_normalized = "
+                    "k/(E* L). Bad input (missing or unreadable scan, "
                     "unknown unit, tile index out of range, loads whose contact would reach the scan's edge): one "
                     "line, exit status 2, nothing written.")
     mea.add_argument("scan", metavar="SCAN", help="the measured scan (e.g. .nc, .x3p, .sdf, .di, .opd)")
@@ -129,12 +134,23 @@ def build_parser() -> argparse.ArgumentParser:
     mea.add_argument("--index", type=int, default=0,
                      help="the tile to press, row by row from 0 (default 0), as the pipeline's R<radius>_tile<i>.nc")
     mea.add_argument("--radius", type=float, required=True, help="sphere radius R in --unit; inf = nominally flat")
-    mea.add_argument("--e-star", type=float, required=True, help="effective modulus E* in --e-star-unit")
+    mea.add_argument("--e-star", type=float, default=None,
+                     help="effective modulus E* in --e-star-unit (or give --e1 and --nu1) (config: e_star)")
+    mea.add_argument("--e1", type=float, default=None, help="Young's modulus of the scanned body in --e-star-unit")
+    mea.add_argument("--nu1", type=float, default=None, help="Poisson ratio of the scanned body, -1 < nu1 <= 0.5")
+    mea.add_argument("--e2", type=float, default=None,
+                     help="Young's modulus of the counter-body in --e-star-unit (default: rigid); "
+                          "1/E* = (1 - nu1^2)/e1 + (1 - nu2^2)/e2")
+    mea.add_argument("--nu2", type=float, default=None, help="Poisson ratio of the counter-body (default 0)")
     mea.add_argument("--e-star-unit", required=True,
-                     help=f"pressure unit of --e-star: {', '.join(PRESSURE_UNITS)} (config: units.e_star)")
+                     help=f"pressure unit of E*, --e1 and --e2: {', '.join(PRESSURE_UNITS)} (config: units.e_star)")
+    mea.add_argument("--force-unit", default=None,
+                     help=f"unit of --force-from and --force-to: {', '.join(FORCE_UNITS)} (µN = uN); also the unit of "
+                          "the progress lines (default: the forces are F/(E* L^2), progress in N)")
     mea.add_argument("--force-from", type=float, default=None,
-                     help="smallest F/(E* L^2), L the tile's side (default: forces.sphere or forces.flat of the schema)")
-    mea.add_argument("--force-to", type=float, default=None, help="largest F/(E* L^2)")
+                     help="smallest force, in --force-unit or F/(E* L^2) with L the tile's side (default: "
+                          "forces.sphere or forces.flat of the schema)")
+    mea.add_argument("--force-to", type=float, default=None, help="largest force, as --force-from")
     mea.add_argument("--force-count", type=int, default=None, help="number of log-spaced loads")
     _add_solver_options(mea, defaults="schema")
     _add_output_options(mea)
@@ -220,6 +236,20 @@ def measured_config_from_args(args) -> dict:
     if args.size is not None and not (math.isfinite(args.size) and args.size > 0):
         raise ConfigError(f"config key 'topography[0].size' = {args.size!r} is not allowed; allowed: a finite "
                           "number > 0", key="topography[0].size")
+    bodies = {key: getattr(args, key) for key in ("e1", "nu1", "e2", "nu2") if getattr(args, key) is not None}
+    if args.e_star is not None and bodies:
+        raise ConfigError(f"config key 'e_star' is given twice: --e-star and {', '.join('--' + k for k in bodies)}; "
+                          "allowed: --e-star, or --e1 and --nu1 (with --e2 and --nu2)", key="e_star")
+    if args.e_star is None and not bodies:
+        raise ConfigError("missing config key 'e_star'; allowed: --e-star, or --e1 and --nu1 (with --e2 and --nu2)",
+                          key="e_star")
+    if args.force_unit is not None:
+        if plain_unit(args.force_unit) not in FORCE_UNITS:
+            raise ConfigError(f"config key 'force_unit' = {args.force_unit!r} is not allowed; allowed: one of "
+                              f"{', '.join(FORCE_UNITS)}", key="force_unit")
+        if args.force_from is None or args.force_to is None:
+            raise ConfigError("config key 'force_unit' needs --force-from and --force-to in that unit",
+                              key="force_unit")
     path = os.path.abspath(os.path.expanduser(args.scan))
     if not os.path.isfile(path):
         raise ConfigError(f"config key 'topography[0].file' = {args.scan!r}: no such file ({path})",
@@ -235,7 +265,8 @@ def measured_config_from_args(args) -> dict:
     entry = {"file": path, "detrend": args.detrend, "interpolate": bool(args.interpolate)}
     if args.size is not None:
         entry["size"] = args.size
-    raw = {"units": {"length": unit, "e_star": args.e_star_unit}, "e_star": args.e_star, "topography": [entry],
+    raw = {"units": {"length": unit, "e_star": args.e_star_unit}, "e_star": args.e_star if bodies == {} else bodies,
+           "topography": [entry],
            "tile": args.tile, "hurst": [], "h_rms": [], "radius": [args.radius], "forces": {kind: forces},
            "solver": solver}
     return config.resolve_config(raw, base_dir=os.getcwd())
@@ -275,11 +306,14 @@ def _measured(args) -> int:
             except ImportError as err:   # no SurfaceTopography: not the input's fault
                 print(f"roughcontact measured: FAILED: {' '.join(str(err).split())}", file=sys.stderr)
                 return 1
+            if args.force_unit is not None:   # forces in a unit: F/(E* L^2) with L the tile's side
+                _normalise_forces(cfg, surface, args.force_unit)
             count = measured.tile_count(surface)
             if not 0 <= args.index < count:
                 return bad(f"--index {args.index}: the scan {os.path.basename(entry['file'])} has {count} tile(s) "
                            f"of tile = {cfg['tile'] or 'the whole square'}; allowed: 0 <= --index <= {count - 1}")
-            job = measured.job_of(cfg, "topography", entry["name"], cfg["radius"][0], args.index)
+            job = measured.job_of(cfg, "topography", entry["name"], cfg["radius"][0], args.index,
+                                  force_unit=args.force_unit or "N")
             try:
                 out = measured.run_job(job, surface, args.output)
             except IndentError as err:
@@ -295,6 +329,19 @@ def _measured(args) -> int:
         print(f"wrote {args.output}: k = {out['stiffness'][0] * scale:.4g} ... {out['stiffness'][-1] * scale:.4g} N/m",
               file=sys.stderr)
     return 0
+
+
+def _normalise_forces(cfg: dict, surface, force_unit: str) -> None:
+    """Forces given in *force_unit* (the resolved config holds them as given) as ``F/(E* L²)``
+    with ``L`` the side of a tile of the prepared *surface* file."""
+    from .study import measured
+
+    tile_length = float(measured.read_surface(surface)[2]["tile_length"])          # units.length
+    unit_force = (cfg["e_star"] * to_pascals(cfg["units"]["e_star"])
+                  * (tile_length * to_metres(cfg["units"]["length"])) ** 2)      # N per F/(E* L^2)
+    forces = cfg["forces"][runs.kind_of(cfg["radius"][0])]
+    for end in ("from", "to"):
+        forces[end] = forces[end] * to_newtons(force_unit) / unit_force
 
 
 def _flagged(err: ConfigError, flags: dict | None = None) -> str:

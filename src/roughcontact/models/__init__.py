@@ -4,10 +4,11 @@
 profile included); :mod:`.greenwood_tripp` the rough sphere of Greenwood & Tripp (1967) on the
 summit statistics of :mod:`.asperities`; :mod:`.mdr` the method of dimensionality reduction;
 :mod:`.persson` Persson's theory, flat and (through :mod:`.axisymmetric`) under a sphere.
-Models use the spectra and profiles of :mod:`roughcontact.surfaces` and never the
+:func:`effective_modulus` gives ``E*`` of two elastic bodies. Models use the spectra and profiles of :mod:`roughcontact.surfaces` and never the
 boundary-element method.
 """
 
 from . import asperities, axisymmetric, greenwood_tripp, mdr, paper, persson
+from .elasticity import effective_modulus
 
-__all__ = ["asperities", "axisymmetric", "greenwood_tripp", "mdr", "paper", "persson"]
+__all__ = ["asperities", "axisymmetric", "greenwood_tripp", "mdr", "paper", "persson", "effective_modulus"]

@@ -36,6 +36,7 @@ import numpy as np
 
 from ..errors import ConfigError
 from ..models import paper
+from ..models.elasticity import effective_modulus
 from .axes import AXES
 from .limits import full_contact_slope
 from .measured.config import resolve_inputs
@@ -114,6 +115,10 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
     # normalise types
     cfg["grid"]["n"] = int(cfg["grid"]["n"])
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
+    if isinstance(cfg["e_star"], dict):   # the two bodies: E* of eq. 4.22 of Johnson (1985)
+        bodies = cfg["e_star"]
+        cfg["e_star"] = effective_modulus(bodies["e1"], bodies["nu1"], bodies.get("e2", math.inf),
+                                          bodies.get("nu2", 0.0))
     cfg["e_star"] = float(cfg["e_star"])
     for axis in AXES.values():  # sorted floats, null (an optional axis's paper setting) first
         cfg[axis.name] = axis.normalise(cfg.get(axis.name, []))  # hurst, h_rms: absent with measured inputs only
@@ -139,7 +144,7 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
         if not rng["from"] < rng["to"]:
             raise ConfigError(
                 f"config key 'forces.{kind}': from = {rng['from']:g} must be smaller than to = {rng['to']:g}; "
-                "allowed: 0 < from < to (forces F/(E* L^2))", key=f"forces.{kind}.from"
+                "allowed: 0 < from < to (forces F/(E* L^2))", key=f"forces.{kind}"
             )
         for end in ("from", "to"):
             force = rng[end] * cfg["e_star"] * length * length

@@ -119,6 +119,8 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     except DomainTooSmallError as exc:
         fnorm = forces[i] / (E * L**2)
         last = f"{forces[i - 1] / (E * L**2):.3g}" if i else "the first load"
+        if i and units is not None:   # the last good load in the user's units too
+            last += f" (F = {forces[i - 1] * units[0]:.4g} {units[1]})"
         raise IndentError(
             f"indent {p.name}: the contact reached the edge of the free-space grid at load step "
             f"{i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}); lower {p.force_key} to {last} or below "

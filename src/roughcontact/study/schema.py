@@ -306,6 +306,15 @@ def _describe(node: dict, root: dict, with_doc: bool = True, finite: bool = Fals
 
 
 def schema_error(err, root: dict) -> ConfigError:
+    """The one-line :class:`ConfigError` of a ``jsonschema`` validation error. Where the value
+    fails every branch of a ``oneOf`` but has the type of one of them, the error inside that
+    branch is worded (``e_star.nu1 = 0.7``, not the whole mapping)."""
+    if err.validator in ("oneOf", "anyOf") and err.context:
+        inside = [e for e in err.context if e.validator != "type"]
+        if inside:
+            import jsonschema
+
+            return schema_error(jsonschema.exceptions.best_match(inside), root)
     path = list(err.absolute_path)
     if err.validator == "additionalProperties":
         allowed = list(err.schema.get("properties", {}))

@@ -40,7 +40,7 @@ from ... import bem, surfaces
 from ...errors import IndentError, InputFileError
 from ...surfaces.bodies import paraboloid
 from .. import provenance, runfile, statistics
-from .config import LENGTH_UNITS, plain_unit, to_metres, to_pascals
+from .config import LENGTH_UNITS, plain_unit, to_metres, to_newtons, to_pascals
 from ..runs import force_grid, kind_of
 
 __all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job",
@@ -149,6 +149,8 @@ class MeasuredJob:
         Topography: the tile's side in cells (``None``: the whole square).
     n, length, convention :
         Spectrum: grid points per side, side (``length_unit``) and the table's convention.
+    force_unit : str
+        Unit of the forces in progress lines and messages (:data:`~.config.FORCE_UNITS`).
     """
 
     source: str
@@ -169,6 +171,7 @@ class MeasuredJob:
     n: int | None = None
     length: float | None = None
     convention: str = "c2d"
+    force_unit: str = "N"
 
     @property
     def kind(self) -> str:
@@ -183,8 +186,9 @@ class MeasuredJob:
         return f"{self.source} {self.name}, {self.ensemble} {self.index}, R = {self.radius:g} {self.length_unit}"
 
 
-def job_of(cfg: dict, source: str, name: str, radius: float, index: int) -> MeasuredJob:
-    """The :class:`MeasuredJob` of one (surface, radius, tile or seed) of a resolved config."""
+def job_of(cfg: dict, source: str, name: str, radius: float, index: int, *, force_unit: str = "N") -> MeasuredJob:
+    """The :class:`MeasuredJob` of one (surface, radius, tile or seed) of a resolved config
+    (*force_unit*: of progress lines and messages)."""
     entry = next(e for e in cfg[source] if e["name"] == name)
     rng = cfg["forces"][kind_of(radius)]
     solver = cfg["solver"]
@@ -196,7 +200,8 @@ def job_of(cfg: dict, source: str, name: str, radius: float, index: int) -> Meas
                        pressure_unit=cfg["units"]["e_star"], force_from=float(rng["from"]),
                        force_to=float(rng["to"]), force_count=int(rng["count"]), tol=float(solver["tol"]),
                        maxiter=int(solver.get("maxiter", bem.DEFAULT_MAXITER)),
-                       stiffness_method=solver["stiffness"], rel_step=float(solver["rel_step"]), **extra)
+                       stiffness_method=solver["stiffness"], rel_step=float(solver["rel_step"]),
+                       force_unit=plain_unit(force_unit), **extra)
 
 
 def _spectrum_surface(job: MeasuredJob, path) -> np.ndarray:
@@ -253,7 +258,8 @@ def run_job(job: MeasuredJob, source_file, output) -> dict:
         edge_hint=f"use a smaller radius or larger tiles (loads whose contact would reach {where})",
         edge_contact=job.kind == "flat" and not periodic)   # a flat free tile is a rough punch of side L
     scale_f, scale_k = _scales(job)
-    out = solve_load_path(z, forces, settings, units=(scale_f, "N", scale_k, "N/m"))
+    out = solve_load_path(z, forces, settings, units=(scale_f / to_newtons(job.force_unit), job.force_unit,
+                                                      scale_k, "N/m"))
     _write_run(job, output, out, normalized, length)
     return out
 
