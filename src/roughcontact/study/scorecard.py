@@ -22,6 +22,7 @@ import numpy as np
 
 from ..models import scorecard as registry
 from . import provenance, runs
+from .ensemble import resolved
 from .plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval
 from .tables import write_html_table
@@ -87,12 +88,12 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
         k = sub["stiffness"].values
         k_mean = k.mean(0)
         k_boot = k[indices].mean(1)                               # (resample, force)
-        resolved = sub["contact_cells"].values.mean(0) >= min_cells
+        use_load = resolved(sub["contact_cells"].values.mean(0), min_cells)
         band = np.percentile(k_boot / k_mean - 1, [50 * (1 - level), 50 * (1 + level)], axis=0)
         label = combo_label(combo)
         dev_of = {}
         for name, k_model in registry.predict(sub["force"].values, combo.surface()).items():
-            use = resolved & np.isfinite(k_model)
+            use = use_load & np.isfinite(k_model)
             dev = k_model / k_mean - 1
             dev_of[name] = dev
             if not use.any():
@@ -110,7 +111,7 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
                 for name, dev in dev_of.items()},
              "band_low": ("force", band[0], {"long_name": f"{level:.0%} band of the ensemble mean, low", "units": "1"}),
              "band_high": ("force", band[1], {"long_name": f"{level:.0%} band of the ensemble mean, high", "units": "1"}),
-             "resolved": ("force", resolved.astype("i1"), {"long_name": "resolved load (1) or not (0)", "units": "1"})},
+             "resolved": ("force", use_load.astype("i1"), {"long_name": "resolved load (1) or not (0)", "units": "1"})},
             coords={"force_normalized": ("force", force_norm, {"long_name": "F/(E* L^2)", "units": "1"})},
             attrs={k: v for k, v in combo.items()})
     table = pd.DataFrame(rows)
@@ -132,7 +133,7 @@ def scorecard_lead() -> str:
 def _figure(path, label: str, curve, table) -> None:
     plt = pyplot()
     force = curve["force_normalized"].values
-    resolved = curve["resolved"].values.astype(bool)
+    shown = curve["resolved"].values.astype(bool)
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
     ax.axhline(0, color="0.4", lw=0.8)
@@ -140,7 +141,7 @@ def _figure(path, label: str, curve, table) -> None:
         if name in curve:
             mark = table[(table["combination"] == label) & (table["model"] == name)]
             text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
-            ax.semilogx(force[resolved], curve[name].values[resolved], "o-", ms=3, label=name + text)
+            ax.semilogx(force[shown], curve[name].values[shown], "o-", ms=3, label=name + text)
     ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1", title=label)
     ax.legend(fontsize=7)
     fig.tight_layout()

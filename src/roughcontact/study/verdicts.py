@@ -33,6 +33,7 @@ import math
 import numpy as np
 
 from ..models import paper
+from . import ensemble
 from .statistics import BOOTSTRAP_SEED, bootstrap_indices, interval, verdict
 
 __all__ = ["Eq16Fit", "fit_eq16", "SphereVerdicts", "sphere_verdicts", "crossover_table", "run_crossover"]
@@ -199,7 +200,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
     f_pred_fit = paper.crossover_force(radius, hurst=hurst, h_rms=h_rms, length=L, e_star=1.0, zeta=zeta_fit, exponent=m) / L**2
     f_pred_est = paper.crossover_force(radius, hurst=hurst, h_rms=h_rms, length=L, e_star=1.0, zeta=z_est, exponent=m) / L**2
     f_window = f_pred_fit if math.isfinite(f_pred_fit) else f_pred_est
-    resolved = cells >= min_cells
+    resolved = ensemble.resolved(cells, min_cells)   # the loads this combination's verdicts may use
     k_mean = k_seeds.mean(0)
     k_boot = k_seeds[indices].mean(1)          # (resamples, m): ensemble means of resampled seeds
     row = {"hurst": hurst, "radius": radius, "exponent": m, "h_rms": h_rms, "zeta_fit": zeta_fit, "zeta_estimate": z_est,
