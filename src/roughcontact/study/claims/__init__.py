@@ -1,6 +1,6 @@
 """The paper's claims as a table (``claims.csv``): one row per quantitative claim
 and per combination it is tested on, with the measured value, its 95 %
-interval, the paper's value, the verdict (:mod:`.verdicts`) and the sweep and
+interval, the paper's value, the verdict (:mod:`roughcontact.study.claims.verdicts`) and the sweep and
 loads it rests on. Rows (a)–(f) of a combination with a cutoff, a roll-off or a
 hardness keep their measured values but say ``untested``: the paper's
 equations are for an elastic, purely self-affine surface, and claims (i)–(k)
@@ -20,8 +20,8 @@ exponents of flat surfaces against Pastewka et al. (2013) and Pohrt & Popov (201
 
 Each claim is one :class:`Claim` (its letter, statement, the inputs it needs and the function
 that gives its rows with value, interval, paper value and verdict), registered by a module of
-this package: :mod:`.paper` (a)-(h), :mod:`.zeta_law` (c'), :mod:`.effects` (i)-(k),
-:mod:`.exponents` (l), (m). :func:`claims_table` loops over the registry; a new claim is one
+this package: :mod:`roughcontact.study.claims.paper` (a)-(h), :mod:`roughcontact.study.claims.zeta_law` (c'), :mod:`roughcontact.study.claims.effects` (i)-(k),
+:mod:`roughcontact.study.claims.exponents` (l), (m). :func:`claims_table` loops over the registry; a new claim is one
 object in one module (worked example in the package guide, ``docs/guide/package.md``).
 """
 from __future__ import annotations

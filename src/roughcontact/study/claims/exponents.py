@@ -22,7 +22,7 @@ def prl2012_exponent(hurst: float) -> float:
 
 
 def exponent_rows(exponents, zeta_df, cfg) -> list[dict]:
-    """Claims (l) and (m) from the local exponents (:mod:`.exponents`) and the ζ fit.
+    """Claims (l) and (m) from the local exponents (:mod:`roughcontact.study.exponents`) and the ζ fit.
 
     (l) With a roll-off below the system size, ``K ∝ p`` over a range of pressures (Pastewka et
     al., Phys. Rev. E 87, 062809 (2013)): per H and roll-off ``λ_r < L``, the largest local

@@ -6,7 +6,7 @@ prefactor; (f) below F_tr roughness lowers k against the smooth sphere (Conclusi
 scaling of F_tr with R and h_rms implied by eq. 17; (h) eq. 18's λ for H → 0. Beyond the
 paraboloid (Conclusions): (a), (b), (d)-(f) per body of revolution and for 1 < H < 2. Rows
 (a)-(f) of a combination off the paper's setting keep their measured values but say
-``untested`` (:func:`~.registry.off_theory`).
+``untested`` (:func:`~roughcontact.study.claims.registry.off_theory`).
 """
 from __future__ import annotations
 

@@ -150,7 +150,7 @@ class MeasuredJob:
     n, length, convention :
         Spectrum: grid points per side, side (``length_unit``) and the table's convention.
     force_unit : str
-        Unit of the forces in progress lines and messages (:data:`~.config.FORCE_UNITS`).
+        Unit of the forces in progress lines and messages (:data:`~roughcontact.study.measured.config.FORCE_UNITS`).
     """
 
     source: str

@@ -1,5 +1,5 @@
-"""ζ(H), the prefactor of eq. 11: :mod:`.fit` fits it on the merged runs with bootstrap-over-seeds
-intervals (``zeta.csv``, ``zeta.nc``); :mod:`.law` chooses a law ζ(H) over the swept Hurst
+"""ζ(H), the prefactor of eq. 11: :mod:`roughcontact.study.zeta.fit` fits it on the merged runs with bootstrap-over-seeds
+intervals (``zeta.csv``, ``zeta.nc``); :mod:`roughcontact.study.zeta.law` chooses a law ζ(H) over the swept Hurst
 exponents from candidate forms (claim c′). The candidate forms and the calibrated law that
 the models use are :mod:`roughcontact.models.zeta_law`."""
 from .fit import fit_zeta, paper_setting, run_fit_zeta
