@@ -114,6 +114,11 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
 
     # normalise types
     cfg["grid"]["n"] = int(cfg["grid"]["n"])
+    fine = cfg["grid"]["realization_of"]
+    if fine is not None and int(fine) < cfg["grid"]["n"]:
+        raise ConfigError(f"config key 'grid.realization_of' = {fine} is not allowed; allowed: null or a grid of at "
+                          f"least grid.n = {cfg['grid']['n']} points (the finer grid whose surfaces are pressed)",
+                          key="grid.realization_of")
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
     if isinstance(cfg["e_star"], dict):   # the two bodies: E* of eq. 4.22 of Johnson (1985)
         bodies = cfg["e_star"]

@@ -26,7 +26,7 @@ logger = logging.getLogger(__name__)
 def make_surface(s: JobSettings) -> np.ndarray:
     """Heights of one run: a rough body of revolution, or a nominally flat surface; the axes
     act through their role (:meth:`JobSettings.arguments`)."""
-    roughness = s.arguments("roughness")
+    roughness = {**s.arguments("roughness"), "realization_of": s.realization_of}
     if s.kind == "flat":
         return surfaces.self_affine(s.n, length=s.length, seed=s.seed, **roughness)
     return surfaces.rough_sphere(s.n, radius=s.radius, length=s.length, seed=s.seed, **roughness,

@@ -39,6 +39,9 @@ class JobSettings:
         (:func:`roughcontact.bem.solve`), the stiffness's extra solves included.
     stiffness_method, rel_step :
         How ``k = dF/dd`` is computed (:func:`roughcontact.bem.stiffness`).
+    realization_of : int or None
+        The finer grid whose surface this run presses, seen on its ``n × n`` grid
+        (``grid.realization_of``; :func:`roughcontact.surfaces.self_affine`); ``None``: its own.
     options : tuple of (str, float)
         The optional axes of :data:`roughcontact.study.axes.AXES` off the paper's setting, in
         the registry's order, under their configuration names and units (``hardness`` in units
@@ -61,6 +64,7 @@ class JobSettings:
     rel_step: float
     maxiter: int = DEFAULT_MAXITER
     options: tuple = ()
+    realization_of: int | None = None
 
     def __getattr__(self, name: str):
         """The value of an optional axis (its paper value where :attr:`options` does not list it)."""
@@ -112,7 +116,10 @@ class JobSettings:
     def record(self) -> dict:
         """The settings as a flat mapping of plain values: what a run file's ``config_hash``
         and attributes are made of. Optional axes at the paper's setting are left out."""
-        out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self) if field.name != "options"}
+        out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
+               if field.name not in ("options", "realization_of")}
+        if self.realization_of is not None:   # runs of a grid's own surfaces keep their hash
+            out["realization_of"] = self.realization_of
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
 
     def describe(self) -> str:
@@ -144,7 +151,8 @@ def job_settings(cfg: dict, run: dict) -> JobSettings:
         n=int(cfg["grid"]["n"]), length=float(cfg["grid"]["length"]), e_star=float(cfg["e_star"]),
         force_from=float(rng["from"]), force_to=float(rng["to"]), force_count=int(rng["count"]),
         tol=float(solver["tol"]), stiffness_method=solver["stiffness"], rel_step=float(solver["rel_step"]),
-        maxiter=int(solver.get("maxiter", DEFAULT_MAXITER)), options=options_of(run))
+        maxiter=int(solver.get("maxiter", DEFAULT_MAXITER)), options=options_of(run),
+        realization_of=None if cfg["grid"].get("realization_of") is None else int(cfg["grid"]["realization_of"]))
 
 
 def settings_from_wildcards(cfg: dict, wildcards) -> JobSettings:

@@ -1,0 +1,103 @@
+"""The grid error of an ensemble mean (roughcontact.study.grid_error) against ensembles built with a
+known grid error, Richardson extrapolation against a sequence with a known limit and order, and
+grid.realization_of from the configuration to the surface."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from roughcontact import errors, surfaces
+from roughcontact.study import config, indent, runs, settings
+from roughcontact.study.grid_error import grid_error, richardson
+
+FORCE = np.geomspace(1e-6, 1e-3, 6)
+CELLS = np.array([5, 20, 80, 300, 1000, 3000])
+
+
+def _sphere(k: np.ndarray, cells=CELLS) -> xr.Dataset:
+    """A merged sphere group of one combination with stiffness k[seed, force]."""
+    axes = {"hurst": [0.7], "radius": [0.5], "exponent": [2.0], "h_rms": [9e-3], "rolloff": [1.0],
+            "cutoff": [0.0], "hardness": [np.inf]}
+    dims = (*axes, "seed", "force")
+    shape = (1,) * len(axes)
+    cells = np.broadcast_to(cells, k.shape)
+    return xr.Dataset({"stiffness": (dims, k.reshape(shape + k.shape)),
+                       "contact_cells": (dims, cells.reshape(shape + k.shape))},
+                      coords={**axes, "seed": np.arange(k.shape[0]), "force": FORCE,
+                              "force_normalized": ("force", FORCE)})
+
+
+def _table(coarse, fine):
+    return grid_error(coarse, fine, min_cells=20, bootstrap=200, confidence=0.95)
+
+
+def test_known_grid_error_is_recovered():
+    """Coarse = fine x (1 + e(F)) seed by seed: the grid error is e to round-off (1e-12)."""
+    rng = np.random.default_rng(0)
+    fine = 1 + 0.2 * rng.random((10, FORCE.size))
+    e = np.linspace(0.15, 0.01, FORCE.size)
+    table = _table(_sphere(fine * (1 + e)), _sphere(fine))
+    np.testing.assert_allclose(table["grid_error"], e, rtol=1e-12, err_msg="grid error")
+
+
+def test_paired_interval_of_an_exact_ratio_is_a_point():
+    """With the same ratio on every seed, every paired resample gives e: the interval is [e, e]."""
+    rng = np.random.default_rng(1)
+    fine = 1 + 0.2 * rng.random((10, FORCE.size))
+    table = _table(_sphere(fine * 1.05), _sphere(fine))
+    np.testing.assert_allclose(table["grid_error_ci_high"] - table["grid_error_ci_low"], 0.0, atol=1e-12,
+                               err_msg="interval width")
+
+
+def test_grid_resolved_compares_the_error_with_the_band():
+    """Seeds scattered by 20 % (band ~ +-13 % at 10 seeds) and a grid error of 30 % at the first
+    load, 0.1 % elsewhere: only the first load is not resolved by the grid."""
+    rng = np.random.default_rng(2)
+    fine = 1 + 0.4 * rng.random((10, FORCE.size))
+    e = np.array([0.3] + [0.001] * (FORCE.size - 1))
+    table = _table(_sphere(fine * (1 + e)), _sphere(fine))
+    assert table["grid_resolved"].tolist() == [False] + [True] * (FORCE.size - 1), table[["grid_error", "band"]]
+
+
+def test_cell_rule_is_reported_beside():
+    rng = np.random.default_rng(3)
+    fine = 1 + 0.2 * rng.random((4, FORCE.size))
+    table = _table(_sphere(fine), _sphere(fine))
+    assert table["cell_resolved"].tolist() == [False, True, True, True, True, True], table["cell_resolved"]
+
+
+def test_one_common_seed_is_an_error():
+    fine = np.ones((3, FORCE.size))
+    coarse = _sphere(fine).assign_coords(seed=[5, 6, 0])
+    with pytest.raises(ValueError, match="share 1 seed"):
+        _table(coarse, _sphere(fine))
+
+
+def test_richardson_recovers_limit_and_order():
+    """k(h) = 2 + 0.3 h^1.5 on h = 1/64, 1/128, 1/256: the limit 2 and the order 1.5 exactly."""
+    h = np.array([1 / 64, 1 / 128, 1 / 256])
+    k = 2 + 0.3 * h**1.5
+    limit, order = richardson(k[0], k[1], k[2], 2.0)
+    assert float(limit) == pytest.approx(2.0, rel=1e-12), f"limit {limit}"
+    assert float(order) == pytest.approx(1.5, rel=1e-10), f"order {order}"
+
+
+def test_richardson_refuses_a_non_monotone_sequence():
+    limit, order = richardson(1.0, 1.1, 1.05, 2.0)
+    assert np.isnan(limit) and np.isnan(order), f"limit {limit}, order {order}"
+
+
+def test_realization_of_reaches_the_surface():
+    cfg = config.resolve_config({"hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 1,
+                                 "grid": {"n": 33, "realization_of": 65}})
+    job = settings.job_settings(cfg, runs.runs(cfg)[0])
+    expected = surfaces.rough_sphere(33, radius=0.5, hurst=0.7, h_rms=9e-3, seed=0, realization_of=65)
+    assert np.abs(indent.make_surface(job) - expected).max() == 0.0, "the job pressed another surface"
+
+
+def test_realization_of_a_coarser_grid_is_rejected():
+    with pytest.raises(errors.ConfigError) as info:
+        config.resolve_config({"hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 1,
+                               "grid": {"n": 65, "realization_of": 33}})
+    assert info.value.key == "grid.realization_of", f"key {info.value.key}"
