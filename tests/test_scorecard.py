@@ -73,3 +73,43 @@ def test_models_that_do_not_apply_have_no_row():
     table, _ = scorecard.scorecard(groups, pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
     assert "greenwood_tripp" not in set(table["model"]), "GT on a spectrum with a cutoff"
     assert {"eq16_paper", "eq16_fitted"} <= set(table["model"]), set(table["model"])
+
+
+def _constant_offset_table(scale):
+    return scorecard.scorecard(_groups(scale), pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)[0]
+
+
+@pytest.mark.parametrize("branch", ["low", "high"])
+def test_systematic_deviation_of_a_constant_offset(branch):
+    """Seeds at 1.08 ... 1.12 x eq. 16: eq16_fitted lies 1/mean - 1 below the ensemble mean at every
+    load, so its weighted mean deviation on either branch is that constant (to round-off)."""
+    scale = np.linspace(1.08, 1.12, 8)
+    row = _row(_constant_offset_table(scale), "eq16_fitted")
+    assert row[f"systematic_{branch}"] == pytest.approx(1 / scale.mean() - 1, rel=1e-12), f"{branch} branch"
+
+
+def test_significant_systematic_deviation_differs_from_zero():
+    row = _row(_constant_offset_table(np.linspace(1.08, 1.12, 8)), "eq16_fitted")
+    assert row["systematic_high_verdict"] == "differs", row[["systematic_high", "systematic_high_ci_low",
+                                                              "systematic_high_ci_high"]].to_dict()
+
+
+def test_branches_split_at_the_crossover_force():
+    """Resolved loads (F >= 1e-5) below and above eq. 17's F_tr with the fitted zeta."""
+    row = _row(_constant_offset_table(np.linspace(1.08, 1.12, 8)), "eq16_fitted")
+    f_tr = paper.crossover_force(RADIUS, hurst=HURST, h_rms=H_RMS, length=1.0, e_star=1.0, zeta=ZETA)
+    resolved = FORCE >= 1e-5
+    assert (row["n_loads_low"], row["n_loads_high"]) == (int((resolved & (FORCE < f_tr)).sum()),
+                                                         int((resolved & (FORCE >= f_tr)).sum())), "branch sizes"
+
+
+def test_a_model_equal_to_the_ensemble_mean_is_inside_its_band():
+    """Seeds at 1 +- 5 % x eq. 16 (mean exactly eq. 16): eq16_fitted deviates by 0, inside the band."""
+    row = _row(_constant_offset_table(1 + 0.05 * np.array([1.0, -1.0] * 4)), "eq16_fitted")
+    assert row["inside_band"] == 1.0, f"inside_band {row['inside_band']}"
+
+
+def test_a_model_off_a_sharp_ensemble_is_outside_its_band():
+    """Every seed at 1.2 x eq. 16 (no scatter: the band is [0, 0]): eq16_fitted is 1/1.2 - 1 off."""
+    row = _row(_constant_offset_table(np.full(4, 1.2)), "eq16_fitted")
+    assert row["inside_band"] == 0.0, f"inside_band {row['inside_band']}"

@@ -20,11 +20,12 @@ import math
 
 import numpy as np
 
+from ..models import paper
 from ..models import scorecard as registry
 from . import provenance, runs
 from .ensemble import resolved
 from .plotting import pyplot, save_png
-from .statistics import bootstrap_indices, interval
+from .statistics import bootstrap_indices, interval, verdict
 from .tables import write_html_table
 
 __all__ = ["Combination", "scorecard", "run_models", "combo_label"]
@@ -68,6 +69,31 @@ def combo_label(c: Combination) -> str:
     return runs.combo_name(run)
 
 
+def _crossover(c: Combination) -> float:
+    """The branches' border ``F/(E* L²)``: eq. 17 with the study's fitted ζ, else eq. 13's."""
+    zeta = c["zeta_fit"] if math.isfinite(c["zeta_fit"]) else float(paper.zeta_estimate(c["hurst"]))
+    return float(paper.crossover_force(c["radius"], hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"],
+                                       e_star=c["e_star"], zeta=zeta, exponent=c["exponent"])
+                 / (c["e_star"] * c["length"] ** 2))
+
+
+def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict:
+    """The systematic deviation of a model on one branch: the mean of ``k_model/k_BEM − 1`` over the
+    loads *use*, each weighted by the inverse variance of the ensemble mean there (its bootstrap),
+    with the interval of the same mean over the bootstrap's ensembles and the verdict on 0
+    (``differs``: the deviation is significant)."""
+    keys = [f"systematic_{branch}", f"systematic_{branch}_ci_low", f"systematic_{branch}_ci_high"]
+    if use.sum() < 1:
+        return {**dict.fromkeys(keys, math.nan), f"systematic_{branch}_verdict": "untested: no resolved load",
+                f"n_loads_{branch}": 0}
+    relative = k_boot[:, use] / k_mean[use]
+    weight = 1.0 / np.maximum(relative.var(axis=0, ddof=1), np.finfo(float).eps ** 2)   # no scatter: equal weights
+    value = float(np.sum(weight * (k_model[use] / k_mean[use] - 1)) / weight.sum())
+    low, high = interval((k_model[use] / k_boot[:, use] - 1) @ weight / weight.sum(), level)
+    return {keys[0]: value, keys[1]: low, keys[2]: high, f"systematic_{branch}_verdict": verdict(0.0, low, high),
+            f"n_loads_{branch}": int(use.sum())}
+
+
 def scorecard(groups: dict, zeta_df, cfg: dict):
     """``models.csv`` as a DataFrame (one row per model and sphere combination), and a Dataset of
     the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band."""
@@ -91,6 +117,7 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
         use_load = resolved(sub["contact_cells"].values.mean(0), min_cells)
         band = np.percentile(k_boot / k_mean - 1, [50 * (1 - level), 50 * (1 + level)], axis=0)
         label = combo_label(combo)
+        f_tr = _crossover(combo)
         dev_of = {}
         for name, k_model in registry.predict(sub["force"].values, combo.surface()).items():
             use = use_load & np.isfinite(k_model)
@@ -99,12 +126,16 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
             if not use.any():
                 continue
             low, high = interval(np.abs(k_model[use] / k_boot[:, use] - 1).max(-1), level)
+            inside = (dev[use] >= band[0][use]) & (dev[use] <= band[1][use])
             rows.append({
                 "model": name, **{a: combo[a] for a in runs.AXES["sphere"]}, "combination": label,
                 "max_rel_dev": float(np.abs(dev[use]).max()), "max_rel_dev_ci_low": low,
                 "max_rel_dev_ci_high": high, "rms_rel_dev": float(np.sqrt(np.mean(dev[use] ** 2))),
                 "n_loads": int(use.sum()), "force_min": float(force_norm[use].min()),
                 "force_max": float(force_norm[use].max()), "paper_setting": combo.paper_setting,
+                "inside_band": float(inside.mean()), "crossover_force": f_tr,
+                **_systematic(k_model, k_mean, k_boot, use & (force_norm < f_tr), "low", level),
+                **_systematic(k_model, k_mean, k_boot, use & (force_norm >= f_tr), "high", level),
             })
         curves[label] = xr.Dataset(
             {**{name: ("force", dev, {"long_name": f"k_{name}/k_BEM - 1", "units": "1"})
@@ -126,8 +157,11 @@ def scorecard_lead() -> str:
     return ("Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
             "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
             "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
-            f"deviations; rank 1 is the best model of its combination. {summaries}. models.csv holds "
-            "every digit.")
+            "deviations; rank 1 is the best model of its combination; inside_band the fraction of those loads "
+            "where the model lies inside the ensemble's band; systematic_low and systematic_high the mean "
+            "deviation below and above the crossover force (eq. 17), weighted by the inverse variance of the "
+            "ensemble mean, with its interval and verdict on 0 (differs: a significant systematic deviation). "
+            f"{summaries}. models.csv holds every digit.")
 
 
 def _figure(path, label: str, curve, table) -> None:
@@ -161,9 +195,11 @@ def run_models(cfg, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures):
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, out_csv)
     write_groups(out_nc, curves, attrs)
-    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(), verdict_columns=(),
+    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(),
+                     verdict_columns=("systematic_low_verdict", "systematic_high_verdict"),
                      first=("combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low",
-                            "max_rel_dev_ci_high", "rms_rel_dev", "n_loads"))
+                            "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "systematic_low",
+                            "systematic_low_verdict", "systematic_high", "systematic_high_verdict", "n_loads"))
     names = runs.sphere_names(cfg)
     if len(names) != len(figures):
         raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
