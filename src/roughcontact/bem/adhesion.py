@@ -21,7 +21,8 @@ stress nearer the tip than its mean. Calibrated on JKR (the smooth sphere's load
 pull-off ``−(3/2)πwR``, contact radius at pull-off 10, 20 and 40 cells, measured 2026-11-24), the
 pull-off scales as ``c`` and is ``0.527 c``, ``0.498 c`` and ``0.486 c`` times JKR's, converging
 (geometrically, ratio 0.4) to ``0.478 c``: ``c = 2.1`` makes the method converge to JKR
-(+10.9 %, +5.2 % and +1.4 % at 10, 20 and 40 cells); ``c = 4/π`` would converge to 61 % of it. ``tests/test_adhesion_bem.py`` checks it.
+(+10.9 %, +5.2 % and +1.4 % at 10, 20 and 40 cells); ``c = 4/π`` would converge to 61 % of it.
+``tests/test_adhesion_bem.py`` checks it.
 
 The solve at a given approach ``d`` (displacement control): on the contact set ``C`` the surface
 follows the indenter, ``u_i = d − (z_i − min z)``, and the pressures solve ``K_CC p_C = u_C`` by
