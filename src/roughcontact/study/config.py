@@ -114,7 +114,7 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
 
     # normalise types
     cfg["grid"]["n"] = int(cfg["grid"]["n"])
-    fine = cfg["grid"]["realization_of"]
+    fine = cfg["grid"].get("realization_of")   # absent: the grid's own surfaces (resolved configs unchanged)
     if fine is not None and int(fine) < cfg["grid"]["n"]:
         raise ConfigError(f"config key 'grid.realization_of' = {fine} is not allowed; allowed: null or a grid of at "
                           f"least grid.n = {cfg['grid']['n']} points (the finer grid whose surfaces are pressed)",
