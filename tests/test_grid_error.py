@@ -101,3 +101,12 @@ def test_realization_of_a_coarser_grid_is_rejected():
         config.resolve_config({"hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 1,
                                "grid": {"n": 65, "realization_of": 33}})
     assert info.value.key == "grid.realization_of", f"key {info.value.key}"
+
+
+def test_command_line_says_a_missing_study_in_one_line(tmp_path, capsys):
+    from roughcontact.study.grid_error import main
+
+    code = main([str(tmp_path / "coarse"), str(tmp_path / "fine"), "-o", str(tmp_path / "out.csv")])
+    err = capsys.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1, f"exit {code}: {err!r}"
+    assert "no stiffness.nc" in err and not (tmp_path / "out.csv").exists(), err

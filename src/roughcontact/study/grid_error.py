@@ -23,8 +23,11 @@ from __future__ import annotations
 
 import itertools
 import math
+import sys
 
 import numpy as np
+
+from ..errors import MergeError
 
 from .ensemble import resolved
 from .statistics import bootstrap_indices, interval
@@ -102,7 +105,12 @@ def run_grid_error(coarse_results, fine_results, out_csv, *, fraction: float = G
 
     from .io import read_groups, write_csv
 
+    for directory in (coarse_results, fine_results):
+        if not (Path(directory) / "stiffness.nc").is_file():
+            raise MergeError(f"{directory}: no stiffness.nc (the results directory of a study, after its merge rule)")
     coarse, fine = (read_groups(Path(d) / "stiffness.nc") for d in (coarse_results, fine_results))
+    if "sphere" not in coarse or "sphere" not in fine:
+        raise MergeError(f"{coarse_results} and {fine_results}: the grid error needs sphere runs in both studies")
     with xr.open_datatree(Path(fine_results) / "stiffness.nc", engine="netcdf4") as tree:
         cfg = json.loads(tree.attrs["config"])
     zeta = cfg["fit"]["zeta"]
@@ -123,7 +131,11 @@ def main(argv=None) -> int:
     parser.add_argument("--fraction", type=float, default=GRID_ERROR_FRACTION,
                         help=f"resolved where |grid error| <= this fraction of the band (default {GRID_ERROR_FRACTION})")
     args = parser.parse_args(argv)
-    run_grid_error(args.coarse, args.fine, args.output, fraction=args.fraction)
+    try:
+        run_grid_error(args.coarse, args.fine, args.output, fraction=args.fraction)
+    except (MergeError, ValueError) as err:   # bad input: one line, nothing written
+        print(f"grid_error: {err}", file=sys.stderr)
+        return 2
     return 0
 
 
