@@ -94,3 +94,43 @@ def test_critical_stress():
 def test_bad_heights_are_named():
     with pytest.raises(ValueError, match="square"):
         adhesive_path(np.zeros((4, 5)), [0.1], length=1.0, e_star=1.0, work_of_adhesion=0.1)
+
+
+@pytest.fixture(scope="module")
+def force_path():
+    """The 64² sphere of 10 cells of JKR pull-off radius under force control: loaded to twice JKR's
+    pull-off force, unloaded towards 1.5 times its tension in 10 targets."""
+    from roughcontact.bem.adhesion import adhesive_force_path
+
+    n, cells = 64, 10
+    a_c = cells / n
+    w = a_c**3 * 8 / (9 * math.pi)
+    jkr, _ = adhesion.jkr_pull_off(radius=1.0, e_star=1.0, work_of_adhesion=w)
+    targets = np.concatenate([[-2 * jkr], np.linspace(-1.5 * jkr, 1.5 * jkr, 10)])
+    path = adhesive_force_path(paraboloid(n, radius=1.0, length=1.0), targets, step=a_c**2 / 100, length=1.0,
+                               e_star=1.0, work_of_adhesion=w)
+    return path, targets, jkr, w
+
+
+def test_force_control_reaches_its_targets(force_path):
+    path, targets, _, _ = force_path
+    np.testing.assert_allclose(path.force, targets[:len(path.force)], rtol=1e-5, err_msg="forces reached")
+
+
+def test_force_control_comes_off_at_the_least_force_of_displacement_control(force_path):
+    """The load-controlled pull-off is the least force of the displacement-controlled branch: the
+    two paths agree within 1 % (the step's resolution near the minimum is quadratic)."""
+    path, _, _, w = force_path
+    n, a_c = 64, 10 / 64
+    depths = np.concatenate([np.linspace(0, 2.5 * a_c**2, 20), np.linspace(2.5 * a_c**2, -0.5 * a_c**2, 200)])
+    displaced = adhesive_path(paraboloid(n, radius=1.0, length=1.0), depths, length=1.0, e_star=1.0,
+                              work_of_adhesion=w)
+    assert path.pull_off_force == pytest.approx(displaced.pull_off_force, rel=0.01), \
+        f"force control {path.pull_off_force:.4g}, displacement control {displaced.pull_off_force:.4g}"
+
+
+def test_force_control_stops_at_the_pull_off(force_path):
+    """Targets below the pull-off are not reached: the path ends with the last target above it."""
+    path, targets, _, _ = force_path
+    reachable = int(np.sum(targets >= path.pull_off_force))
+    assert len(path.force) == reachable, f"{len(path.force)} targets reached, {reachable} above the pull-off"

@@ -42,7 +42,7 @@ from .._validate import check_finite_positive
 from ..errors import ConvergenceError
 from .operators import operator_for
 
-__all__ = ["DETACHMENT_CONSTANT", "critical_stress", "AdhesivePath", "adhesive_path"]
+__all__ = ["DETACHMENT_CONSTANT", "critical_stress", "AdhesivePath", "adhesive_path", "adhesive_force_path"]
 
 #: ``c`` of the detachment criterion ``σ_c = √(c E* w/Δx)``, calibrated on JKR (module docstring)
 DETACHMENT_CONSTANT = 2.1
@@ -110,6 +110,72 @@ def _cg(apply, rhs, x, *, tol, maxiter):
     raise ConvergenceError(f"conjugate gradients did not reach tol = {tol:g} in {maxiter} iterations")
 
 
+class _Solver:
+    """The solve at one approach (module docstring) on one grid: what the displacement- and
+    force-controlled paths share."""
+
+    def __init__(self, z, *, length, e_star, work_of_adhesion, periodic, constant, tol, maxiter, max_updates):
+        z = np.asarray(z, dtype=float)
+        if z.ndim != 2 or z.shape[0] != z.shape[1]:
+            raise ValueError(f"z must be a square n x n array, got shape {z.shape}")
+        check_finite_positive("length", length)
+        n = z.shape[0]
+        self.spacing = length / n
+        self.sigma_c = critical_stress(e_star=e_star, work_of_adhesion=work_of_adhesion, spacing=self.spacing,
+                                       constant=constant)
+        self.operator = operator_for(n, length, e_star, periodic)
+        self.heights = z - z.min()
+        self.tol, self.maxiter, self.max_updates = tol, maxiter, max_updates
+
+    def empty(self):
+        """The state before first touch: ``(contact, pressure)``."""
+        return np.zeros(self.heights.shape, dtype=bool), np.zeros(self.heights.shape)
+
+    def settle(self, d: float, contact, pressure):
+        """``(contact, pressure, updates)`` at the approach *d* from the state ``(contact, pressure)``
+        (not modified)."""
+        contact, pressure = contact.copy(), pressure.copy()
+        heights, operator = self.heights, self.operator
+        for update in range(self.max_updates):
+            if not contact.any():
+                contact = heights <= d        # first touch: every cell the rigid approach reaches
+                pressure[:] = 0.0
+                if not contact.any():
+                    return contact, pressure, update + 1
+            target = (d - heights)[contact]
+
+            def apply(values, contact=contact):
+                field = np.zeros(heights.shape)
+                field[contact] = values
+                return operator(field)[contact]
+
+            pressure[~contact] = 0.0
+            pressure[contact] = _cg(apply, target, pressure[contact].copy(), tol=self.tol, maxiter=self.maxiter)
+            gap = heights - d + operator(pressure)
+            leave = contact & (pressure < -self.sigma_c)
+            join = ~contact & (gap < 0.0)
+            if not leave.any() and not join.any():
+                return contact, pressure, update + 1
+            contact = (contact & ~leave) | join
+            pressure[~contact] = 0.0
+        raise ConvergenceError(f"the contact set did not settle in {self.max_updates} updates at d = {d:g}")
+
+    def force(self, pressure) -> float:
+        return float(pressure.sum() * self.spacing**2)
+
+
+def _path(records, solver, pull_off, detach_depth) -> AdhesivePath:
+    arrays = {key: np.asarray([r[key] for r in records]) for key in
+              ("depth", "force", "contact_cells", "contact_radius", "iterations")}
+    return AdhesivePath(**arrays, pull_off_force=pull_off, detach_depth=detach_depth)
+
+
+def _record(solver, d, contact, pressure, updates) -> dict:
+    cells = int(np.count_nonzero(contact))
+    return {"depth": float(d), "force": solver.force(pressure), "contact_cells": cells,
+            "contact_radius": math.sqrt(cells * solver.spacing**2 / math.pi), "iterations": updates}
+
+
 def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: float, periodic: bool = False,
                   constant: float = DETACHMENT_CONSTANT, tol: float = 1e-10, maxiter: int = 2000,
                   max_updates: int = 2000) -> AdhesivePath:
@@ -139,53 +205,72 @@ def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
     ConvergenceError
         A solve or the contact set does not settle within its limits.
     """
-    z = np.asarray(z, dtype=float)
-    if z.ndim != 2 or z.shape[0] != z.shape[1]:
-        raise ValueError(f"z must be a square n x n array, got shape {z.shape}")
-    check_finite_positive("length", length)
-    n = z.shape[0]
-    spacing = length / n
-    sigma_c = critical_stress(e_star=e_star, work_of_adhesion=work_of_adhesion, spacing=spacing, constant=constant)
-    operator = operator_for(n, length, e_star, periodic)
-    heights = z - z.min()
-    contact = np.zeros(z.shape, dtype=bool)
-    pressure = np.zeros(z.shape)
-    out = {key: [] for key in ("depth", "force", "contact_cells", "contact_radius", "iterations")}
-    detach_depth = math.nan
+    solver = _Solver(z, length=length, e_star=e_star, work_of_adhesion=work_of_adhesion, periodic=periodic,
+                     constant=constant, tol=tol, maxiter=maxiter, max_updates=max_updates)
+    contact, pressure = solver.empty()
+    records, detach_depth = [], math.nan
     for d in np.asarray(depths, dtype=float):
-        for update in range(max_updates):
-            if not contact.any():
-                contact = heights <= d        # first touch: every cell the rigid approach reaches
-                pressure[:] = 0.0
-                if not contact.any():
-                    break
-            target = (d - heights)[contact]
-
-            def apply(values):
-                field = np.zeros(z.shape)
-                field[contact] = values
-                return operator(field)[contact]
-
-            pressure[~contact] = 0.0
-            pressure[contact] = _cg(apply, target, pressure[contact].copy(), tol=tol, maxiter=maxiter)
-            displacement = operator(pressure)
-            gap = heights - d + displacement
-            leave = contact & (pressure < -sigma_c)
-            join = ~contact & (gap < 0.0)
-            if not leave.any() and not join.any():
-                break
-            contact = (contact & ~leave) | join
-            pressure[~contact] = 0.0
-        else:
-            raise ConvergenceError(f"the contact set did not settle in {max_updates} updates at d = {d:g}")
-        cells = int(np.count_nonzero(contact))
-        if cells == 0 and math.isnan(detach_depth) and out["contact_cells"] and out["contact_cells"][-1] > 0:
+        contact, pressure, updates = solver.settle(float(d), contact, pressure)
+        records.append(_record(solver, d, contact, pressure, updates))
+        if records[-1]["contact_cells"] == 0 and math.isnan(detach_depth) and len(records) > 1 \
+                and records[-2]["contact_cells"] > 0:
             detach_depth = float(d)
-        out["depth"].append(float(d))
-        out["force"].append(float(pressure.sum() * spacing**2))
-        out["contact_cells"].append(cells)
-        out["contact_radius"].append(math.sqrt(cells * spacing**2 / math.pi))
-        out["iterations"].append(update + 1)
-    arrays = {key: np.asarray(value) for key, value in out.items()}
-    return AdhesivePath(**arrays, pull_off_force=float(arrays["force"].min()) if len(arrays["force"]) else math.nan,
-                        detach_depth=detach_depth)
+    pull_off = float(min(r["force"] for r in records)) if records else math.nan
+    return _path(records, solver, pull_off, detach_depth)
+
+
+def adhesive_force_path(z, forces, *, step: float, length: float, e_star: float, work_of_adhesion: float,
+                        periodic: bool = False, constant: float = DETACHMENT_CONSTANT, tol: float = 1e-10,
+                        maxiter: int = 2000, max_updates: int = 2000, force_tol: float = 1e-6,
+                        max_steps: int = 10000) -> AdhesivePath:
+    """The force-controlled path through the target *forces* (in path order; force): for each, the
+    approach is moved from the last one in steps of *step* (length) along the path's branch until
+    the force crosses the target, then bisected (every trial from the state before the crossing
+    step) until ``|F − target| ≤ force_tol · max(|target|, |F|)``, keyword-only.
+
+    On unloading, a target below the least force the branch holds cannot be reached: the contact
+    jumps off. The steps go on down the branch (past its least force, where the force rises
+    again; the discrete detachment makes it rise and fall by small steps on the way) until no cell
+    is left; the path ends there: ``pull_off_force`` is the least force met (the load-controlled
+    pull-off, to the resolution of *step*), ``detach_depth`` the approach where the last cell
+    left; later targets have no entry.
+    Other arguments as :func:`adhesive_path`.
+    """
+    check_finite_positive("step", step)
+    solver = _Solver(z, length=length, e_star=e_star, work_of_adhesion=work_of_adhesion, periodic=periodic,
+                     constant=constant, tol=tol, maxiter=maxiter, max_updates=max_updates)
+    d = 0.0
+    contact, pressure = solver.empty()
+    force = 0.0
+    least, records, detach_depth = math.inf, [], math.nan
+    for target in np.asarray(forces, dtype=float):
+        direction = 1.0 if target > force else -1.0
+        for _ in range(max_steps):
+            if abs(force - target) <= force_tol * max(abs(target), abs(force)):
+                break
+            d_next = d + direction * step
+            c_next, p_next, _ = solver.settle(d_next, contact, pressure)
+            f_next = solver.force(p_next)
+            least = min(least, f_next)
+            if (f_next - target) * direction >= 0:            # crossed: bisect within this step
+                low, high = (d, d_next) if direction > 0 else (d_next, d)
+                for _ in range(200):
+                    mid = 0.5 * (low + high)
+                    c_mid, p_mid, _ = solver.settle(mid, contact, pressure)
+                    f_mid = solver.force(p_mid)
+                    if abs(f_mid - target) <= force_tol * max(abs(target), abs(f_mid)):
+                        break
+                    if (f_mid - target) * direction >= 0:
+                        high, low = (mid, low) if direction > 0 else (high, mid)
+                    else:
+                        low, high = (mid, high) if direction > 0 else (low, mid)
+                d, contact, pressure, force = mid, c_mid, p_mid, f_mid
+                break
+            if direction < 0 and not c_next.any():   # the target was below every force of the branch
+                detach_depth = d_next
+                return _path(records, solver, float(least), detach_depth)
+            d, contact, pressure, force = d_next, c_next, p_next, f_next
+        else:
+            raise ConvergenceError(f"the force {target:g} was not reached in {max_steps} steps of {step:g}")
+        records.append(_record(solver, d, contact, pressure, 0))
+    return _path(records, solver, float(least) if records else math.nan, detach_depth)
