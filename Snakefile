@@ -53,7 +53,7 @@ rule all:
                 rules.models.output,
                 rules.figures.output,
             ]
-            if config["hurst"]
+            if STUDY.generated
             else []
         ),
         measured_targets(),

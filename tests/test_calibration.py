@@ -1,5 +1,5 @@
 """Calibration of the scorecard's own model (study.calibration) recovers the constants it was made with."""
-import json
+import math
 
 import numpy as np
 import pytest
@@ -7,7 +7,9 @@ import xarray as xr
 
 from roughcontact.models import superposition
 from roughcontact.study import calibration
+from roughcontact.study.config import resolve_config
 from roughcontact.study.io import write_groups
+from roughcontact.study.provenance import canonical_json
 
 FORCES = np.logspace(-6, -2, 13)
 HURST = [0.5, 0.8]
@@ -28,9 +30,11 @@ def study(tmp_path, monkeypatch):
     dims = ("hurst", "radius", "h_rms", "seed", "force")
     ds = xr.Dataset({"stiffness": (dims, k), "contact_cells": (dims, np.full(k.shape, 100))},
                     coords={"hurst": HURST, "radius": [0.5], "h_rms": [1e-2], "seed": [0, 1, 2], "force": FORCES})
-    cfg = {"grid": {"n": 129, "length": 1.0}, "e_star": 1.0, "fit": {"zeta": {"min_cells": 20}}}
+    cfg = resolve_config({"grid": {"n": 129}, "hurst": HURST, "radius": [0.5], "h_rms": [1e-2], "seeds": 3,
+                          "forces": {"sphere": {"from": float(FORCES[0]), "to": float(FORCES[-1]),
+                                                "count": len(FORCES)}}, "fit": {"zeta": {"min_cells": 20}}})
     (tmp_path / "results").mkdir()
-    write_groups(tmp_path / "results" / "stiffness.nc", {"sphere": ds}, {"config": json.dumps(cfg)})
+    write_groups(tmp_path / "results" / "stiffness.nc", {"sphere": ds}, {"config": canonical_json(cfg)})
     return tmp_path
 
 
@@ -50,6 +54,7 @@ def test_deviation_of_the_exact_model_is_zero(study):
 def test_no_sphere_runs_rejected(tmp_path):
     (tmp_path / "results").mkdir()
     write_groups(tmp_path / "results" / "stiffness.nc", {"flat": xr.Dataset({"x": ("a", [1.0])})},
-                 {"config": json.dumps({"grid": {"n": 9, "length": 1.0}, "e_star": 1.0})})
+                 {"config": canonical_json(resolve_config({"grid": {"n": 33}, "hurst": [0.7], "radius": [math.inf],
+                                                           "h_rms": [1e-2], "seeds": 2}))})
     with pytest.raises(ValueError, match="no resolved sphere loads"):
         calibration.calibrate([tmp_path])

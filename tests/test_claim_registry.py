@@ -19,10 +19,10 @@ def stiffening(inputs):
     bootstrap-over-seeds interval; consistent when the whole interval lies above 0."""
     ds = inputs.groups["sphere"]
     k = ds["stiffness"].squeeze().transpose("seed", "force").values
-    fit = inputs.config["fit"]["zeta"]
+    fit = inputs.study.fit.zeta
     rise = lambda mean: (np.diff(mean, axis=-1) / mean[..., :-1]).min(-1)  # noqa: E731
-    samples = rise(k[bootstrap_indices(k.shape[0], int(fit["bootstrap"]))].mean(1))
-    low, high = interval(samples, float(fit["confidence"]))
+    samples = rise(k[bootstrap_indices(k.shape[0], fit.bootstrap)].mean(1))
+    low, high = interval(samples, fit.confidence)
     return [row("x", "k rises with F at every load", float(rise(k.mean(0))), low, high, 0.0,
                 verdict_bound(0.0, low, high, side="above"), hurst=float(ds["hurst"][0]))]
 
@@ -40,10 +40,7 @@ def _table(groups):
     reps = xr.Dataset()
     zeta = pd.DataFrame(columns=["hurst", "zeta", "zeta_ci_low", "zeta_ci_high", "zeta_estimate", "source",
                                  "n_seeds", "n_points", "force_min", "force_max"])
-    cfg = {**CFG, "hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": list(range(4)), "rolloff": [None],
-           "cutoff": [None], "hardness": [None], "exponent": [2.0],
-           "fit": {**CFG["fit"], "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 3.0}}}
-    return claims.claims_table(pd.DataFrame(), reps, zeta, cfg, groups)
+    return claims.claims_table(pd.DataFrame(), reps, zeta, CFG, groups)
 
 
 def test_registry_holds_the_claims_of_the_study():

@@ -17,6 +17,7 @@ xr = pytest.importorskip("xarray")
 
 from roughcontact import cli, surfaces
 from roughcontact.study import config, measured, schema
+from roughcontact.study.study_settings import ForceRange, UnitSettings
 
 E_STAR = 100.0   # GPa
 PIXEL = 0.1      # um
@@ -61,7 +62,7 @@ def test_same_file_as_the_pipeline_job(scan, tmp_path, clean_tmp, radius, index,
         "radius": [radius], "forces": {kind: rng}, "topography": [{"file": "scan.nc", "detrend": "none"}]},
         base_dir=tmp_path)
     surface = tmp_path / "surface.nc"
-    measured.prepare_surface(cfg, cfg["topography"][0], surface)
+    measured.prepare_surface(cfg["topography"][0], surface, length_unit=cfg["units"]["length"], tile=cfg["tile"])
     expected = tmp_path / "pipeline.nc"
     measured.run_job(measured.job_of(cfg, "topography", "scan", radius, index), surface, expected)
 
@@ -146,10 +147,12 @@ def test_edge_message_names_the_flag(scan, tmp_path, clean_tmp, capsys):
 def test_units_spelled_with_mu(scan):
     args = cli.build_parser().parse_args(["measured", str(scan), "--unit", "µm", "--radius", "inf", "--e-star", "1",
                                           "--e-star-unit", "MPa", "-o", "x.nc"])
-    cfg = cli.measured_config_from_args(args)
-    assert cfg["units"] == {"length": "um", "e_star": "MPa"} and cfg["tile"] is None
+    study = cli.measured_study_from_args(args)
+    assert study.units == UnitSettings(length="um", e_star="MPa"), study.units
+    assert study.tile is None, study.tile
     default = schema.default_of(schema.load_schema(None), ["forces", "flat"])
-    assert cfg["forces"]["flat"] == {k: default[k] for k in ("from", "to", "count")}   # the schema's defaults
+    assert study.forces["flat"] == ForceRange(default["from"], default["to"], default["count"]), \
+        "the schema's defaults"
 
 
 def test_measured_is_a_documented_command():

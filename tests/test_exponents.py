@@ -9,6 +9,8 @@ import pytest
 
 from roughcontact.study import exponents
 from roughcontact.study.claims.exponents import exponent_rows
+from roughcontact.study.config import resolve_config
+from roughcontact.study.study_settings import StudySettings
 from roughcontact.study.statistics import bootstrap_indices
 
 FORCE = np.geomspace(1e-6, 1e-2, 13)
@@ -47,8 +49,11 @@ def test_the_interval_contains_the_exponent_of_a_noisy_law():
 
 
 def _cfg(rolloff):
-    return {"grid": {"n": 129, "length": 1.0}, "seeds": list(range(8)), "hurst": [0.8],
-            "radius": [0.5, math.inf], "rolloff": rolloff}
+    """The study the tables stand for: flat and sphere runs of H = 0.8 on 129², 8 seeds."""
+    return StudySettings.of(resolve_config({
+        "grid": {"n": 129}, "seeds": 8, "hurst": [0.8], "h_rms": [9e-3], "radius": [0.5, math.inf],
+        "rolloff": rolloff, "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 13},
+                                       "flat": {"from": 1e-6, "to": 1e-4, "count": 13}}}))
 
 
 def _table(values, ci):

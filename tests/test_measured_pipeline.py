@@ -128,7 +128,7 @@ def test_scan_smaller_than_the_tile(tmp_path):
     cfg = _resolved(tmp_path, topography=["scan.nc"], tile=32)
     out = tmp_path / "out" / "surface.nc"
     with pytest.raises(InputFileError) as err:
-        measured.prepare_surface(cfg, cfg["topography"][0], out)
+        measured.prepare_surface(cfg["topography"][0], out, length_unit=cfg["units"]["length"], tile=cfg["tile"])
     assert "fewer than a tile of tile = 32" in _one_line(err)
     assert not out.parent.exists() or not any(out.parent.iterdir())
 
@@ -148,7 +148,7 @@ def test_constant_scan(tmp_path):
     cfg = _resolved(tmp_path, topography=["bad.nc"])
     out = tmp_path / "out" / "surface.nc"
     with pytest.raises(InputFileError) as err:
-        measured.prepare_surface(cfg, cfg["topography"][0], out)
+        measured.prepare_surface(cfg["topography"][0], out, length_unit=cfg["units"]["length"], tile=cfg["tile"])
     assert "heights are constant" in _one_line(err)
     assert not out.exists()
 
@@ -199,7 +199,7 @@ def test_scans_the_stage_rejects(tmp_path, write, needle):
     cfg = _resolved(tmp_path, topography=[name])
     out = tmp_path / "out" / "surface.nc"
     with pytest.raises(InputFileError) as err:
-        measured.prepare_surface(cfg, cfg["topography"][0], out)
+        measured.prepare_surface(cfg["topography"][0], out, length_unit=cfg["units"]["length"], tile=cfg["tile"])
     assert needle in _one_line(err)
     assert not out.exists()
 
@@ -207,7 +207,7 @@ def test_scans_the_stage_rejects(tmp_path, write, needle):
 def test_non_square_pixels_with_interpolate(tmp_path):
     _non_square(tmp_path / "bad.nc")
     cfg = _resolved(tmp_path, topography=[{"file": "bad.nc", "interpolate": True}])
-    measured.prepare_surface(cfg, cfg["topography"][0], tmp_path / "surface.nc")
+    measured.prepare_surface(cfg["topography"][0], tmp_path / "surface.nc", length_unit=cfg["units"]["length"], tile=cfg["tile"])
     assert measured.read_surface(tmp_path / "surface.nc")[0].shape == (32, 32)
 
 
@@ -218,7 +218,7 @@ def test_physical_size_from_neither_file_nor_config(tmp_path):
     assert "'topography[0].size'" in _one_line(err) and "gives no physical size" in _one_line(err)
     out = tmp_path / "surface.nc"
     cfg = _resolved(tmp_path, topography=[{"file": "raw.npy", "size": 6400, "unit": "nm"}])
-    measured.prepare_surface(cfg, cfg["topography"][0], out)
+    measured.prepare_surface(cfg["topography"][0], out, length_unit=cfg["units"]["length"], tile=cfg["tile"])
     _, length, attrs = measured.read_surface(out)
     assert length == pytest.approx(6.4) and attrs["units_length"] == "um" and attrs["tile_count"] == 4
 
@@ -238,7 +238,7 @@ def test_loads_whose_contact_would_reach_the_scan_edge(tmp_path):
     cfg = _resolved(tmp_path, topography=["scan.nc"],
                     forces={"sphere": {"from": 1e-3, "to": 0.5, "count": 3}})
     surface = tmp_path / "surface.nc"
-    measured.prepare_surface(cfg, cfg["topography"][0], surface)
+    measured.prepare_surface(cfg["topography"][0], surface, length_unit=cfg["units"]["length"], tile=cfg["tile"])
     out = tmp_path / "run.nc"
     with pytest.raises(IndentError) as err:
         measured.run_job(measured.job_of(cfg, "topography", "scan", 20.0, 0), surface, out)

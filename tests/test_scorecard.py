@@ -10,9 +10,14 @@ import xarray as xr
 
 from roughcontact.models import paper
 from roughcontact.study import scorecard
+from roughcontact.study.config import resolve_config
+from roughcontact.study.study_settings import StudySettings
 
-CFG = {"grid": {"n": 129, "length": 1.0}, "e_star": 1.0,
-       "fit": {"zeta": {"min_cells": 20, "bootstrap": 200, "confidence": 0.95}}}
+#: the study the groups stand for: one sphere combination on 129², 20 cells, 200 resamples, 95 %
+CFG = StudySettings.of(resolve_config({
+    "grid": {"n": 129}, "hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 4,
+    "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 9}},
+    "fit": {"zeta": {"min_cells": 20, "bootstrap": 200}, "slopes": {"high_min_ratio": 3.0}}}))
 HURST, RADIUS, H_RMS, ZETA = 0.7, 0.5, 9e-3, 1.05
 FORCE = np.geomspace(1e-6, 1e-2, 9)
 
@@ -113,3 +118,41 @@ def test_a_model_off_a_sharp_ensemble_is_outside_its_band():
     """Every seed at 1.2 x eq. 16 (no scatter: the band is [0, 0]): eq16_fitted is 1/1.2 - 1 off."""
     row = _row(_constant_offset_table(np.full(4, 1.2)), "eq16_fitted")
     assert row["inside_band"] == 0.0, f"inside_band {row['inside_band']}"
+
+
+def _grid_table(g: float) -> pd.DataFrame:
+    """A grid error table (study.grid_error) of the one combination: k_coarse/k − 1 = g at every load."""
+    return pd.DataFrame({"hurst": HURST, "radius": RADIUS, "exponent": 2.0, "h_rms": H_RMS, "rolloff": 1.0,
+                         "cutoff": 0.0, "hardness": math.inf, "force_normalized": FORCE, "grid_error": g})
+
+
+def _with_grid(scale, g):
+    zeta = pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]})
+    return _row(scorecard.scorecard(_groups(scale), zeta, CFG, _grid_table(g))[0], "eq16_fitted")
+
+
+def test_grid_error_columns_only_with_a_grid_error():
+    row = _row(_constant_offset_table(np.ones(4)), "eq16_fitted")
+    assert "grid_error_max" not in row.index, "no grid.coarse: no grid-error column"
+
+
+def test_grid_error_max_is_the_largest_bound():
+    """g = −4 % at every load: the largest |g| over the resolved loads is 0.04 (to round-off)."""
+    assert _with_grid(np.ones(4), -0.04)["grid_error_max"] == pytest.approx(0.04, rel=1e-12), "|g|"
+
+
+def test_grid_error_explains_an_offset_the_band_does_not():
+    """Seeds at 1.08 ... 1.12 × eq. 16 (a −9.1 % model deviation, band ±1 %): outside the sampling band
+    at every load and a significant systematic deviation; with a grid error of 12 % at every load the
+    widened band, √(1 %² + 12 %²), holds it and the verdict with the grid error is consistent."""
+    row = _with_grid(np.linspace(1.08, 1.12, 8), 0.12)
+    assert row["inside_band"] == pytest.approx(0.0, abs=1e-12), "outside the sampling band"
+    assert row["inside_band_total"] == pytest.approx(1.0, abs=1e-12), "inside the band with the grid error"
+    assert row["systematic_high_total_verdict"] == "consistent", row.to_dict()
+
+
+def test_small_grid_error_leaves_a_model_error():
+    """The same offset with a 1 % grid error: still a model error (differs) with the grid error added."""
+    row = _with_grid(np.linspace(1.08, 1.12, 8), 0.01)
+    assert row["systematic_high_total_verdict"] == "differs", row.to_dict()
+    assert row["grid_resolved"] == pytest.approx(0.0, abs=1e-12), "1 % is more than half a ±1 % band"

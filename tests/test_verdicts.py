@@ -15,6 +15,9 @@ from roughcontact.study import verdicts
 RADIUS, HURST, H_RMS, LENGTH = 0.5, 0.7, 9e-3, 1.0
 # presets/paper.yaml's loads that touch >= 20 contact cells on 513^2 (1e-5 ... 1e-2, 13 loads)
 FORCES = np.geomspace(1e-7, 1e-2, 21)[8:]
+#: the combination and the windows of the tests: 20 cells, slopes below 0.3 F_tr and above 5 F_tr (the defaults)
+CASE = verdicts.SphereCase(hurst=HURST, radius=RADIUS, h_rms=H_RMS, length=LENGTH)
+WINDOWS = verdicts.VerdictWindows(min_cells=20, low_max_ratio=0.3, high_min_ratio=5.0)
 # Per-seed scatter of k measured on the paper preset (50 seeds, 2026-11-23): relative standard deviation
 # 0.22 at F = 1e-5 falling to 0.05 at 1e-2, and correlation 0.9 between neighbouring loads of one seed.
 SCATTER = 0.22 * (FORCES / 1e-5) ** -0.21
@@ -73,9 +76,8 @@ def test_crossover_estimator_bias_and_coverage():
 
 def _verdicts_of(forces, k_seeds, cells=100):
     return verdicts.sphere_verdicts(
-        forces, k_seeds, np.full(k_seeds.shape, cells), hurst=HURST, radius=RADIUS, h_rms=H_RMS, length=LENGTH,
-        zeta_fit=1.0, indices=statistics.bootstrap_indices(k_seeds.shape[0], 200), min_cells=20,
-        low_max_ratio=0.3, high_min_ratio=5.0)
+        forces, k_seeds, np.full(k_seeds.shape, cells), case=CASE, zeta_fit=1.0,
+        indices=statistics.bootstrap_indices(k_seeds.shape[0], 200), windows=WINDOWS)
 
 
 def test_loads_above_the_crossover_are_unresolved():
@@ -93,9 +95,8 @@ def test_unresolved_loads_are_left_out():
     k = paper.stiffness_from_force(FORCES, radius=RADIUS, hurst=HURST, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=1.0)
     cells = np.where(np.arange(FORCES.size) < FORCES.size - 3, 5, 100)
     row = verdicts.sphere_verdicts(
-        FORCES, np.tile(k, (4, 1)), np.tile(cells, (4, 1)), hurst=HURST, radius=RADIUS, h_rms=H_RMS,
-        length=LENGTH, zeta_fit=1.0, indices=statistics.bootstrap_indices(4, 50), min_cells=20,
-        low_max_ratio=0.3, high_min_ratio=5.0).row
+        FORCES, np.tile(k, (4, 1)), np.tile(cells, (4, 1)), case=CASE, zeta_fit=1.0,
+        indices=statistics.bootstrap_indices(4, 50), windows=WINDOWS).row
     assert row["n_loads_resolved"] == 3, row["n_loads_resolved"]
     assert row["verdict_estimate"] == "unresolved", row["verdict_estimate"]
 
@@ -131,8 +132,8 @@ def test_slopes_of_a_body_shallower_than_the_roughness():
     forces = np.geomspace(1e-5, 5e-3, 12)
     k = paper.stiffness_from_force(forces, radius=RADIUS, hurst=1.4, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=zeta, exponent=1.0)
     row = verdicts.sphere_verdicts(
-        forces, np.tile(k, (4, 1)), np.full((4, forces.size), 100), hurst=1.4, radius=RADIUS, h_rms=H_RMS,
-        length=LENGTH, exponent=1.0, zeta_fit=zeta, indices=statistics.bootstrap_indices(4, 50), min_cells=20,
-        low_max_ratio=0.3, high_min_ratio=5.0).row
+        forces, np.tile(k, (4, 1)), np.full((4, forces.size), 100),
+        case=verdicts.SphereCase(hurst=1.4, radius=RADIUS, h_rms=H_RMS, length=LENGTH, exponent=1.0), zeta_fit=zeta,
+        indices=statistics.bootstrap_indices(4, 50), windows=WINDOWS).row
     assert row["slope_low_theory"] == pytest.approx(1 / 2), "low-force asymptote of m < H"
     assert row["slope_high_theory"] == pytest.approx(1 / 2.4), "high-force asymptote of m < H"

@@ -23,6 +23,8 @@ from .study.axes import AXES
 from .study.measured.config import (FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_newtons,
                                     to_pascals)
 from .study.settings import JobSettings, job_settings
+from .study.config import study_settings
+from .study.study_settings import StudySettings
 
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
 _DETRENDS = ("height", "slope", "curvature", "center", "none")
@@ -213,14 +215,14 @@ def settings_from_args(args) -> JobSettings:
            {"e_star": base["e_star"]} if "e_star" in base else {}),
         **({"fit": base["fit"]} if "fit" in base else {}),
     }
-    resolved = config.resolve_config(cfg)
-    run = {**{name: resolved[name][0] for name in AXES}, "seed": args.seed}
-    return job_settings(resolved, run)
+    study = study_settings(cfg)
+    run = {**{name: getattr(study, name)[0] for name in AXES}, "seed": args.seed}
+    return job_settings(study, run)
 
 
-def measured_config_from_args(args) -> dict:
-    """The resolved config of ``roughcontact measured``: what the pipeline resolves for a config
-    of this one scan and radius (:func:`roughcontact.study.config.resolve_config`; raises
+def measured_study_from_args(args) -> StudySettings:
+    """The settings of ``roughcontact measured``: what the pipeline resolves for a config of this
+    one scan and radius (:func:`roughcontact.study.study_settings.study_settings`; raises
     ConfigError). The scan is ``topography[0]``; forces and solver settings not given take the
     schema's defaults."""
     unit = plain_unit(args.unit)
@@ -269,7 +271,7 @@ def measured_config_from_args(args) -> dict:
            "topography": [entry],
            "tile": args.tile, "hurst": [], "h_rms": [], "radius": [args.radius], "forces": {kind: forces},
            "solver": solver}
-    return config.resolve_config(raw, base_dir=os.getcwd())
+    return study_settings(raw, base_dir=os.getcwd())
 
 
 def _measured(args) -> int:
@@ -285,10 +287,10 @@ def _measured(args) -> int:
         return 2
 
     try:
-        cfg = measured_config_from_args(args)
+        study = measured_study_from_args(args)
     except ConfigError as err:
         return bad(_flagged(err, {**_indent_flags(), **_MEASURED_FLAGS}))
-    entry = cfg["topography"][0]
+    entry = study.topography[0]
     handler = None
     if not args.quiet:
         handler = logging.StreamHandler(sys.stderr)
@@ -300,19 +302,19 @@ def _measured(args) -> int:
         with logs.log_to(args.log), tempfile.TemporaryDirectory(prefix="roughcontact-measured-") as tmp:
             surface = os.path.join(tmp, "surface.nc")
             try:
-                measured.prepare_surface(cfg, entry, surface)
+                measured.prepare_surface(entry, surface, length_unit=study.units.length, tile=study.tile)
             except InputFileError as err:
                 return bad(err.reworded({"length": "--size"}))
             except ImportError as err:   # no SurfaceTopography: not the input's fault
                 print(f"roughcontact measured: FAILED: {' '.join(str(err).split())}", file=sys.stderr)
                 return 1
             if args.force_unit is not None:   # forces in a unit: F/(E* L^2) with L the tile's side
-                _normalise_forces(cfg, surface, args.force_unit)
+                study = _normalise_forces(study, surface, args.force_unit)
             count = measured.tile_count(surface)
             if not 0 <= args.index < count:
-                return bad(f"--index {args.index}: the scan {os.path.basename(entry['file'])} has {count} tile(s) "
-                           f"of tile = {cfg['tile'] or 'the whole square'}; allowed: 0 <= --index <= {count - 1}")
-            job = measured.job_of(cfg, "topography", entry["name"], cfg["radius"][0], args.index,
+                return bad(f"--index {args.index}: the scan {os.path.basename(entry.file)} has {count} tile(s) "
+                           f"of tile = {study.tile or 'the whole square'}; allowed: 0 <= --index <= {count - 1}")
+            job = measured.job_of(study, "topography", entry.name, study.radius[0], args.index,
                                   force_unit=args.force_unit or "N")
             try:
                 out = measured.run_job(job, surface, args.output)
@@ -331,17 +333,22 @@ def _measured(args) -> int:
     return 0
 
 
-def _normalise_forces(cfg: dict, surface, force_unit: str) -> None:
-    """Forces given in *force_unit* (the resolved config holds them as given) as ``F/(E* L²)``
-    with ``L`` the side of a tile of the prepared *surface* file."""
+def _normalise_forces(study: StudySettings, surface, force_unit: str) -> StudySettings:
+    """*study* with its forces given in *force_unit* (as the settings hold them) as ``F/(E* L²)``,
+    ``L`` the side of a tile of the prepared *surface* file."""
+    import dataclasses
+    import types
+
     from .study import measured
 
     tile_length = float(measured.read_surface(surface)[2]["tile_length"])          # units.length
-    unit_force = (cfg["e_star"] * to_pascals(cfg["units"]["e_star"])
-                  * (tile_length * to_metres(cfg["units"]["length"])) ** 2)      # N per F/(E* L^2)
-    forces = cfg["forces"][runs.kind_of(cfg["radius"][0])]
-    for end in ("from", "to"):
-        forces[end] = forces[end] * to_newtons(force_unit) / unit_force
+    unit_force = (study.e_star * to_pascals(study.units.e_star)
+                  * (tile_length * to_metres(study.units.length)) ** 2)      # N per F/(E* L^2)
+    kind = runs.kind_of(study.radius[0])
+    given = study.forces[kind]
+    scale = to_newtons(force_unit) / unit_force
+    forces = {**study.forces, kind: dataclasses.replace(given, start=given.start * scale, stop=given.stop * scale)}
+    return dataclasses.replace(study, forces=types.MappingProxyType(forces))
 
 
 def _flagged(err: ConfigError, flags: dict | None = None) -> str:
@@ -359,18 +366,18 @@ def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     if args.command == "check-config":
         try:
-            cfg = config.resolve_config(config.load_config(args.config),
-                                        base_dir=os.path.dirname(os.path.abspath(args.config)))
+            study = study_settings(config.load_config(args.config),
+                                   base_dir=os.path.dirname(os.path.abspath(args.config)))
         except ConfigError as err:
             print(config.error_line(err), file=sys.stderr)
             return 2
         measured = ""
-        if cfg["topography"] or cfg["spectrum"]:
-            measured = (f"; measured: {len(cfg['topography'])} scan(s) x {len(cfg['radius'])} radii x their tiles, "
-                        f"{len(cfg['spectrum'])} spectrum(s) x {len(cfg['radius'])} radii x "
-                        f"{len(cfg['seeds']) if cfg['spectrum'] else 0} seeds")
-        print(f"{args.config}: valid; {len(runs.runs(cfg))} indent jobs "
-              f"({len(runs.combinations(cfg))} (H, R, h_rms) x {len(cfg.get('seeds', []))} seeds){measured}")
+        if study.measured:
+            measured = (f"; measured: {len(study.topography)} scan(s) x {len(study.radius)} radii x their tiles, "
+                        f"{len(study.spectrum)} spectrum(s) x {len(study.radius)} radii x "
+                        f"{len(study.seeds) if study.spectrum else 0} seeds")
+        print(f"{args.config}: valid; {len(runs.runs(study))} indent jobs "
+              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds){measured}")
         return 0
     if args.command == "measured":
         return _measured(args)

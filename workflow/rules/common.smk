@@ -20,6 +20,7 @@ from roughcontact.study import (
     schema,
     settings as study_settings,
 )  # noqa: E402
+from roughcontact.study.study_settings import StudySettings, coarse_config  # noqa: E402
 from roughcontact.study.measured import config as measured_inputs  # noqa: E402
 
 try:
@@ -34,29 +35,51 @@ except ConfigError as err:
 validate(C, schema.schema_file())
 config.clear()
 config.update(C)  # the report and the jobs see the resolved values
+# the same, typed, for the input functions and params below (jobs get the mapping: it is the
+# resolved configuration their files record)
+STUDY = StudySettings.of(config)
+# the companion study of the grid error (grid.coarse): the same runs on the coarse grid
+COARSE_CONFIG = coarse_config(config) if STUDY.grid.coarse is not None else None
+COARSE = StudySettings.of(COARSE_CONFIG) if COARSE_CONFIG is not None else None
 
 # The workflow's paths: one run file, log and benchmark per (combination, seed).
 RUN_PATTERN = "results/runs/{combo}/seed{seed}.nc"
 LOG_PATTERN = "logs/indent/{combo}_seed{seed}.log"
 # Snakemake's per-job benchmark (wall seconds, peak RSS max_rss in MB) of each run
 BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_seed{seed}.tsv"
+# ... and of the companion study on the coarse grid (grid.coarse)
+COARSE_RUN_PATTERN = "results/indent_coarse/{combo}/seed{seed}.nc"
+COARSE_LOG_PATTERN = "logs/indent_coarse/{combo}_seed{seed}.log"
+COARSE_BENCHMARK_PATTERN = "results/benchmarks/indent_coarse/{combo}_seed{seed}.tsv"
 FIGURE_DIR = "results/figures"
 CAPTION_DIR = "../report"  # relative to workflow/rules/
 
 
 def run_files(wildcards):
     """Every run file of the resolved config, in the order merge expects."""
-    return study_runs.run_paths(config, RUN_PATTERN)
+    return study_runs.run_paths(STUDY, RUN_PATTERN)
+
+
+def coarse_run_files(wildcards):
+    """Every run file of the companion study on grid.coarse, in the order merge expects."""
+    if COARSE is None:
+        raise ValueError("grid.coarse is not set: no coarse runs")
+    return study_runs.run_paths(COARSE, COARSE_RUN_PATTERN)
+
+
+def grid_error_table(wildcards):
+    """The grid error table where grid.coarse is set (the models rule's optional input)."""
+    return rules.grid_error.output.csv if COARSE is not None else []
 
 
 # Scheduler resources of one indent job; both grow with the attempt: a job killed over a
 # limit is retried with more.
 def indent_mem_mb(wildcards, attempt):
-    return study_runs.indent_resources(config)["mem_mb"] * attempt
+    return study_runs.indent_resources(STUDY)["mem_mb"] * attempt
 
 
 def indent_runtime(wildcards, attempt):
-    return study_runs.indent_resources(config)["runtime"] * attempt
+    return study_runs.indent_resources(STUDY)["runtime"] * attempt
 
 
 # The measured inputs (workflow/rules/measured.smk): scans by name, spectra by name, radii.
@@ -64,9 +87,10 @@ from roughcontact.study import (
     measured as study_measured,
 )  # noqa: E402  (numpy only; xarray, SurfaceTopography inside the jobs)
 
+# (the entries as the resolved configuration holds them: the measured_surface job gets its own)
 TOPOGRAPHY = {e["name"]: e for e in config["topography"]}
 SPECTRUM = {e["name"]: e for e in config["spectrum"]}
-RADII = [study_runs.format_value(r) for r in config["radius"]]
+RADII = [study_runs.format_value(r) for r in STUDY.radius]
 
 
 def tiles_of(wildcards):

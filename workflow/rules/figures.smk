@@ -3,7 +3,7 @@ from roughcontact.study import (
     figures as _figures,
 )  # noqa: E402  (matplotlib only inside make_figures)
 
-FIGURE_SPECS = _figures.figure_specs(config)
+FIGURE_SPECS = _figures.figure_specs(STUDY)
 
 
 rule figures:

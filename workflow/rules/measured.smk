@@ -35,7 +35,7 @@ rule measured_indent:
     threads: 1
     params:
         job=lambda wc: study_measured.job_of(
-            config, "topography", wc.topo, float(wc.radius), int(wc.tile)
+            STUDY, "topography", wc.topo, float(wc.radius), int(wc.tile)
         ),
     script:
         "../scripts/measured_indent.py"
@@ -74,7 +74,7 @@ rule spectrum_indent:
     threads: 1
     params:
         job=lambda wc: study_measured.job_of(
-            config, "spectrum", wc.spec, float(wc.radius), int(wc.seed)
+            STUDY, "spectrum", wc.spec, float(wc.radius), int(wc.seed)
         ),
     script:
         "../scripts/measured_indent.py"
@@ -86,7 +86,7 @@ rule spectrum_merge:
         runs=expand(
             rules.spectrum_indent.output.run,
             radius=RADII,
-            seed=config.get("seeds", []),
+            seed=STUDY.seeds,
             allow_missing=True,
         ),
     output:

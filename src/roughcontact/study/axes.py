@@ -22,13 +22,19 @@ from typing import Callable
 
 from ..errors import ConfigError
 
-__all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES"]
+__all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES", "kind_of"]
 
 #: where an axis acts on a run: the roughness of the surface (an argument of
 #: :func:`roughcontact.surfaces.self_affine` and :func:`~roughcontact.surfaces.rough_sphere`),
 #: the body it is superposed on (an argument of ``rough_sphere`` only), or the contact solver
 #: (an argument of :func:`roughcontact.bem.iter_load_path`)
 ROLES = ("roughness", "body", "solver")
+
+
+def kind_of(radius) -> str:
+    """The surface kind of a radius: ``"sphere"`` for a finite radius (free half-space),
+    ``"flat"`` for ``inf`` (a nominally flat surface on the periodic half-space)."""
+    return "sphere" if math.isfinite(radius) else "flat"
 
 
 @dataclasses.dataclass(frozen=True)

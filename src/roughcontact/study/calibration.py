@@ -31,6 +31,7 @@ from scipy.optimize import least_squares
 
 from ..models import superposition
 from .ensemble import resolved
+from .study_settings import StudySettings
 from .io import read_groups
 from .zeta.fit import paper_setting
 
@@ -48,11 +49,11 @@ def ensemble_points(study) -> list[dict]:
 
     path = Path(study) / "results" / "stiffness.nc"
     with xr.open_datatree(path, engine="netcdf4") as tree:
-        cfg = json.loads(tree.attrs["config"])
+        study_of_file = StudySettings.of(json.loads(tree.attrs["config"]))
     groups = read_groups(path)
     if "sphere" not in groups:
         return []
-    length, e_star = cfg["grid"]["length"], cfg["e_star"]
+    length, e_star = study_of_file.grid.length, study_of_file.e_star
     ds, _ = paper_setting(groups["sphere"], length)
     out = []
     for hurst in ds["hurst"].values:
@@ -60,11 +61,11 @@ def ensemble_points(study) -> list[dict]:
             for h_rms in ds["h_rms"].values:
                 sub = ds.sel(hurst=hurst, radius=radius, h_rms=h_rms).transpose("seed", "force")
                 k = sub["stiffness"].values
-                use = resolved(sub["contact_cells"].values.mean(0), cfg["fit"]["zeta"]["min_cells"])
+                use = resolved(sub["contact_cells"].values.mean(0), study_of_file.fit.zeta.min_cells)
                 mean = k.mean(0)
                 error = k.std(0, ddof=1) / math.sqrt(k.shape[0]) / mean
                 out.append({"study": Path(study).name, "hurst": float(hurst), "radius": float(radius),
-                            "h_rms": float(h_rms), "length": length, "e_star": e_star, "n": cfg["grid"]["n"],
+                            "h_rms": float(h_rms), "length": length, "e_star": e_star, "n": study_of_file.grid.n,
                             "force": sub["force"].values[use], "stiffness": mean[use],
                             "relative_error": np.maximum(error[use], MIN_RELATIVE_ERROR)})
     return out

@@ -37,10 +37,10 @@ import numpy as np
 from ..errors import ConfigError
 from ..models import paper
 from ..models.elasticity import effective_modulus
-from .axes import AXES
+from .axes import AXES, kind_of
 from .limits import full_contact_slope
 from .measured.config import resolve_inputs
-from .runs import kind_of
+from .study_settings import StudySettings
 from .schema import (
     check_finite,
     coerce,
@@ -55,6 +55,7 @@ __all__ = [
     "error_line",
     "load_config",
     "resolve_config",
+    "study_settings",
 ]
 
 
@@ -119,6 +120,11 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
         raise ConfigError(f"config key 'grid.realization_of' = {fine} is not allowed; allowed: null or a grid of at "
                           f"least grid.n = {cfg['grid']['n']} points (the finer grid whose surfaces are pressed)",
                           key="grid.realization_of")
+    coarse = cfg["grid"].get("coarse")   # absent: no grid error (resolved configs unchanged)
+    if coarse is not None and int(coarse) >= cfg["grid"]["n"]:
+        raise ConfigError(f"config key 'grid.coarse' = {coarse} is not allowed; allowed: null or a grid of fewer "
+                          f"than grid.n = {cfg['grid']['n']} points (the same surfaces on a coarser grid)",
+                          key="grid.coarse")
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
     if isinstance(cfg["e_star"], dict):   # the two bodies: E* of eq. 4.22 of Johnson (1985)
         bodies = cfg["e_star"]
@@ -192,3 +198,9 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
         if axis.check is not None:
             axis.check(cfg, kinds)
     return cfg
+
+
+def study_settings(raw: dict, *, base_dir: str | os.PathLike | None = None) -> StudySettings:
+    """Resolve a raw configuration (:func:`resolve_config`: one-line :class:`ConfigError` on bad
+    input) and type it once (:class:`~roughcontact.study.study_settings.StudySettings`)."""
+    return StudySettings.of(resolve_config(raw, base_dir=base_dir))

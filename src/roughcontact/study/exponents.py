@@ -20,6 +20,7 @@ import numpy as np
 from .plotting import pyplot, save_png
 from .ensemble import resolved
 from .statistics import bootstrap_indices, interval
+from .study_settings import StudySettings
 
 __all__ = ["local_exponents", "exponent_table", "curves", "run_exponents"]
 
@@ -73,34 +74,35 @@ def _combinations(ds):
                ds.isel(dict(zip(axes, position))).transpose("seed", "force"))
 
 
-def exponent_table(groups: dict, cfg: dict):
+def exponent_table(groups: dict, study):
     """One row per (kind, combination, resolved load): ``local_exponent`` and its interval
     (``exponent`` is the body's exponent m, a sweep axis)."""
     import pandas as pd
 
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    fit = cfg["fit"]
+    study = StudySettings.of(study)
+    L, E = study.grid.length, study.e_star
+    fit = study.fit
     rows = []
     for kind, ds in groups.items():
-        indices = bootstrap_indices(ds.sizes["seed"], int(fit["zeta"]["bootstrap"]))
+        indices = bootstrap_indices(ds.sizes["seed"], fit.zeta.bootstrap)
         force = ds["force"].values / (E * L**2)
         for combo, sub in _combinations(ds):
             beta, low, high = local_exponents(
-                force, sub["stiffness"].values, sub["contact_cells"].values, window=fit["slopes"]["window"],
-                min_cells=fit["zeta"]["min_cells"], indices=indices, level=float(fit["zeta"]["confidence"]))
+                force, sub["stiffness"].values, sub["contact_cells"].values, window=fit.slopes.window,
+                min_cells=fit.zeta.min_cells, indices=indices, level=fit.zeta.confidence)
             for i in np.flatnonzero(np.isfinite(beta)):
                 rows.append({"kind": kind, **combo, "force": float(force[i]), "local_exponent": beta[i],
                              "ci_low": low[i], "ci_high": high[i]})
     return pd.DataFrame(rows)
 
 
-def run_exponents(cfg, stiffness_nc, out_csv, out_png):
+def run_exponents(study, stiffness_nc, out_csv, out_png):
     """``exponents`` rule: stiffness.nc -> exponents.csv (local exponents with intervals) and a figure."""
     from .io import read_groups, write_csv
 
-    table = exponent_table(read_groups(stiffness_nc), cfg)
+    table = exponent_table(read_groups(stiffness_nc), study)
     write_csv(table, out_csv)
-    _figure(table, cfg, out_png)
+    _figure(table, out_png)
     log.info("local exponents: %d rows", len(table))
 
 
@@ -113,7 +115,7 @@ def curves(table, kind: str) -> list:
             for values, rows in sub.groupby(keys, sort=True)]
 
 
-def _figure(table, cfg, path) -> None:
+def _figure(table, path) -> None:
     plt = pyplot()
     kinds = sorted(set(table["kind"])) if len(table) else []
     fig, axes = plt.subplots(1, max(1, len(kinds)), figsize=(5.5 * max(1, len(kinds)), 4), squeeze=False)

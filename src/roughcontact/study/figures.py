@@ -15,14 +15,15 @@ from .. import surfaces
 from ..models import paper
 from . import runs
 from .ensemble import resolved
+from .study_settings import StudySettings
 
 log = logging.getLogger(__name__)
 
-def _sphere_combos(cfg: dict) -> list[dict]:
+def _sphere_combos(study: StudySettings) -> list[dict]:
     """Sphere combinations as merged-file coordinates (optional axes as numbers)."""
-    L = cfg["grid"]["length"]
+    L = study.grid.length
     out = []
-    for c in runs.combinations(cfg):
+    for c in runs.combinations(study):
         if c["kind"] == "sphere":
             name = runs.combo_name(c)
             out.append({**{a: runs.coordinate(a, c[a], L) if a in runs.DEFAULTS else c[a]
@@ -32,17 +33,18 @@ def _sphere_combos(cfg: dict) -> list[dict]:
     return out
 
 
-def figure_specs(cfg: dict) -> list[dict]:
+def figure_specs(study) -> list[dict]:
     """One dict per figure: key, file (a PNG name), caption (an ``.rst`` name), category, labels.
 
     The workflow places the files and finds the captions; nothing here knows its folders."""
+    study = StudySettings.of(study)
     specs = [
         {"key": ("fig1",), "file": "fig1_surface.png", "caption": "fig1.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 1 self-affine surface"}},
         {"key": ("fig2",), "file": "fig2_rough_sphere.png", "caption": "fig2.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 2 rough sphere"}},
     ]
-    for combo in _sphere_combos(cfg):
+    for combo in _sphere_combos(study):
         labels = {"figure": "Fig. 3", "H": f"{combo['hurst']:g}", "R": f"{combo['radius']:g}",
                   "h_rms": f"{combo['h_rms']:g}"}
         if combo["variant"]:
@@ -55,7 +57,7 @@ def figure_specs(cfg: dict) -> list[dict]:
         {"key": ("zeta",), "file": "zeta.png", "caption": "zeta.rst",
          "category": "zeta(H) and collapse", "labels": {"figure": "zeta(H)"}},
     ]
-    if any(math.isfinite(r) for r in cfg["radius"]):
+    if any(math.isfinite(r) for r in study.radius):
         specs.append({"key": ("collapse",), "file": "collapse.png", "caption": "collapse.rst",
                       "category": "zeta(H) and collapse", "labels": {"figure": "collapse"}})
     return specs
@@ -67,10 +69,10 @@ def _pick(values, preferred):
 
 @dataclasses.dataclass(frozen=True)
 class Inputs:
-    """What the figures draw from: the resolved config, the sphere ensemble (or None),
+    """What the figures draw from: the study's settings, the sphere ensemble (or None),
     the ζ and crossover tables, and the surface shown in Figs. 1, 2 and 4."""
 
-    cfg: dict
+    study: StudySettings
     ensemble: object
     zeta: object
     crossover: object
@@ -90,8 +92,8 @@ def fig1(plt, inputs: Inputs, _key):
     """Fig. 1: (a) a self-affine surface, (b) a cut through it."""
     import numpy as np
 
-    cfg, H0, h0, seed = inputs.cfg, inputs.hurst, inputs.h_rms, inputs.seed
-    L, n = cfg["grid"]["length"], cfg["grid"]["n"]
+    H0, h0, seed = inputs.hurst, inputs.h_rms, inputs.seed
+    L, n = inputs.study.grid.length, inputs.study.grid.n
     z = surfaces.self_affine(n, hurst=H0, h_rms=h0, length=L, seed=seed)
     fig, (a, b) = plt.subplots(1, 2, figsize=(9, 4), gridspec_kw={"width_ratios": [1, 1.4]})
     im = a.imshow(z.T, cmap="gray", origin="lower", extent=(0, L, 0, L))
@@ -107,8 +109,8 @@ def fig2(plt, inputs: Inputs, _key):
     """Fig. 2: the rough sphere, central half of the grid."""
     import numpy as np
 
-    cfg, H0, h0, R0 = inputs.cfg, inputs.hurst, inputs.h_rms, inputs.radius
-    L, n = cfg["grid"]["length"], cfg["grid"]["n"]
+    H0, h0, R0 = inputs.hurst, inputs.h_rms, inputs.radius
+    L, n = inputs.study.grid.length, inputs.study.grid.n
     z = surfaces.rough_sphere(n, radius=R0, hurst=H0, h_rms=h0, length=L, seed=inputs.seed)
     x = (np.arange(n) - n // 2) * L / n
     c = slice(n // 4, n - n // 4)  # central half: the roughness stays visible
@@ -129,21 +131,21 @@ def fig3(plt, inputs: Inputs, key):
     import numpy as np
 
     combo = key[1]
-    cfg = inputs.cfg
-    L, E, n = cfg["grid"]["length"], cfg["e_star"], cfg["grid"]["n"]
+    study = inputs.study
+    L, E, n = study.grid.length, study.e_star, study.grid.n
     hurst, radius, h, m = combo["hurst"], combo["radius"], combo["h_rms"], combo["exponent"]
     sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
     F = sub["force"].values / (E * L**2)
     k = sub["k_mean"].values / (E * L)
     err = np.nan_to_num(sub["k_sem"].values / (E * L))
-    res = resolved(sub["contact_cells_mean"].values, cfg["fit"]["zeta"]["min_cells"])
+    res = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
     zf = inputs.zeta_used(hurst)
     fig, ax = plt.subplots(figsize=(6, 4.6))
     ax.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
                 label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
     if (~res).any():
         ax.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
-                    label=f"< {cfg['fit']['zeta']['min_cells']} contact cells (unresolved)")
+                    label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
     if "loading_k_mean" in sub and math.isfinite(combo["hardness"]):
         ax.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
                 label="loading tangent (plastic path)")
@@ -190,7 +192,7 @@ def fig4(plt, inputs: Inputs, _key):
     """Fig. 4: the parabola, the equivalent profile of the roughness (eqs. 6, 14) and their sum (eq. 15)."""
     import numpy as np
 
-    H0, h0, R0, L = inputs.hurst, inputs.h_rms, inputs.radius, inputs.cfg["grid"]["length"]
+    H0, h0, R0, L = inputs.hurst, inputs.h_rms, inputs.radius, inputs.study.grid.length
     r = np.linspace(-0.2 * L, 0.2 * L, 801)  # where z_p and z_s are of similar size
     profile = {"hurst": H0, "h_rms": h0, "length": L, "zeta": inputs.zeta_used(H0)}
     zs = paper.equivalent_height(r, radius=math.inf, **profile)
@@ -227,14 +229,14 @@ def collapse(plt, inputs: Inputs, _key):
     """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16."""
     import numpy as np
 
-    cfg = inputs.cfg
-    L, E = cfg["grid"]["length"], cfg["e_star"]
+    study = inputs.study
+    L, E = study.grid.length, study.e_star
     fig, ax = plt.subplots(figsize=(6, 4.6))
     y = np.geomspace(0.05, 30, 300)
     curves = set()
-    for combo in _sphere_combos(cfg):
+    for combo in _sphere_combos(study):
         hurst, m = combo["hurst"], combo["exponent"]
-        j = cfg["hurst"].index(hurst)
+        j = study.hurst.index(hurst)
         if (hurst, m) not in curves:
             curves.add((hurst, m))
             ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "-" if m == 2 else "--", color=f"C{j}", lw=1,
@@ -243,7 +245,7 @@ def collapse(plt, inputs: Inputs, _key):
         ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
         ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
         sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
-        ok = resolved(sub["contact_cells_mean"].values, cfg["fit"]["zeta"]["min_cells"])
+        ok = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
         ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{j}", alpha=0.7)
     ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
            title="all sphere runs (ensemble means, >= min_cells) over eq. 16")
@@ -256,7 +258,7 @@ def collapse(plt, inputs: Inputs, _key):
 DRAW = {"fig1": fig1, "fig2": fig2, "fig3": fig3, "fig4": fig4, "zeta": zeta, "collapse": collapse}
 
 
-def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs):
+def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs):
     """Draw every figure of :func:`figure_specs` to *outputs* (paths, in the same order)."""
     from pathlib import Path
 
@@ -267,16 +269,17 @@ def make_figures(cfg, ensemble_nc, zeta_csv, crossover_csv, outputs):
 
     plt = pyplot()
 
-    specs = figure_specs(cfg)
+    study = StudySettings.of(study)
+    specs = figure_specs(study)
     paths = list(outputs)
     if len(paths) != len(specs):
         raise ValueError(f"make_figures got {len(paths)} output paths for {len(specs)} figures")
-    finite = [r for r in cfg["radius"] if math.isfinite(r)]
+    finite = [r for r in study.radius if math.isfinite(r)]
     inputs = Inputs(
-        cfg=cfg, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=pd.read_csv(zeta_csv),
+        study=study, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=pd.read_csv(zeta_csv),
         crossover=pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame(),
-        hurst=_pick(cfg["hurst"], 0.7), h_rms=_pick(cfg["h_rms"], 9e-3),
-        radius=_pick(finite, 0.5) if finite else 0.5, seed=cfg["seeds"][0])
+        hurst=_pick(study.hurst, 0.7), h_rms=_pick(study.h_rms, 9e-3),
+        radius=_pick(finite, 0.5) if finite else 0.5, seed=study.seeds[0])
     for spec, path in zip(specs, paths):
         save_png(DRAW[spec["key"][0]](plt, inputs, spec["key"]), path)
     log.info("wrote %s", ", ".join(paths))

@@ -16,6 +16,7 @@ from . import provenance, runfile, runs
 from .ensemble import ensemble
 from .io import read_run, write_groups
 from .settings import job_settings
+from .study_settings import StudySettings
 
 __all__ = ["merge_runs", "run_merge"]
 
@@ -26,19 +27,19 @@ log = logging.getLogger(__name__)
 # --------------------------------------------------------------------------
 # merge and ensemble: one group per surface kind
 # --------------------------------------------------------------------------
-def _force_coords(cfg: dict, kind: str) -> dict:
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    rng = cfg["forces"][kind]
-    force = runs.force_grid(rng["from"], rng["to"], rng["count"]) * E * L**2
+def _force_coords(study: StudySettings, kind: str) -> dict:
+    scale = study.force_scale()
+    force = study.forces[kind].normalized() * scale
     return {
         "force": ("force", force, runfile.FORCE_ATTRS),
-        "force_normalized": ("force", force / (E * L**2), {"long_name": "F/(E* L^2)", "units": "1"}),
+        "force_normalized": ("force", force / scale, {"long_name": "F/(E* L^2)", "units": "1"}),
     }
 
 
-def merge_runs(cfg: dict, paths) -> dict:
+def merge_runs(study, paths) -> dict:
     """Merge the run files *paths* (one per run of :func:`runs.runs`, in its order) of the
-    resolved config *cfg*, one Dataset per surface kind.
+    study (:class:`~roughcontact.study.study_settings.StudySettings` or a resolved
+    configuration), one Dataset per surface kind.
 
     Returns ``{"sphere": ds, "flat": ds}`` (the kinds the sweep has): the sphere
     Dataset has dims (hurst, radius, h_rms, seed, force), the flat one (hurst,
@@ -47,7 +48,8 @@ def merge_runs(cfg: dict, paths) -> dict:
     """
     import xarray as xr
 
-    table = runs.runs(cfg)
+    study = StudySettings.of(study)
+    table = runs.runs(study)
     if len(paths) != len(table):
         raise MergeError(f"merge got {len(paths)} run files for {len(table)} runs of the config")
     groups = {}
@@ -56,18 +58,18 @@ def merge_runs(cfg: dict, paths) -> dict:
         if not rows:
             continue
         axes = runs.AXES[kind]
-        L = cfg["grid"]["length"]
+        L = study.grid.length
         at = {id(row): {axis: runs.coordinate(axis, row[axis], L) for axis in axes} for row, _ in rows}
         coords = {axis: sorted({at[id(row)][axis] for row, _ in rows}) for axis in axes}
-        coords["seed"] = list(cfg["seeds"])
-        count = cfg["forces"][kind]["count"]
+        coords["seed"] = list(study.seeds)
+        count = study.forces[kind].count
         shape = tuple(len(v) for v in coords.values()) + (count,)
         plastic = any(row["hardness"] is not None for row, _ in rows)
         names = runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
         data = {name: np.zeros(shape, dtype=runfile.VARIABLES[name].dtype) for name in names}
         attrs_of, commits = {}, set()
         for row, path in rows:
-            ds = read_run(path, job_settings(cfg, row))
+            ds = read_run(path, job_settings(study, row))
             idx = tuple(coords[axis].index(at[id(row)][axis]) for axis in axes) + (coords["seed"].index(row["seed"]),)
             for name in names:
                 # an elastic run's loading tangent is its stiffness, and nothing flows
@@ -80,7 +82,7 @@ def merge_runs(cfg: dict, paths) -> dict:
         ds = xr.Dataset(
             {name: (dims, data[name], attrs_of.get(name, {})) for name in names},
             coords={**{axis: (axis, coords[axis], runfile.AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
-                    **_force_coords(cfg, kind)},
+                    **_force_coords(study, kind)},
             attrs={"surface_kind": kind, "half_space": "periodic" if kind == "flat" else "free (non-periodic)",
                    "run_git_commits": provenance.canonical_json(sorted(commits))},
         )
@@ -91,13 +93,15 @@ def merge_runs(cfg: dict, paths) -> dict:
 # --------------------------------------------------------------------------
 # entry points used by workflow/scripts
 # --------------------------------------------------------------------------
-def run_merge(cfg, run_files, out_stiffness, out_ensemble):
+def run_merge(study, run_files, out_stiffness, out_ensemble):
     """``merge`` rule: run files -> stiffness.nc and ensemble.nc (one group per kind)."""
-    groups = merge_runs(cfg, list(run_files))
+    study = StudySettings.of(study)
+    groups = merge_runs(study, list(run_files))
     attrs = provenance.provenance_attrs(
-        config=cfg, title="roughcontact parameter study: all runs", layout="one group per surface kind (sphere, flat)",
-        grid_n=cfg["grid"]["n"], grid_length=cfg["grid"]["length"], e_star=cfg["e_star"],
-        solver_tol=cfg["solver"]["tol"], stiffness_method=cfg["solver"]["stiffness"], seeds=cfg["seeds"])
+        config=study.config, title="roughcontact parameter study: all runs",
+        layout="one group per surface kind (sphere, flat)", grid_n=study.grid.n, grid_length=study.grid.length,
+        e_star=study.e_star, solver_tol=study.solver.tol, stiffness_method=study.solver.stiffness,
+        seeds=list(study.seeds))
     write_groups(out_stiffness, groups, attrs)
     attrs["title"] = "roughcontact parameter study: ensemble statistics over seeds"
     write_groups(out_ensemble, {kind: ensemble(ds) for kind, ds in groups.items()}, attrs)

@@ -15,6 +15,7 @@ import datetime as _dt
 import hashlib
 import json
 import math
+from collections.abc import Mapping
 import os
 import subprocess
 from pathlib import Path
@@ -67,7 +68,7 @@ def git_commit(path: str | os.PathLike | None = None) -> str:
 def _jsonable(obj):
     if isinstance(obj, float) and not math.isfinite(obj):
         return "inf" if obj > 0 else ("-inf" if obj < 0 else "nan")
-    if isinstance(obj, dict):
+    if isinstance(obj, Mapping):   # a dict, or a read-only view of one (StudySettings.config)
         return {str(k): _jsonable(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
         return [_jsonable(v) for v in obj]
@@ -86,7 +87,7 @@ def config_hash(obj) -> str:
     return hashlib.sha256(canonical_json(obj).encode()).hexdigest()[:16]
 
 
-def provenance_attrs(config: dict | None = None, **extra) -> dict:
+def provenance_attrs(config: Mapping | None = None, **extra) -> dict:
     """NetCDF-safe global attributes describing where a file came from."""
     attrs = {
         "roughcontact_version": package_version(),

@@ -15,9 +15,9 @@ import math
 import re
 import string
 
-import numpy as np
-
 from . import axes
+from .axes import kind_of
+from .study_settings import StudySettings, force_grid
 
 __all__ = [
     "format_value",
@@ -64,11 +64,6 @@ def parse_value(text: str) -> float:
     return float(text)
 
 
-def kind_of(radius) -> str:
-    """``"sphere"`` for a finite radius (free half-space), ``"flat"`` for ``inf`` (periodic)."""
-    return "sphere" if math.isfinite(radius) else "flat"
-
-
 def coordinate(axis: str, value, length: float) -> float:
     """Value of a run's axis as a coordinate of the merged files (:meth:`axes.Axis.coordinate`):
     the paper's settings as numbers with the same meaning (rolloff null = the system size L,
@@ -82,25 +77,28 @@ def axis_value(axis: str, coordinate_value: float, length: float):
     return axes.axis(axis).value_of(coordinate_value, length)
 
 
-def combinations(cfg: dict) -> list[dict]:
+def combinations(study) -> list[dict]:
     """One dict per point of the sweep's axes (:data:`axes.AXES`) in sweep order (the
     registry's order, the last axis fastest); an axis a surface kind does not sweep (a flat
-    surface's body exponent) takes its paper value."""
+    surface's body exponent) takes its paper value. *study*: a
+    :class:`~roughcontact.study.study_settings.StudySettings` (or a resolved configuration)."""
+    study = StudySettings.of(study)
     out = []
-    for hurst in cfg["hurst"]:
-        for radius in cfg["radius"]:
+    for hurst in study.hurst:
+        for radius in study.radius:
             kind = kind_of(radius)
             rest = [a for a in axes.AXES.values() if a.name not in ("hurst", "radius")]
-            values = [cfg[a.name] if kind in a.kinds else [a.paper] for a in rest]
+            values = [getattr(study, a.name) if kind in a.kinds else [a.paper] for a in rest]
             for point in itertools.product(*values):
                 combo = {"hurst": hurst, "radius": radius, **{a.name: v for a, v in zip(rest, point)}}
                 out.append({name: combo[name] for name in axes.AXES} | {"kind": kind})
     return out
 
 
-def runs(cfg: dict) -> list[dict]:
+def runs(study) -> list[dict]:
     """One dict per run: the axes of :func:`combinations`, ``seed`` and ``kind``."""
-    return [{**combo, "seed": seed} for combo in combinations(cfg) for seed in cfg["seeds"]]
+    study = StudySettings.of(study)
+    return [{**combo, "seed": seed} for combo in combinations(study) for seed in study.seeds]
 
 
 #: the axes every run name carries, in the name's order (the others only off the paper's setting)
@@ -136,9 +134,9 @@ def parse_combo(name: str) -> dict:
     return out
 
 
-def sphere_names(cfg: dict) -> list[str]:
-    """:func:`combo_name` of every sphere combination of the resolved config *cfg*, in sweep order."""
-    return [combo_name(c) for c in combinations(cfg) if c["kind"] == "sphere"]
+def sphere_names(study) -> list[str]:
+    """:func:`combo_name` of every sphere combination of the study, in sweep order."""
+    return [combo_name(c) for c in combinations(study) if c["kind"] == "sphere"]
 
 
 def run_path(run: dict, pattern: str) -> str:
@@ -162,17 +160,12 @@ def parse_run_path(path: str, pattern: str) -> dict:
     return {**parse_combo(match.group("combo")), "seed": int(match.group("seed"))}
 
 
-def run_paths(cfg: dict, pattern: str) -> list[str]:
-    """:func:`run_path` of every run of the resolved config *cfg*, in sweep order."""
-    return [run_path(r, pattern) for r in runs(cfg)]
+def run_paths(study, pattern: str) -> list[str]:
+    """:func:`run_path` of every run of the study, in sweep order."""
+    return [run_path(r, pattern) for r in runs(study)]
 
 
-def force_grid(force_from: float, force_to: float, count: int) -> np.ndarray:
-    """The log-spaced load path ``F/(E* L²)`` of a force range ``{from, to, count}``."""
-    return np.geomspace(force_from, force_to, int(count))
-
-
-def indent_resources(cfg: dict) -> dict:
+def indent_resources(study) -> dict:
     """Generous per-job estimates for schedulers (SLURM): ``mem_mb`` and
     ``runtime`` (minutes) of one ``indent`` job, from the grid and load count.
 
@@ -182,8 +175,9 @@ def indent_resources(cfg: dict) -> dict:
     Runtime: measured ~10 s for a 513^2 flat run of 13 loads on one core,
     scaled by n^2 log n and the load count, times 10.
     """
-    n = cfg["grid"]["n"]
-    count = max(cfg["forces"][kind_of(r)]["count"] for r in cfg["radius"])
+    study = StudySettings.of(study)
+    n = study.grid.n
+    count = max(study.forces[kind_of(r)].count for r in study.radius)
     mem = 250 + (n * n * (24 + 8 + 2 * 17) + 8 * (2 * n) ** 2 * 16) / 1e6
     scale = (n * n * math.log(n)) / (513 * 513 * math.log(513)) * count / 13
     return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100), "runtime": int(max(5, math.ceil(10 * scale * 10 / 60)))}

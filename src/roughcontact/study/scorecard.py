@@ -11,6 +11,21 @@ ensemble mean (mean contact cells ≥ ``fit.zeta.min_cells``, as for the verdict
 
 A model that does not apply to a combination (Greenwood–Tripp off the paraboloid or with a
 roll-off or cutoff) has no row for it. Forces are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
+
+Grid error (``grid.coarse``, :mod:`roughcontact.study.grid_error`): with the same surfaces pressed
+on a coarser grid, ``g = k̄_coarse/k̄ − 1`` at each load bounds the grid error of the study's own
+ensemble mean (for a sequence converging at an order ``p ≥ 1`` under a refinement ratio ``r ≥ 2``
+the finer grid's error is ``|g|/(r^p − 1) ≤ |g|``). The scorecard then adds, per model and
+combination, over the same resolved loads:
+
+* ``grid_error_max``: the largest ``|g|``; ``grid_resolved``: the fraction of loads where
+  ``|g|`` is at most half the band's half-width (:data:`~roughcontact.study.grid_error.GRID_ERROR_FRACTION`);
+* ``inside_band_total``: the fraction of loads where the model lies inside the ensemble's band
+  widened by the grid error in quadrature, ``[−√(b₋² + g²), √(b₊² + g²)]``;
+* ``grid_error_low`` / ``grid_error_high``: the weighted mean ``|g|`` of each branch (the weights
+  of the systematic deviation), and ``systematic_low_total_verdict`` /
+  ``systematic_high_total_verdict``: the verdict on 0 of the systematic deviation's interval
+  widened by that mean (``differs``: a model error that neither sampling nor grid explains).
 """
 from __future__ import annotations
 
@@ -26,6 +41,7 @@ from . import provenance, runs
 from .ensemble import resolved
 from .plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval, verdict
+from .study_settings import StudySettings
 from .tables import write_html_table
 
 __all__ = ["Combination", "scorecard", "run_models", "combo_label"]
@@ -53,11 +69,11 @@ class Combination(dict):
             cutoff=runs.axis_value("cutoff", self["cutoff"], length))
 
 
-def _combinations(ds, cfg: dict, zeta_of: dict):
+def _combinations(ds, study: StudySettings, zeta_of: dict):
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
     for position in itertools.product(*(range(ds.sizes[a]) for a in axes)):
         combo = Combination({a: float(ds[a].values[i]) for a, i in zip(axes, position)})
-        combo.update(n=cfg["grid"]["n"], length=cfg["grid"]["length"], e_star=cfg["e_star"],
+        combo.update(n=study.grid.n, length=study.grid.length, e_star=study.e_star,
                      zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)))
         yield combo, ds.isel(dict(zip(axes, position))).transpose("seed", "force")
 
@@ -94,23 +110,69 @@ def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict
             f"n_loads_{branch}": int(use.sum())}
 
 
-def scorecard(groups: dict, zeta_df, cfg: dict):
+def _grid_errors(grid_error, combo: Combination, force_norm) -> np.ndarray | None:
+    """``g`` of the grid error table at each load of *combo* (NaN where the table has none)."""
+    if grid_error is None or not len(grid_error):
+        return None
+    rows = grid_error
+    for axis in runs.AXES["sphere"]:
+        if axis in rows:
+            rows = rows[np.isclose(rows[axis].to_numpy(float), combo[axis], rtol=1e-12, atol=0)
+                        | (np.isinf(rows[axis].to_numpy(float)) & math.isinf(combo[axis]))]
+    out = np.full(force_norm.size, np.nan)
+    for force, g in zip(rows["force_normalized"].to_numpy(float), rows["grid_error"].to_numpy(float)):
+        match = np.isclose(force_norm, force, rtol=1e-9, atol=0)
+        out[match] = g
+    return out
+
+
+def _with_grid(dev, band, g, use, weight_use, k_boot, k_mean, systematic: dict) -> dict:
+    """The grid-error columns of one model (module docstring)."""
+    from .grid_error import GRID_ERROR_FRACTION
+
+    g_abs = np.abs(g)
+    lower = -np.sqrt(band[0] ** 2 + g_abs ** 2)
+    upper = np.sqrt(band[1] ** 2 + g_abs ** 2)
+    inside = (dev[use] >= lower[use]) & (dev[use] <= upper[use])
+    half = 0.5 * (band[1] - band[0])
+    out = {"grid_error_max": float(np.nanmax(g_abs[use])) if np.isfinite(g_abs[use]).any() else math.nan,
+           "grid_resolved": float(np.mean(g_abs[use] <= GRID_ERROR_FRACTION * half[use])),
+           "inside_band_total": float(inside.mean())}
+    for branch, mask in weight_use.items():
+        key = f"grid_error_{branch}"
+        if mask.sum() < 1:
+            out.update({key: math.nan, f"systematic_{branch}_total_verdict": "untested: no resolved load"})
+            continue
+        relative = k_boot[:, mask] / k_mean[mask]
+        weight = 1.0 / np.maximum(relative.var(axis=0, ddof=1), np.finfo(float).eps ** 2)
+        mean_g = float(np.sum(weight * g_abs[mask]) / weight.sum())
+        low = systematic[f"systematic_{branch}_ci_low"] - mean_g
+        high = systematic[f"systematic_{branch}_ci_high"] + mean_g
+        out.update({key: mean_g, f"systematic_{branch}_total_verdict": verdict(0.0, low, high)})
+    return out
+
+
+def scorecard(groups: dict, zeta_df, study, grid_error=None):
     """``models.csv`` as a DataFrame (one row per model and sphere combination), and a Dataset of
-    the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band."""
+    the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band.
+
+    *grid_error*: the table of :func:`roughcontact.study.grid_error.grid_error` of the study against
+    its companion on ``grid.coarse`` (or ``None``): adds the grid-error columns (module docstring)."""
     import pandas as pd
     import xarray as xr
 
     if "sphere" not in groups:
         return pd.DataFrame(), {}
+    study = StudySettings.of(study)
     ds = groups["sphere"]
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    min_cells = cfg["fit"]["zeta"]["min_cells"]
-    level = float(cfg["fit"]["zeta"]["confidence"])
-    indices = bootstrap_indices(ds.sizes["seed"], int(cfg["fit"]["zeta"]["bootstrap"]))
+    L, E = study.grid.length, study.e_star
+    min_cells = study.fit.zeta.min_cells
+    level = study.fit.zeta.confidence
+    indices = bootstrap_indices(ds.sizes["seed"], study.fit.zeta.bootstrap)
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
     force_norm = ds["force"].values / (E * L**2)
     rows, curves = [], {}
-    for combo, sub in _combinations(ds, cfg, zeta_of):
+    for combo, sub in _combinations(ds, study, zeta_of):
         k = sub["stiffness"].values
         k_mean = k.mean(0)
         k_boot = k[indices].mean(1)                               # (resample, force)
@@ -118,6 +180,7 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
         band = np.percentile(k_boot / k_mean - 1, [50 * (1 - level), 50 * (1 + level)], axis=0)
         label = combo_label(combo)
         f_tr = _crossover(combo)
+        g = _grid_errors(grid_error, combo, force_norm)
         dev_of = {}
         for name, k_model in registry.predict(sub["force"].values, combo.surface()).items():
             use = use_load & np.isfinite(k_model)
@@ -127,22 +190,26 @@ def scorecard(groups: dict, zeta_df, cfg: dict):
                 continue
             low, high = interval(np.abs(k_model[use] / k_boot[:, use] - 1).max(-1), level)
             inside = (dev[use] >= band[0][use]) & (dev[use] <= band[1][use])
+            branches = {"low": use & (force_norm < f_tr), "high": use & (force_norm >= f_tr)}
+            systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level),
+                          **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level)}
+            grid = {} if g is None else _with_grid(dev, band, g, use, branches, k_boot, k_mean, systematic)
             rows.append({
                 "model": name, **{a: combo[a] for a in runs.AXES["sphere"]}, "combination": label,
                 "max_rel_dev": float(np.abs(dev[use]).max()), "max_rel_dev_ci_low": low,
                 "max_rel_dev_ci_high": high, "rms_rel_dev": float(np.sqrt(np.mean(dev[use] ** 2))),
                 "n_loads": int(use.sum()), "force_min": float(force_norm[use].min()),
                 "force_max": float(force_norm[use].max()), "paper_setting": combo.paper_setting,
-                "inside_band": float(inside.mean()), "crossover_force": f_tr,
-                **_systematic(k_model, k_mean, k_boot, use & (force_norm < f_tr), "low", level),
-                **_systematic(k_model, k_mean, k_boot, use & (force_norm >= f_tr), "high", level),
+                "inside_band": float(inside.mean()), "crossover_force": f_tr, **systematic, **grid,
             })
         curves[label] = xr.Dataset(
             {**{name: ("force", dev, {"long_name": f"k_{name}/k_BEM - 1", "units": "1"})
                 for name, dev in dev_of.items()},
              "band_low": ("force", band[0], {"long_name": f"{level:.0%} band of the ensemble mean, low", "units": "1"}),
              "band_high": ("force", band[1], {"long_name": f"{level:.0%} band of the ensemble mean, high", "units": "1"}),
-             "resolved": ("force", use_load.astype("i1"), {"long_name": "resolved load (1) or not (0)", "units": "1"})},
+             "resolved": ("force", use_load.astype("i1"), {"long_name": "resolved load (1) or not (0)", "units": "1"}),
+             **({} if g is None else {"grid_error": ("force", g, {
+                 "long_name": "grid error bound k_coarse/k_BEM - 1 (grid.coarse)", "units": "1"})})},
             coords={"force_normalized": ("force", force_norm, {"long_name": "F/(E* L^2)", "units": "1"})},
             attrs={k: v for k, v in combo.items()})
     table = pd.DataFrame(rows)
@@ -161,7 +228,11 @@ def scorecard_lead() -> str:
             "where the model lies inside the ensemble's band; systematic_low and systematic_high the mean "
             "deviation below and above the crossover force (eq. 17), weighted by the inverse variance of the "
             "ensemble mean, with its interval and verdict on 0 (differs: a significant systematic deviation). "
-            f"{summaries}. models.csv holds every digit.")
+            "With grid.coarse (the same surfaces on a coarser grid): grid_error_max the largest grid error "
+            "bound |k_coarse/k_BEM - 1| over those loads, grid_resolved the fraction of loads where it is at "
+            "most half the band, inside_band_total the fraction inside the band widened by the grid error, and "
+            "the *_total_verdict columns the systematic verdicts with the grid error added to the interval "
+            f"(differs: a model error). {summaries}. models.csv holds every digit.")
 
 
 def _figure(path, label: str, curve, table) -> None:
@@ -169,6 +240,11 @@ def _figure(path, label: str, curve, table) -> None:
     force = curve["force_normalized"].values
     shown = curve["resolved"].values.astype(bool)
     fig, ax = plt.subplots(figsize=(6, 4))
+    if "grid_error" in curve:
+        g = np.abs(curve["grid_error"].values)
+        ax.fill_between(force, -np.sqrt(curve["band_low"].values ** 2 + g ** 2),
+                        np.sqrt(curve["band_high"].values ** 2 + g ** 2), color="0.93",
+                        label="band and grid error (grid.coarse)")
     ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
     ax.axhline(0, color="0.4", lw=0.8)
     for name in registry.models():
@@ -182,25 +258,31 @@ def _figure(path, label: str, curve, table) -> None:
     save_png(fig, path)
 
 
-def run_models(cfg, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures):
+def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures, grid_error_csv=None):
     """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
     per combination) and one figure per sphere combination (*figures*, in the order of
-    :func:`roughcontact.study.runs.sphere_names`)."""
+    :func:`roughcontact.study.runs.sphere_names`); *grid_error_csv*: ``grid_error.csv`` of the
+    study's companion on ``grid.coarse`` (or ``None``)."""
     import pandas as pd
 
     from .io import read_groups, write_csv, write_groups
 
-    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), cfg)
-    attrs = provenance.provenance_attrs(config=cfg, title="model scorecard: k_model/k_BEM - 1 per load",
+    study = StudySettings.of(study)
+    grid_error = pd.read_csv(grid_error_csv) if grid_error_csv else None
+    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error)
+    attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, out_csv)
     write_groups(out_nc, curves, attrs)
     write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(),
-                     verdict_columns=("systematic_low_verdict", "systematic_high_verdict"),
+                     verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
+                                      "systematic_low_total_verdict", "systematic_high_total_verdict"),
                      first=("combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low",
-                            "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "systematic_low",
-                            "systematic_low_verdict", "systematic_high", "systematic_high_verdict", "n_loads"))
-    names = runs.sphere_names(cfg)
+                            "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "inside_band_total",
+                            "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
+                            "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",
+                            "systematic_high_total_verdict", "n_loads"))
+    names = runs.sphere_names(study)
     if len(names) != len(figures):
         raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
     for label, path in zip(names, figures):

@@ -14,7 +14,8 @@ import numpy as np
 
 from ..bem import DEFAULT_MAXITER
 from . import axes
-from .runs import force_grid, kind_of, parse_combo
+from .runs import parse_combo
+from .study_settings import StudySettings, force_grid, kind_of
 
 __all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
 
@@ -140,21 +141,22 @@ def options_of(run: dict) -> tuple:
     return tuple(out)
 
 
-def job_settings(cfg: dict, run: dict) -> JobSettings:
+def job_settings(study, run: dict) -> JobSettings:
     """The :class:`JobSettings` of one run (a dict of :func:`roughcontact.study.runs.runs`)
-    of the resolved configuration *cfg*."""
+    of the study (:class:`~roughcontact.study.study_settings.StudySettings` or a resolved configuration)."""
+    study = StudySettings.of(study)
     radius = float(run["radius"])
-    rng = cfg["forces"][kind_of(radius)]
-    solver = cfg["solver"]
+    rng = study.forces[kind_of(radius)]
+    solver = study.solver
     return JobSettings(
         hurst=float(run["hurst"]), radius=radius, h_rms=float(run["h_rms"]), seed=int(run["seed"]),
-        n=int(cfg["grid"]["n"]), length=float(cfg["grid"]["length"]), e_star=float(cfg["e_star"]),
-        force_from=float(rng["from"]), force_to=float(rng["to"]), force_count=int(rng["count"]),
-        tol=float(solver["tol"]), stiffness_method=solver["stiffness"], rel_step=float(solver["rel_step"]),
-        maxiter=int(solver.get("maxiter", DEFAULT_MAXITER)), options=options_of(run),
-        realization_of=None if cfg["grid"].get("realization_of") is None else int(cfg["grid"]["realization_of"]))
+        n=study.grid.n, length=study.grid.length, e_star=study.e_star,
+        force_from=rng.start, force_to=rng.stop, force_count=rng.count,
+        tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
+        maxiter=DEFAULT_MAXITER if solver.maxiter is None else solver.maxiter, options=options_of(run),
+        realization_of=study.grid.realization_of)
 
 
-def settings_from_wildcards(cfg: dict, wildcards) -> JobSettings:
+def settings_from_wildcards(study, wildcards) -> JobSettings:
     """:func:`job_settings` of the run named by the ``indent`` rule's wildcards ``combo`` and ``seed``."""
-    return job_settings(cfg, {**parse_combo(wildcards.combo), "seed": int(wildcards.seed)})
+    return job_settings(study, {**parse_combo(wildcards.combo), "seed": int(wildcards.seed)})

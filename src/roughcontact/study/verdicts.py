@@ -35,8 +35,9 @@ import numpy as np
 from ..models import paper
 from . import ensemble
 from .statistics import BOOTSTRAP_SEED, bootstrap_indices, interval, verdict
+from .study_settings import StudySettings
 
-__all__ = ["Eq16Fit", "fit_eq16", "SphereVerdicts", "sphere_verdicts", "crossover_table", "run_crossover"]
+__all__ = ["Eq16Fit", "fit_eq16", "SphereCase", "VerdictWindows", "SphereVerdicts", "sphere_verdicts", "crossover_table", "run_crossover"]
 
 log = logging.getLogger(__name__)
 
@@ -158,10 +159,55 @@ class SphereVerdicts:
     crossover_replicates: np.ndarray
 
 
-def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: float, h_rms: float,
-                    length: float, zeta_fit: float, indices: np.ndarray, min_cells: int,
-                    low_max_ratio: float, high_min_ratio: float, exponent: float = 2.0,
-                    level: float = 0.95) -> SphereVerdicts:
+@dataclasses.dataclass(frozen=True)
+class SphereCase:
+    """One sphere combination (lengths in one unit, that of ``length``).
+
+    Attributes
+    ----------
+    hurst, radius, h_rms, length : float
+        Hurst exponent, body radius, rms roughness height, side ``L`` of the surface.
+    exponent : float
+        Body of revolution ``z = (R/m)(r/R)^m`` (2: the paper's paraboloid): eqs. 16 and 17
+        with the smooth body's eq. 7 in place of Hertz.
+    """
+
+    hurst: float
+    radius: float
+    h_rms: float
+    length: float
+    exponent: float = 2.0
+
+
+@dataclasses.dataclass(frozen=True)
+class VerdictWindows:
+    """Which loads the verdicts use (``fit.zeta`` and ``fit.slopes`` of the configuration).
+
+    Attributes
+    ----------
+    min_cells : int
+        A load is resolved when its mean contact cells are at least this many.
+    low_max_ratio, high_min_ratio : float
+        Slope windows ``F ≤ low_max_ratio·F_tr`` (resolved loads) and ``F ≥ high_min_ratio·F_tr``,
+        F_tr of eq. 17 with the fitted ζ.
+    level : float
+        Confidence level of the intervals.
+    """
+
+    min_cells: int
+    low_max_ratio: float
+    high_min_ratio: float
+    level: float = 0.95
+
+    @classmethod
+    def of(cls, fit) -> "VerdictWindows":
+        """The windows of a study's :class:`~roughcontact.study.study_settings.FitSettings`."""
+        return cls(min_cells=fit.zeta.min_cells, low_max_ratio=fit.slopes.low_max_ratio,
+                   high_min_ratio=fit.slopes.high_min_ratio, level=fit.zeta.confidence)
+
+
+def sphere_verdicts(force, stiffness, contact_cells, *, case: SphereCase, zeta_fit: float,
+                    indices: np.ndarray, windows: VerdictWindows) -> SphereVerdicts:
     """Crossover force, slopes and eq. 16 checks of one sphere combination.
 
     Parameters
@@ -170,23 +216,18 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
         Loads F/(E* L²).
     stiffness, contact_cells : array_like, shape (seeds, m)
         Per-seed stiffness k/(E* L) and contact cells.
-    hurst, radius, h_rms, length : float
-        The combination (length unit of ``radius``, ``h_rms``, ``length``).
+    case : SphereCase
+        The combination.
     zeta_fit : float
         ζ(H) fitted elsewhere (flat surfaces), NaN if none: eq. 17's first prediction.
     indices : ndarray, shape (resamples, seeds)
         Bootstrap seed indices (:func:`bootstrap_indices`).
-    min_cells : int
-        A load is resolved when its mean contact cells are at least this many.
-    low_max_ratio, high_min_ratio : float
-        Slope windows ``F ≤ low_max_ratio·F_tr`` (resolved loads) and
-        ``F ≥ high_min_ratio·F_tr``, F_tr of eq. 17 with the fitted ζ.
-    exponent : float
-        Body of revolution ``z = (R/m)(r/R)^m`` (2: the paper's paraboloid):
-        eqs. 16 and 17 with the smooth body's eq. 7 in place of Hertz.
-    level : float
-        Confidence level of the intervals.
+    windows : VerdictWindows
+        The loads the estimates use, and the confidence level.
     """
+    hurst, radius, h_rms, length, exponent = case.hurst, case.radius, case.h_rms, case.length, case.exponent
+    min_cells, low_max_ratio, high_min_ratio = windows.min_cells, windows.low_max_ratio, windows.high_min_ratio
+    level = windows.level
     F = np.asarray(force, dtype=float)
     k_seeds = np.asarray(stiffness, dtype=float)
     cells = np.asarray(contact_cells, dtype=float).mean(0)
@@ -300,7 +341,7 @@ def sphere_verdicts(force, stiffness, contact_cells, *, hurst: float, radius: fl
 # --------------------------------------------------------------------------
 # tables
 # --------------------------------------------------------------------------
-def crossover_table(groups: dict, zeta_df, cfg: dict):
+def crossover_table(groups: dict, zeta_df, study):
     """``crossover.csv`` (one row per sphere combination of every sweep axis,
     :func:`sphere_verdicts`) and a Dataset of the bootstrap replicates of the
     measured F_tr over those axes and ``replicate``."""
@@ -311,10 +352,11 @@ def crossover_table(groups: dict, zeta_df, cfg: dict):
 
     if "sphere" not in groups:
         return pd.DataFrame(), xr.Dataset()
+    study = StudySettings.of(study)
     ds = groups["sphere"]
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    fit = cfg["fit"]
-    resamples = int(fit["zeta"]["bootstrap"])
+    L, E = study.grid.length, study.e_star
+    windows = VerdictWindows.of(study.fit)
+    resamples = study.fit.zeta.bootstrap
     indices = bootstrap_indices(ds.sizes["seed"], resamples)
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
@@ -326,10 +368,9 @@ def crossover_table(groups: dict, zeta_df, cfg: dict):
         sub = ds.isel(dict(zip(axes, position))).transpose("seed", "force")
         result = sphere_verdicts(
             force, sub["stiffness"].values / (E * L), sub["contact_cells"].values,
-            hurst=combo["hurst"], radius=combo["radius"], h_rms=combo["h_rms"], length=L,
-            exponent=combo.get("exponent", 2.0), zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)),
-            indices=indices, min_cells=fit["zeta"]["min_cells"], low_max_ratio=fit["slopes"]["low_max_ratio"],
-            high_min_ratio=fit["slopes"]["high_min_ratio"], level=float(fit["zeta"]["confidence"]))
+            case=SphereCase(hurst=combo["hurst"], radius=combo["radius"], h_rms=combo["h_rms"], length=L,
+                            exponent=combo.get("exponent", 2.0)),
+            zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)), indices=indices, windows=windows)
         rows.append({**combo, **result.row})
         replicates[position] = result.crossover_replicates
     reps = xr.Dataset(
@@ -342,7 +383,7 @@ def crossover_table(groups: dict, zeta_df, cfg: dict):
     return pd.DataFrame(rows), reps
 
 
-def run_crossover(cfg, stiffness_nc, zeta_csv, out_csv, out_nc):
+def run_crossover(study, stiffness_nc, zeta_csv, out_csv, out_nc):
     """``crossover`` rule: stiffness.nc and zeta.csv -> crossover.csv and the
     bootstrap replicates of F_tr in crossover.nc."""
     import pandas as pd
@@ -350,8 +391,9 @@ def run_crossover(cfg, stiffness_nc, zeta_csv, out_csv, out_nc):
     from . import provenance
     from .io import read_groups, write_csv, write_netcdf
 
-    table, reps = crossover_table(read_groups(stiffness_nc), pd.read_csv(zeta_csv), cfg)
-    reps.attrs.update(provenance.provenance_attrs(config=cfg, title="roughcontact: crossover force replicates"))
+    study = StudySettings.of(study)
+    table, reps = crossover_table(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study)
+    reps.attrs.update(provenance.provenance_attrs(config=study.config, title="roughcontact: crossover force replicates"))
     write_csv(table, out_csv)
     write_netcdf(reps, out_nc)
     log.info("crossover:\n%s", table.to_string())

@@ -31,6 +31,7 @@ import logging
 import pkgutil
 from pathlib import Path
 
+from ..study_settings import StudySettings
 from ..tables import write_html_table
 from .registry import CLAIMS, Claim, ClaimInputs, register, row
 
@@ -72,7 +73,7 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, exponents=None,
+def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, exponents=None,
                  zeta_replicates=None):
     """``claims.csv``: one row per quantitative claim (every registered :class:`Claim` whose
     inputs are given) and per combination it is tested on, with the measured value, its 95 %
@@ -80,7 +81,7 @@ def claims_table(cross, reps, zeta_df, cfg: dict, groups: dict | None = None, ex
     the claim's letter, then as each claim gives its rows."""
     import pandas as pd
 
-    inputs = ClaimInputs(cross=cross, replicates=reps, zeta=zeta_df, config=cfg, groups=groups,
+    inputs = ClaimInputs(cross=cross, replicates=reps, zeta=zeta_df, study=StudySettings.of(study), groups=groups,
                          exponents=exponents, zeta_replicates=zeta_replicates)
     rows = []
     for claim in claims().values():
@@ -97,7 +98,7 @@ CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per s
                "cannot decide it; the reason says why). claims.csv holds every digit.")
 
 
-def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html):
+def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html):
     """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
     runs and the local exponents -> claims.csv and the same table as an HTML page for the report
     (:mod:`roughcontact.study.tables`)."""
@@ -109,7 +110,7 @@ def run_claims(cfg, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc
     cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
     with xr.open_dataset(crossover_nc, engine="netcdf4") as reps, xr.open_dataset(zeta_nc, engine="netcdf4") as zds:
         exponents = pd.read_csv(exponents_csv) if Path(exponents_csv).stat().st_size > 1 else pd.DataFrame()
-        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), cfg, read_groups(stiffness_nc), exponents,
+        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), study, read_groups(stiffness_nc), exponents,
                              zds["zeta_replicates"].load())
     write_csv(table, out_csv)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,

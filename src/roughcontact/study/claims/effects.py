@@ -50,14 +50,13 @@ def _untested(axis, why, paper):
             "paper": paper, "verdict_text": f"untested: {why}"}
 
 
-def effect_rows(ds, cross, cfg: dict, axis: str) -> list[dict]:
+def effect_rows(ds, cross, study, axis: str) -> list[dict]:
     """Rows of the claim of one optional *axis* (cutoff: (i), rolloff: (j), hardness: (k)) from
     the sphere Dataset *ds* (merged runs) and the crossover table *cross* (for the low-force
     window); keyword dicts of :func:`roughcontact.study.claims.registry.row`."""
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    fit = cfg["fit"]
-    level = float(fit["zeta"]["confidence"])
-    indices = bootstrap_indices(ds.sizes["seed"], int(fit["zeta"]["bootstrap"]))
+    L, E = study.grid.length, study.e_star
+    level = study.fit.zeta.confidence
+    indices = bootstrap_indices(ds.sizes["seed"], study.fit.zeta.bootstrap)
     force = ds["force"].values / (E * L**2)
     rows = []
     paper = 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
@@ -72,23 +71,23 @@ def effect_rows(ds, cross, cfg: dict, axis: str) -> list[dict]:
             continue
         for position in itertools.product(*(ds[d].values.tolist() for d in others)):
             pick = dict(zip(others, position))
-            rows += _pair(axis, value, baseline, ds.sel(pick), pick, force, cross, cfg, indices, level, paper)
+            rows += _pair(axis, value, baseline, ds.sel(pick), pick, force, cross, study, indices, level, paper)
     return rows
 
 
-def _pair(axis, value, baseline, ds, pick, force, cross, cfg, indices, level, paper):
+def _pair(axis, value, baseline, ds, pick, force, cross, study, indices, level, paper):
     """The rows of one (axis value, combination) against the baseline."""
     claim, statement = _STATEMENTS[axis]
     with_, without = ds.sel({axis: value}), ds.sel({axis: baseline})
-    min_cells = cfg["fit"]["zeta"]["min_cells"]
+    min_cells = study.fit.zeta.min_cells
     both = (resolved(with_["contact_cells"].mean("seed"), min_cells)
             & resolved(without["contact_cells"].mean("seed"), min_cells)).values
     where = {**pick, axis: value}
     sweep = (f"sphere H = {pick['hurst']:g}, R = {pick['radius']:g}, h_rms = {pick['h_rms']:g}, {axis} = {value:g} "
-             f"against {axis} = {baseline:g}, {ds.sizes['seed']} paired seeds, n = {cfg['grid']['n']}")
+             f"against {axis} = {baseline:g}, {ds.sizes['seed']} paired seeds, n = {study.grid.n}")
     if axis == "cutoff":
         # the apparent contact radius of the run without the cutoff, from k = 2 E* a (flat punch)
-        radius = without["stiffness"].mean("seed").values / (2 * cfg["e_star"])
+        radius = without["stiffness"].mean("seed").values / (2 * study.e_star)
         mask = both & (radius > value)
         names = [("stiffness", "")]
         loads = f"{int(mask.sum())} resolved loads with contact radius > cutoff {value:g}"
@@ -103,9 +102,9 @@ def _pair(axis, value, baseline, ds, pick, force, cross, cfg, indices, level, pa
         f_tr = match["Ftr_pred_fit"].iloc[0] if len(match) else math.nan
         if not math.isfinite(f_tr) and len(match):
             f_tr = match["Ftr_pred_estimate"].iloc[0]
-        mask = both & (force <= cfg["fit"]["slopes"]["low_max_ratio"] * f_tr)
+        mask = both & (force <= study.fit.slopes.low_max_ratio * f_tr)
         names = [("stiffness", "")]
-        loads = f"{int(mask.sum())} resolved loads with F <= {cfg['fit']['slopes']['low_max_ratio']:g} F_tr"
+        loads = f"{int(mask.sum())} resolved loads with F <= {study.fit.slopes.low_max_ratio:g} F_tr"
     rows = []
     for name, what in names:
         if mask.sum() < (2 if axis == "rolloff" else 1):
@@ -139,7 +138,7 @@ def _claim_of(axis: str):
     def rows(inputs):
         if "sphere" not in inputs.groups:
             return []
-        return [row(**r) for r in effect_rows(inputs.groups["sphere"], inputs.cross, inputs.config, axis)]
+        return [row(**r) for r in effect_rows(inputs.groups["sphere"], inputs.cross, inputs.study, axis)]
     return rows
 
 

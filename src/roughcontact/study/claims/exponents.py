@@ -21,7 +21,7 @@ def prl2012_exponent(hurst: float) -> float:
     return 0.77 - 0.26 * hurst
 
 
-def exponent_rows(exponents, zeta_df, cfg) -> list[dict]:
+def exponent_rows(exponents, zeta_df, study) -> list[dict]:
     """Claims (l) and (m) from the local exponents (:mod:`roughcontact.study.exponents`) and the ζ fit.
 
     (l) With a roll-off below the system size, ``K ∝ p`` over a range of pressures (Pastewka et
@@ -30,16 +30,16 @@ def exponent_rows(exponents, zeta_df, cfg) -> list[dict]:
     contains 1 (the number of such loads is the reason). (m) The free exponent of the flat runs
     at the paper's setting (``zeta.csv``) against :func:`prl2012_exponent`.
     """
-    L = cfg["grid"]["length"]
-    n, seeds = cfg["grid"]["n"], len(cfg["seeds"])
-    flat_swept = any(not math.isfinite(r) for r in cfg["radius"])
-    rolled = sorted(r for r in cfg["rolloff"] if r is not None and r < L)
+    L = study.grid.length
+    n, seeds = study.grid.n, len(study.seeds)
+    flat_swept = any(not math.isfinite(r) for r in study.radius)
+    rolled = sorted(r for r in study.rolloff if r is not None and r < L)
     statement = "with a roll-off lambda_r < L, K ~ p (local exponent 1) over a range of loads (Pastewka et al. 2013)"
     rows = []
     if not (flat_swept and rolled):
         why = "no flat runs" if not flat_swept else "no roll-off below L swept"
         rows.append(row("l", statement, math.nan, math.nan, math.nan, 1.0, f"untested: {why}"))
-    for hurst, rolloff in itertools.product(cfg["hurst"], rolled if flat_swept else []):
+    for hurst, rolloff in itertools.product(study.hurst, rolled if flat_swept else []):
         sub = exponents[(exponents["kind"] == "flat") & (exponents["hurst"] == hurst)
                         & (exponents["rolloff"] == rolloff)] if len(exponents) else exponents
         for axis in ("cutoff", "hardness"):  # the other optional axes at the paper's setting
@@ -80,7 +80,7 @@ def exponent_rows(exponents, zeta_df, cfg) -> list[dict]:
 
 def _rows(letter: str):
     def rows(inputs):
-        return [r for r in exponent_rows(inputs.exponents, inputs.zeta, inputs.config) if r["claim"] == letter]
+        return [r for r in exponent_rows(inputs.exponents, inputs.zeta, inputs.study) if r["claim"] == letter]
     return rows
 
 

@@ -28,8 +28,8 @@ LAMBDA_EQ17, LAMBDA_GT = math.sqrt(6.0) * 1.7**-1.5, 1.41
 def _spheres(inputs):
     """``(r, context)`` of every sphere combination of ``crossover.csv``: the row and what every
     claim (a)-(f) states about it (its axes, sweep, body, resolved loads, the off-theory reason)."""
-    cfg = inputs.config
-    n, seeds, length = cfg["grid"]["n"], len(cfg["seeds"]), cfg["grid"]["length"]
+    study = inputs.study
+    n, seeds, length = study.grid.n, len(study.seeds), study.grid.length
     from .registry import AXIS_COLUMNS
 
     for _, r in inputs.cross.iterrows():
@@ -76,7 +76,7 @@ def _b(inputs):
 
 
 def _c(inputs):
-    n = inputs.config["grid"]["n"]
+    n = inputs.study.grid.n
     out = []
     for _, z in inputs.zeta.iterrows():
         out.append(row(
@@ -94,9 +94,9 @@ def _c(inputs):
     return out
 
 
-def _slope_row(r, c, cfg, claim, name, text):
+def _slope_row(r, c, slopes, claim, name, text):
     window = "low" if name == "slope_low" else "high"
-    ratio = cfg["fit"]["slopes"][f"{window}_max_ratio" if window == "low" else "high_min_ratio"]
+    ratio = slopes.low_max_ratio if window == "low" else slopes.high_min_ratio
     return row(
         claim, text, r[name], r[f"{name}_ci_low"], r[f"{name}_ci_high"], r[f"{name}_theory"],
         c["off"] or r[f"{name}_verdict"], sweep=c["sweep"],
@@ -107,14 +107,14 @@ def _slope_row(r, c, cfg, claim, name, text):
 
 
 def _d(inputs):
-    return [_slope_row(r, c, inputs.config, "d", "slope_low", "low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)")
+    return [_slope_row(r, c, inputs.study.fit.slopes, "d", "slope_low", "low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)")
             for r, c in _spheres(inputs)]
 
 
 def _e(inputs):
     out = []
     for r, c in _spheres(inputs):
-        out.append(_slope_row(r, c, inputs.config, "e", "slope_high", "high-force slope = 1/(m+1) (1/3: Hertz, eq. 9)"))
+        out.append(_slope_row(r, c, inputs.study.fit.slopes, "e", "slope_high", "high-force slope = 1/(m+1) (1/3: Hertz, eq. 9)"))
         if "hertz_coefficient" in r and math.isfinite(r["hertz_coefficient"]):
             out.append(row(
                 "e", f"body prefactor A of F = A k^(m+1) + B k^(H+1) equals eq. 7 (L/(6R): Hertz, eq. 10){c['body']}",
@@ -144,22 +144,22 @@ def _f(inputs):
 
 def _paper_spheres(inputs):
     cross = inputs.cross
-    return is_paper_setting(cross, inputs.config["grid"]["length"]) if len(cross) else cross
+    return is_paper_setting(cross, inputs.study.grid.length) if len(cross) else cross
 
 
 def _g(inputs):
     """F_tr ∝ R^((H+1)/(2−H)) h^(3/(2−H)) (eq. 17), exponents fitted per H."""
-    cross, reps, cfg = _paper_spheres(inputs), inputs.replicates, inputs.config
+    cross, reps, study = _paper_spheres(inputs), inputs.replicates, inputs.study
     out = []
-    level = float(cfg["fit"]["zeta"]["confidence"])
-    for hurst in cfg["hurst"]:
+    level = study.fit.zeta.confidence
+    for hurst in study.hurst:
         sub = cross[(cross["hurst"] == hurst) & np.isfinite(cross["Ftr_ci_low"])] if len(cross) else cross
         for axis, theory_value in (("radius", (hurst + 1) / (2 - hurst)), ("h_rms", 3 / (2 - hurst))):
             statement = f"F_tr ~ {'R' if axis == 'radius' else 'h_rms'}^{theory_value:.3g} (eq. 17: " + \
                         ("(H+1)/(2-H))" if axis == "radius" else "3/(2-H))")
             values = sorted(set(sub[axis])) if len(sub) else []
             if len(values) < 2:
-                swept = len([r for r in cfg["radius"] if math.isfinite(r)] if axis == "radius" else cfg["h_rms"])
+                swept = len([r for r in study.radius if math.isfinite(r)] if axis == "radius" else study.h_rms)
                 why = (f"untested: {len(values)} {axis} value(s) with a resolved crossover" if swept >= 2
                        else f"untested: one {axis} value only")
                 out.append(row("g", statement, math.nan, math.nan, math.nan, theory_value, why, hurst=hurst))
@@ -181,18 +181,18 @@ def _g(inputs):
 
 def _h(inputs):
     """Eq. 18, F_tr/E* = λ h^(3/2) R^(1/2) for H → 0, from the smallest H swept (≤ 0.2)."""
-    cross, cfg = _paper_spheres(inputs), inputs.config
-    small = [h for h in cfg["hurst"] if h <= 0.2]
+    cross, study = _paper_spheres(inputs), inputs.study
+    small = [h for h in study.hurst if h <= 0.2]
     statement = f"eq. 18: F_tr = lambda E* h^1.5 R^0.5 as H -> 0, lambda = {LAMBDA_EQ17:.2f} (eq. 17; GT: {LAMBDA_GT})"
     if not small or not len(cross):
         return [row("h", statement, math.nan, math.nan, math.nan, LAMBDA_EQ17,
-                    f"untested: the sweep's smallest H is {min(cfg['hurst']):g} (needs H <= 0.2 with spheres)")]
+                    f"untested: the sweep's smallest H is {min(study.hurst):g} (needs H <= 0.2 with spheres)")]
     from ...models.greenwood_tripp import self_affine_sphere_curve
     from ..verdicts import fit_eq16
 
     out = []
     hurst = min(small)
-    L, n = cfg["grid"]["length"], cfg["grid"]["n"]
+    L, n = study.grid.length, study.grid.n
     for _, r in cross[cross["hurst"] == hurst].iterrows():
         scale = r["h_rms"] ** 1.5 * r["radius"] ** 0.5 / L**2
         low, high = r["Ftr_ci_low"] / scale, r["Ftr_ci_high"] / scale

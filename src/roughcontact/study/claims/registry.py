@@ -27,8 +27,8 @@ class ClaimInputs:
         Bootstrap replicates of the crossover force (``crossover.nc``).
     zeta : pandas.DataFrame
         ``zeta.csv``: ζ(H) of eq. 11 with its interval.
-    config : dict
-        The resolved configuration.
+    study : roughcontact.study.study_settings.StudySettings
+        The study's settings (grid, seeds, sweep, fit windows).
     groups : dict or None
         The merged runs, one Dataset per surface kind (``stiffness.nc``).
     exponents : pandas.DataFrame or None
@@ -40,7 +40,7 @@ class ClaimInputs:
     cross: object
     replicates: object
     zeta: object
-    config: dict
+    study: object
     groups: dict | None = None
     exponents: object = None
     zeta_replicates: object = None
@@ -57,7 +57,7 @@ class Claim:
     statement : str
         The claim in words (each row states it for its combination).
     needs : tuple of str
-        The fields of :class:`ClaimInputs` it reads besides ``config``; without one of them
+        The fields of :class:`ClaimInputs` it reads besides ``study``; without one of them
         (``None``) the claim has no rows.
     rows : callable
         ``rows(inputs) -> list of dict``: one :func:`row` per combination it is tested on, each

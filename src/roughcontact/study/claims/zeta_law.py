@@ -20,8 +20,7 @@ def _c_prime(inputs):
     from ...models.zeta_law import LAWS
     from ..zeta.law import MIN_HURST, fit_zeta_law
 
-    cfg = inputs.config
-    n = cfg["grid"]["n"]
+    n = inputs.study.grid.n
     flat = flat_zeta_rows(inputs.zeta)
     flat = flat[np.isfinite(flat["zeta_ci_low"].to_numpy(float))] if len(flat) else flat
     statement = "zeta(H) follows a law whose form the data choose (eq. 13: 1.7/(H+1))"
@@ -31,7 +30,7 @@ def _c_prime(inputs):
                     f"(a law needs {MIN_HURST})")]
     hurst = flat["hurst"].to_numpy(float)
     law = fit_zeta_law(hurst, flat["zeta"], flat["zeta_ci_low"], flat["zeta_ci_high"],
-                       inputs.zeta_replicates.sel(hurst=hurst).values, level=float(cfg["fit"]["zeta"]["confidence"]))
+                       inputs.zeta_replicates.sel(hurst=hurst).values, level=inputs.study.fit.zeta.confidence)
     aic = ", ".join(f"{form} {value:.1f}" for form, value in sorted(law.aic.items(), key=lambda kv: kv[1]))
     sweep = (f"flat H = {hurst.min():g}...{hurst.max():g} ({hurst.size} values), "
              f"{int(flat['n_seeds'].iloc[0])} seeds, n = {n}")

@@ -13,6 +13,7 @@ import math
 import numpy as np
 
 from ..plotting import pyplot, save_png
+from ..study_settings import StudySettings
 
 __all__ = ["make_figures", "make_spectrum_figure", "draw_heights", "draw_spectrum", "draw_stiffness"]
 
@@ -61,7 +62,7 @@ def draw_spectrum(ax, spectrum_file, unit: str):
     ax.legend(fontsize=7)
 
 
-def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
+def draw_stiffness(ax, merged_file, study: StudySettings, spectrum_file=None):
     """k(F) (N, N/m) of every radius: the mean over the tiles, its band, Hertz for spheres, and
     the models' predictions of *spectrum_file* (if given)."""
     from ..io import read_groups
@@ -80,7 +81,7 @@ def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
             force = sub["force"].values
             color = next(colors)
             flat = "flat (rough punch)" if ds.attrs.get("half_space", "").startswith("free") else "flat (periodic)"
-            label = f"R = {radius:g} {cfg['units']['length']}" if kind == "sphere" else flat
+            label = f"R = {radius:g} {study.units.length}" if kind == "sphere" else flat
             ax.loglog(force, sub["k_mean"].values, "o-", color=color, ms=3, label=label)
             if np.all(np.isfinite(sub["k_ci_low"].values)):
                 ax.fill_between(force, sub["k_ci_low"].values, sub["k_ci_high"].values, color=color,
@@ -95,8 +96,8 @@ def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
             if kind == "sphere":
                 from .config import to_metres, to_pascals
 
-                e_pa = float(cfg["e_star"]) * to_pascals(cfg["units"]["e_star"])
-                r_m = float(radius) * to_metres(cfg["units"]["length"])
+                e_pa = study.e_star * to_pascals(study.units.e_star)
+                r_m = float(radius) * to_metres(study.units.length)
                 hertz = 2 * e_pa * (3 * force * r_m / (4 * e_pa)) ** (1 / 3)
                 ax.loglog(force, hertz, "--", color=color, lw=0.8, label=f"Hertz, R = {radius:g}")
     ax.set_xlabel("normal force F (N)")
@@ -105,9 +106,11 @@ def draw_stiffness(ax, merged_file, cfg: dict, spectrum_file=None):
     return groups
 
 
-def make_figures(cfg: dict, name: str, surface_file, merged_file, output, spectrum_file=None) -> None:
+def make_figures(study, name: str, surface_file, merged_file, output, spectrum_file=None) -> None:
     """Write *output* ``.heights``, ``.kf`` and (with *spectrum_file*) ``.psd`` (PNG, atomic)
-    for the scan *name*."""
+    for the scan *name* of the study (:class:`~roughcontact.study.study_settings.StudySettings`
+    or a resolved configuration)."""
+    study = StudySettings.of(study)
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(5.2, 4.4), constrained_layout=True)
     image = draw_heights(ax, surface_file, name)
@@ -115,23 +118,24 @@ def make_figures(cfg: dict, name: str, surface_file, merged_file, output, spectr
     _save(fig, output.heights)
     if spectrum_file is not None:
         fig, ax = plt.subplots(figsize=(5.2, 4.4), constrained_layout=True)
-        draw_spectrum(ax, spectrum_file, cfg["units"]["length"])
+        draw_spectrum(ax, spectrum_file, study.units.length)
         ax.set_title(f"{name}: power spectrum over the tiles and its self-affine fit", fontsize=9)
         _save(fig, output.psd)
     fig, ax = plt.subplots(figsize=(6.4, 5.0), constrained_layout=True)
-    draw_stiffness(ax, merged_file, cfg, spectrum_file)
-    level = 100 * float(cfg["fit"]["zeta"]["confidence"])
+    draw_stiffness(ax, merged_file, study, spectrum_file)
+    level = 100 * study.fit.zeta.confidence
     ax.set_title(f"{name}: mean over tiles, {level:g} % bootstrap band", fontsize=9)
     _save(fig, output.kf)
 
 
-def make_spectrum_figure(cfg: dict, name: str, merged_file, output) -> None:
+def make_spectrum_figure(study, name: str, merged_file, output) -> None:
     """Write *output* ``.kf`` (PNG, atomic): k(F) of the surfaces drawn from the spectrum *name*."""
+    study = StudySettings.of(study)
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 5.0), constrained_layout=True)
-    draw_stiffness(ax, merged_file, cfg)
-    level = 100 * float(cfg["fit"]["zeta"]["confidence"])
-    ax.set_title(f"{name}: mean over {len(cfg['seeds'])} seeds, {level:g} % bootstrap band", fontsize=9)
+    draw_stiffness(ax, merged_file, study)
+    level = 100 * study.fit.zeta.confidence
+    ax.set_title(f"{name}: mean over {len(study.seeds)} seeds, {level:g} % bootstrap band", fontsize=9)
     _save(fig, output.kf)
 
 

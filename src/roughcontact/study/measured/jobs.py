@@ -42,6 +42,7 @@ from ...surfaces.bodies import paraboloid
 from .. import provenance, runfile, statistics
 from .config import LENGTH_UNITS, plain_unit, to_metres, to_newtons, to_pascals
 from ..runs import force_grid, kind_of
+from ..study_settings import StudySettings, TopographyInput, ZetaFitSettings
 
 __all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job",
            "merge_surface", "run_order", "sha256"]
@@ -71,33 +72,36 @@ def _scale(unit, study_unit: str, name: str) -> float:
     return to_metres(unit) / to_metres(study_unit)
 
 
-def prepare_surface(cfg: dict, entry: dict, output) -> None:
-    """Read the scan of one ``topography`` entry and write it, in ``units.length``, to *output*.
+def prepare_surface(entry, output, *, length_unit: str, tile: int | None) -> None:
+    """Read the scan of one ``topography`` entry and write it, in *length_unit*, to *output*.
 
-    *cfg* needs only ``units`` and ``tile`` (a resolved config, or just those keys).
+    *entry*: a :class:`~roughcontact.study.study_settings.TopographyInput` (or a resolved
+    ``topography`` entry); *length_unit*: ``units.length``; *tile*: the tile side in cells
+    (``None``: the whole square). Only these: a change of another setting keeps the tiles' runs.
 
     Raises :class:`~roughcontact.errors.InputFileError` (one line, nothing written) for a scan
     that cannot be used, including one smaller than ``tile``.
     """
     import xarray as xr
 
-    study_unit = cfg["units"]["length"]
-    unit = entry["unit"] or study_unit
-    detrend = None if entry["detrend"] == "none" else entry["detrend"]
+    entry = TopographyInput.of(entry)
+    study_unit = length_unit
+    unit = entry.unit or study_unit
+    detrend = None if entry.detrend == "none" else entry.detrend
     try:
-        scan = surfaces.from_topography(entry["file"], unit=unit, length=entry["size"], detrend=detrend,
-                                        interpolate=bool(entry.get("interpolate", False)))
+        scan = surfaces.from_topography(entry.file, unit=unit, length=entry.size, detrend=detrend,
+                                        interpolate=entry.interpolate)
     except InputFileError as err:   # the config's words for the reader's arguments
-        raise InputFileError(err.reworded({"length": f"size (in the topography entry {entry['name']})"})) from None
-    factor = _scale(scan.unit, study_unit, entry["file"])
-    tile = cfg["tile"] or scan.n
+        raise InputFileError(err.reworded({"length": f"size (in the topography entry {entry.name})"})) from None
+    factor = _scale(scan.unit, study_unit, entry.file)
+    tile = tile or scan.n
     if tile > scan.n:
-        raise InputFileError(f"{entry['file']}: the scan's largest square has {scan.n} x {scan.n} pixels, "
+        raise InputFileError(f"{entry.file}: the scan's largest square has {scan.n} x {scan.n} pixels, "
                              f"fewer than a tile of tile = {tile}")
     record = {f"scan_{k}": v for k, v in scan.record.items()}
     attrs = provenance.provenance_attrs(
-        title="roughcontact measured surface", name=entry["name"], file=os.path.basename(entry["file"]),
-        file_sha256=sha256(entry["file"]), length=scan.length * factor, units_length=study_unit,
+        title="roughcontact measured surface", name=entry.name, file=os.path.basename(entry.file),
+        file_sha256=sha256(entry.file), length=scan.length * factor, units_length=study_unit,
         tile=int(tile), tile_count=(scan.n // tile) ** 2, tile_length=scan.length * factor * tile / scan.n,
         **record)
     n = scan.n
@@ -109,7 +113,7 @@ def prepare_surface(cfg: dict, entry: dict, output) -> None:
                     attrs=attrs)
     with provenance.atomic_path(output) as tmp:
         ds.to_netcdf(tmp, engine="netcdf4")
-    logger.info("%s: %d x %d cells of %g %s, %d tiles of %d", entry["name"], n, n,
+    logger.info("%s: %d x %d cells of %g %s, %d tiles of %d", entry.name, n, n,
                 scan.cell_size * factor, study_unit, (n // tile) ** 2, tile)
 
 
@@ -186,21 +190,22 @@ class MeasuredJob:
         return f"{self.source} {self.name}, {self.ensemble} {self.index}, R = {self.radius:g} {self.length_unit}"
 
 
-def job_of(cfg: dict, source: str, name: str, radius: float, index: int, *, force_unit: str = "N") -> MeasuredJob:
-    """The :class:`MeasuredJob` of one (surface, radius, tile or seed) of a resolved config
-    (*force_unit*: of progress lines and messages)."""
-    entry = next(e for e in cfg[source] if e["name"] == name)
-    rng = cfg["forces"][kind_of(radius)]
-    solver = cfg["solver"]
-    extra = ({"tile": cfg["tile"]} if source == "topography" else
-             {"n": int(cfg["grid"]["n"]), "length": float(cfg["grid"]["length"]),
-              "convention": entry["convention"]})
+def job_of(study, source: str, name: str, radius: float, index: int, *, force_unit: str = "N") -> MeasuredJob:
+    """The :class:`MeasuredJob` of one (surface, radius, tile or seed) of the study
+    (:class:`~roughcontact.study.study_settings.StudySettings` or a resolved configuration;
+    *force_unit*: of progress lines and messages)."""
+    study = StudySettings.of(study)
+    rng = study.forces[kind_of(radius)]
+    solver = study.solver
+    extra = ({"tile": study.tile} if source == "topography" else
+             {"n": study.grid.n, "length": study.grid.length,
+              "convention": study.spectrum_entry(name).convention})
     return MeasuredJob(source=source, name=name, index=int(index), radius=float(radius),
-                       e_star=float(cfg["e_star"]), length_unit=cfg["units"]["length"],
-                       pressure_unit=cfg["units"]["e_star"], force_from=float(rng["from"]),
-                       force_to=float(rng["to"]), force_count=int(rng["count"]), tol=float(solver["tol"]),
-                       maxiter=int(solver.get("maxiter", bem.DEFAULT_MAXITER)),
-                       stiffness_method=solver["stiffness"], rel_step=float(solver["rel_step"]),
+                       e_star=study.e_star, length_unit=study.units.length,
+                       pressure_unit=study.units.e_star, force_from=rng.start,
+                       force_to=rng.stop, force_count=rng.count, tol=solver.tol,
+                       maxiter=bem.DEFAULT_MAXITER if solver.maxiter is None else solver.maxiter,
+                       stiffness_method=solver.stiffness, rel_step=solver.rel_step,
                        force_unit=plain_unit(force_unit), **extra)
 
 
@@ -297,7 +302,7 @@ def _half_space(job: MeasuredJob) -> str:
     return "free (non-periodic)" + (", rough punch of the tile's side" if job.kind == "flat" else "")
 
 
-def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_file=None) -> None:
+def merge_surface(study, source: str, name: str, run_files, output, surface_file=None) -> None:
     """Merge the runs of one surface into *output* (NetCDF, one group per kind, atomic).
 
     *run_files*: paths whose order is :func:`run_order` of the same arguments. Each group
@@ -310,12 +315,13 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
 
     from ..io import write_groups
 
+    study = StudySettings.of(study)
     runs = [xr.load_dataset(p, engine="netcdf4") for p in run_files]
-    order = run_order(cfg, source, name, len(runs) // max(1, len(cfg["radius"])))
+    order = run_order(study, source, name, len(runs) // max(1, len(study.radius)))
     ens = "tile" if source == "topography" else "seed"
     groups = {}
     for kind in ("sphere", "flat"):
-        radii = [r for r in cfg["radius"] if kind_of(r) == kind]
+        radii = [r for r in study.radius if kind_of(r) == kind]
         if not radii:
             continue
         members = sorted({i for r, i in order if kind_of(r) == kind})
@@ -330,8 +336,8 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
         ds[ens].attrs.update(long_name="tile of the scan (row by row)" if ens == "tile" else "random seed",
                              units="1")
         if kind == "sphere":
-            ds["radius"].attrs.update(long_name="sphere radius R", units=cfg["units"]["length"])
-        _add_interval(ds, ens, cfg["fit"]["zeta"])
+            ds["radius"].attrs.update(long_name="sphere radius R", units=study.units.length)
+        _add_interval(ds, ens, study.fit.zeta)
         ds.attrs = {"surface_kind": kind, "half_space": runs[order.index((radii[0], members[0]))].attrs["half_space"],
                     "run_git_commits": provenance.canonical_json(sorted({r.attrs["git_commit"] for r in runs}))}
         groups[kind] = ds
@@ -339,17 +345,17 @@ def merge_surface(cfg: dict, source: str, name: str, run_files, output, surface_
     if surface_file is not None:
         _, _, attrs = read_surface(surface_file)
         extra = {k: v for k, v in attrs.items() if k.startswith(("scan_", "file", "tile", "length", "name"))}
-    entry = next(e for e in cfg[source] if e["name"] == name)
-    recorded = {"file": os.path.basename(entry["file"])} | extra
+    entry = study.topography_entry(name) if source == "topography" else study.spectrum_entry(name)
+    recorded = {"file": os.path.basename(entry.file)} | extra
     if "file_sha256" not in recorded:  # the surface file records the scan's hash when there is one
-        recorded["file_sha256"] = sha256(entry["file"])
+        recorded["file_sha256"] = sha256(entry.file)
     attrs = provenance.provenance_attrs(
-        config=cfg, title=f"roughcontact measured study: {source} {name}", source=source, **recorded,
-        e_star=cfg["e_star"], e_star_units=cfg["units"]["e_star"], units_length=cfg["units"]["length"])
+        config=study.config, title=f"roughcontact measured study: {source} {name}", source=source, **recorded,
+        e_star=study.e_star, e_star_units=study.units.e_star, units_length=study.units.length)
     write_groups(output, groups, attrs)
 
 
-def _add_interval(ds, ens: str, fit: dict) -> None:
+def _add_interval(ds, ens: str, fit: ZetaFitSettings) -> None:
     k = ds["stiffness"]
     ds["k_mean"] = k.mean(ens).assign_attrs(long_name=f"mean stiffness over the {ens}s", units="N m-1")
     count = ds.sizes[ens]
@@ -357,20 +363,21 @@ def _add_interval(ds, ens: str, fit: dict) -> None:
     low = np.full(values.shape[:-1], np.nan)
     high = np.full(values.shape[:-1], np.nan)
     if count > 1:
-        idx = statistics.bootstrap_indices(count, int(fit["bootstrap"]))
+        idx = statistics.bootstrap_indices(count, fit.bootstrap)
         means = values[..., idx].mean(axis=-1)          # (..., resamples)
         for pos in np.ndindex(values.shape[:-1]):
-            low[pos], high[pos] = statistics.interval(means[pos], float(fit["confidence"]))
+            low[pos], high[pos] = statistics.interval(means[pos], fit.confidence)
     dims = [d for d in k.dims if d != ens]
-    level = f"{100 * float(fit['confidence']):g} %"
+    level = f"{100 * fit.confidence:g} %"
     ds["k_ci_low"] = (dims, low, {"long_name": f"{level} bootstrap interval of k_mean over the {ens}s, low",
                                   "units": "N m-1"})
     ds["k_ci_high"] = (dims, high, {"long_name": f"{level} bootstrap interval of k_mean over the {ens}s, high",
                                     "units": "N m-1"})
 
 
-def run_order(cfg: dict, source: str, name: str, count: int) -> list[tuple[float, int]]:
+def run_order(study, source: str, name: str, count: int) -> list[tuple[float, int]]:
     """``(radius, tile or seed)`` of every run of one surface, in the order of its run files:
     radius by radius, then ``count`` tiles (topography) or the seeds (spectrum)."""
-    members = range(count) if source == "topography" else cfg["seeds"]
-    return [(float(r), int(i)) for r in cfg["radius"] for i in members]
+    study = StudySettings.of(study)
+    members = range(count) if source == "topography" else study.seeds
+    return [(float(r), int(i)) for r in study.radius for i in members]

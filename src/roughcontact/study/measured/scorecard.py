@@ -18,6 +18,7 @@ import math
 import numpy as np
 
 from ..ensemble import resolved
+from ..study_settings import StudySettings
 
 __all__ = ["measured_scorecard", "run_measured_scorecard", "MEASURED_SCORECARD_LEAD"]
 
@@ -70,13 +71,13 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
     return table
 
 
-def run_measured_scorecard(cfg: dict, name: str, merged_file, spectrum_file, out_csv, out_html) -> None:
+def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv, out_html) -> None:
     """``measured_scorecard`` rule: the scorecard of one scan as CSV and as an HTML page of the report."""
     from ..io import read_groups, write_csv
     from ..tables import write_html_table
 
     table = measured_scorecard(read_groups(merged_file), read_groups(spectrum_file), name=name,
-                               min_cells=int(cfg["fit"]["zeta"]["min_cells"]))
+                               min_cells=StudySettings.of(study).fit.zeta.min_cells)
     write_csv(table, out_csv)
     write_html_table(table, out_html, title=f"Model scorecard of the scan {name}", lead=MEASURED_SCORECARD_LEAD,
                      verdict_columns=(), first=("kind", "radius", "model", "rank", "max_rel_dev", "rms_rel_dev",

@@ -23,7 +23,8 @@ import numpy as np
 from ...models.scorecard import models
 from .. import provenance
 from .config import to_metres, to_pascals
-from ..runs import force_grid, kind_of
+from ..runs import kind_of
+from ..study_settings import StudySettings
 
 __all__ = ["fit_scan", "run_spectrum"]
 
@@ -42,16 +43,17 @@ def _tiles(surface_file):
     return blocks, length * tile / n, tile, attrs
 
 
-def fit_scan(cfg: dict, surface_file):
-    """``(fit, tile_length, tile)``: the :class:`SpectrumFit` of the tiles of a surface file."""
+def fit_scan(study, surface_file):
+    """``(fit, tile_length, tile)``: the :class:`SpectrumFit` of the tiles of a surface file
+    (*study*: :class:`~roughcontact.study.study_settings.StudySettings` or a resolved configuration)."""
     from ...surfaces.spectrum_fit import fit_spectrum
 
+    study = StudySettings.of(study)
     blocks, length, tile, _ = _tiles(surface_file)
-    band = cfg["fit"]["spectrum"]["band"]
-    q_band = None if band is None else (2 * math.pi / float(band[0]), 2 * math.pi / float(band[1]))
+    band = study.fit.spectrum_band
+    q_band = None if band is None else (2 * math.pi / band[0], 2 * math.pi / band[1])
     fit = fit_spectrum(blocks, length=length, band=q_band, window="hann", detrend="height",
-                       resamples=int(cfg["fit"]["zeta"]["bootstrap"]),
-                       confidence=float(cfg["fit"]["zeta"]["confidence"]))
+                       resamples=study.fit.zeta.bootstrap, confidence=study.fit.zeta.confidence)
     return fit, length, tile
 
 
@@ -66,7 +68,7 @@ def _fit_row(name: str, fit, unit: str) -> dict:
     return row
 
 
-def run_spectrum(cfg: dict, name: str, surface_file, out_csv, out_nc) -> None:
+def run_spectrum(study, name: str, surface_file, out_csv, out_nc) -> None:
     """``measured_spectrum`` rule: the fit of one scan (CSV) and the models' k(F) (NetCDF)."""
     import pandas as pd
     import xarray as xr
@@ -74,13 +76,14 @@ def run_spectrum(cfg: dict, name: str, surface_file, out_csv, out_nc) -> None:
     from . import models as measured_models
     from ..io import write_csv, write_groups
 
-    fit, length, tile = fit_scan(cfg, surface_file)
-    unit = cfg["units"]["length"]
+    study = StudySettings.of(study)
+    fit, length, tile = fit_scan(study, surface_file)
+    unit = study.units.length
     logger.info("%s: H = %.3f [%.3f, %.3f] over %.4g ... %.4g %s", name, fit.hurst, fit.hurst_ci.low,
                 fit.hurst_ci.high, 2 * math.pi / fit.q_min, 2 * math.pi / fit.q_max, unit)
-    e = float(cfg["e_star"])
-    newton = to_pascals(cfg["units"]["e_star"]) * to_metres(unit) ** 2      # N per (E* unit * L unit^2)
-    per_metre = to_pascals(cfg["units"]["e_star"]) * to_metres(unit)        # N/m per (E* unit * L unit)
+    e = study.e_star
+    newton = to_pascals(study.units.e_star) * to_metres(unit) ** 2      # N per (E* unit * L unit^2)
+    per_metre = to_pascals(study.units.e_star) * to_metres(unit)        # N/m per (E* unit * L unit)
     groups = {"spectrum": xr.Dataset(
         {"C": ("q", fit.spectrum.persson_c(), {"long_name": "radially averaged PSD (Persson's C)",
                                                 "units": f"{unit}4"}),
@@ -91,11 +94,10 @@ def run_spectrum(cfg: dict, name: str, surface_file, out_csv, out_nc) -> None:
                                              "units": f"rad {unit}-1"})},
         attrs={k: v for k, v in _fit_row(name, fit, unit).items() if not isinstance(v, str)})}
     for kind in ("sphere", "flat"):
-        radii = [r for r in cfg["radius"] if kind_of(r) == kind]
+        radii = [r for r in study.radius if kind_of(r) == kind]
         if not radii:
             continue
-        rng = cfg["forces"][kind]
-        force = force_grid(rng["from"], rng["to"], rng["count"]) * e * length**2
+        force = study.forces[kind].normalized() * e * length**2
         names = list(models())     # every model of the registry, NaN where one does not apply
         k = np.full((len(names), len(radii), len(force)), np.nan)
         crossover = np.full(len(radii), np.nan)
@@ -117,7 +119,7 @@ def run_spectrum(cfg: dict, name: str, surface_file, out_csv, out_nc) -> None:
             ds = ds.assign_coords(radius=("radius", radii, {"long_name": "sphere radius R", "units": unit}))
             ds["crossover_force"] = ("radius", crossover, {"long_name": "eq. 17 crossover force", "units": "N"})
         groups[kind] = ds
-    attrs = provenance.provenance_attrs(config=cfg, title=f"roughcontact measured spectrum and models: {name}",
+    attrs = provenance.provenance_attrs(config=study.config, title=f"roughcontact measured spectrum and models: {name}",
                                         h_rms_models="measured h_rms of the tiles")
     write_groups(out_nc, groups, attrs)
     write_csv(pd.DataFrame([_fit_row(name, fit, unit)]), out_csv)

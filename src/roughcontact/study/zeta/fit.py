@@ -15,6 +15,7 @@ from .. import provenance, runs
 from ..ensemble import resolved
 from ..io import read_groups, write_csv, write_netcdf
 from ..statistics import bootstrap_indices
+from ..study_settings import StudySettings
 
 __all__ = ["paper_setting", "fit_zeta", "run_fit_zeta"]
 
@@ -41,12 +42,12 @@ def paper_setting(ds, length: float):
     return ds.sel(pick), ("with " + ", ".join(notes)) if notes else ""
 
 
-def _zeta_points(groups, cfg, hurst):
+def _zeta_points(groups, study: StudySettings, hurst):
     """Per seed: arrays x = ln(F_r/(E h L)), y = ln(k/(E L)) inside the fit window,
     and the source label.  F_r is F for flat runs and F minus the Hertz force
     at the same k (eq. 16) for spheres."""
-    L, E = cfg["grid"]["length"], cfg["e_star"]
-    zc = cfg["fit"]["zeta"]
+    L, E = study.grid.length, study.e_star
+    zc = study.fit.zeta
     if "flat" in groups:
         ds, note = paper_setting(groups["flat"], L)
         source = "flat"
@@ -59,7 +60,7 @@ def _zeta_points(groups, cfg, hurst):
     if note:
         source += f" ({note})"
     points = []
-    for seed in cfg["seeds"]:
+    for seed in study.seeds:
         xs, ys, fs = [], [], []
         for radius in radii:
             for h in ds["h_rms"].values.tolist():
@@ -68,16 +69,16 @@ def _zeta_points(groups, cfg, hurst):
                     sub = sub.sel(radius=radius)
                 F = sub["force"].values
                 k = sub["stiffness"].values
-                ok = resolved(sub["contact_cells"].values, zc["min_cells"])
+                ok = resolved(sub["contact_cells"].values, zc.min_cells)
                 if math.isfinite(radius):
                     m = float(sub["exponent"]) if "exponent" in sub.coords else 2.0
                     f_tr = paper.crossover_force(radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=paper.zeta_estimate(hurst), exponent=m)
-                    ok &= F <= zc["sphere_max_force_ratio"] * f_tr
+                    ok &= F <= zc.sphere_max_force_ratio * f_tr
                     # eq. 16: the roughness carries F minus the smooth body's force at the same k = 2 E* a
                     Fr = F - paper.body_indentation(k / (2 * E), radius=radius, e_star=E, exponent=m).force
                     ok &= Fr > 0.1 * F
                 else:
-                    ok &= sub["contact_area"].values / L**2 <= zc["max_area_fraction"]
+                    ok &= sub["contact_area"].values / L**2 <= zc.max_area_fraction
                     Fr = F
                 xs.append(np.log(Fr[ok] / (E * h * L)))
                 ys.append(np.log(k[ok] / (E * L)))
@@ -96,7 +97,7 @@ def _zeta_stats(points, hurst):
     return math.exp(ln_zeta), slope
 
 
-def fit_zeta(groups, cfg):
+def fit_zeta(groups, study):
     """ζ(H) from eq. 11 (exponent fixed to 1/(H+1)) and the free exponent, with
     bootstrap-over-seeds confidence intervals.  Returns (DataFrame, Dataset).
 
@@ -108,12 +109,13 @@ def fit_zeta(groups, cfg):
     """
     import pandas as pd
 
-    zc = cfg["fit"]["zeta"]
-    n_boot = int(zc["bootstrap"])
-    level = float(zc["confidence"])
+    study = StudySettings.of(study)
+    zc = study.fit.zeta
+    n_boot = zc.bootstrap
+    level = zc.confidence
     rows, replicates = [], []
-    for hurst in cfg["hurst"]:
-        points, source = _zeta_points(groups, cfg, hurst)
+    for hurst in study.hurst:
+        points, source = _zeta_points(groups, study, hurst)
         zeta, slope = _zeta_stats(points, hurst)
         flat = source.startswith("flat")
         boots = []
@@ -143,9 +145,9 @@ def fit_zeta(groups, cfg):
             "force_max": float(f_all.max()) if f_all.size else math.nan,
             "confidence": level,
             "source": source if f_all.size else f"no loads in the fit window ({source})",
-            "window": (f"contact cells >= {zc['min_cells']}, "
-                       + (f"A/L^2 <= {zc['max_area_fraction']}" if flat
-                          else f"F <= {zc['sphere_max_force_ratio']} F_tr(eq. 17, zeta = 1.7/(H+1))")),
+            "window": (f"contact cells >= {zc.min_cells}, "
+                       + (f"A/L^2 <= {zc.max_area_fraction}" if flat
+                          else f"F <= {zc.sphere_max_force_ratio} F_tr(eq. 17, zeta = 1.7/(H+1))")),
         })
     df = pd.DataFrame(rows)
     zds = df.set_index("hurst").to_xarray()
@@ -153,14 +155,14 @@ def fit_zeta(groups, cfg):
         "long_name": "zeta of each bootstrap resample of the seeds (the same resamples for every H)",
         "units": "1"})
     zds.attrs.update(provenance.provenance_attrs(
-        config=cfg, title="zeta(H) fitted from eq. 11 (k/(E* L) = zeta (F/(E* h L))^(1/(H+1)))",
+        config=study.config, title="zeta(H) fitted from eq. 11 (k/(E* L) = zeta (F/(E* h L))^(1/(H+1)))",
         bootstrap_resamples=n_boot, bootstrap_over="seeds", forces="F/(E* L^2)"))
     return df, zds
 
 
-def run_fit_zeta(cfg, stiffness_nc, out_csv, out_nc):
+def run_fit_zeta(study, stiffness_nc, out_csv, out_nc):
     """``fit_zeta`` rule: stiffness.nc -> zeta.csv and zeta.nc (eq. 11)."""
-    df, zds = fit_zeta(read_groups(stiffness_nc), cfg)
+    df, zds = fit_zeta(read_groups(stiffness_nc), study)
     write_csv(df, out_csv)
     write_netcdf(zds, out_nc)
     log.info("zeta(H):\n%s", df.to_string())
