@@ -3,6 +3,8 @@ known grid error, Richardson extrapolation against a sequence with a known limit
 grid.realization_of from the configuration to the surface."""
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -10,6 +12,9 @@ import xarray as xr
 from roughcontact import errors, surfaces
 from roughcontact.study import config, indent, runs, settings
 from roughcontact.study.grid_error import grid_error, richardson
+from snakemake_dry import dry_run
+
+ROOT = Path(__file__).resolve().parents[1]
 
 FORCE = np.geomspace(1e-6, 1e-3, 6)
 CELLS = np.array([5, 20, 80, 300, 1000, 3000])
@@ -110,3 +115,36 @@ def test_command_line_says_a_missing_study_in_one_line(tmp_path, capsys):
     err = capsys.readouterr().err
     assert code == 2 and len(err.strip().splitlines()) == 1, f"exit {code}: {err!r}"
     assert "no stiffness.nc" in err and not (tmp_path / "out.csv").exists(), err
+
+
+def _dry_dirs(tmp_path, coarse):
+    import yaml
+
+    raw = yaml.safe_load((ROOT / "presets" / "tiny.yaml").read_text())
+    if coarse is not None:
+        raw["grid"]["coarse"] = coarse
+    directory = tmp_path / f"coarse{coarse}"
+    directory.mkdir()
+    (directory / "c.yaml").write_text(yaml.safe_dump(raw))
+    return directory
+
+
+def test_grid_coarse_adds_a_coarse_run_per_run(tmp_path):
+    """grid.coarse: snakemake -n plans one indent_coarse job per indent job, their merge and the grid
+    error table; without it, none of them."""
+    with_coarse, without = _dry_dirs(tmp_path, 33), _dry_dirs(tmp_path, None)
+    (rc1, out1), (rc2, out2) = dry_run(ROOT / "Snakefile", "c.yaml", [with_coarse, without])
+    assert rc1 == 0 and rc2 == 0, out1[-2000:] + out2[-2000:]
+    jobs = runs.runs(config.study_settings(config.load_config(with_coarse / "c.yaml")))
+    assert _count(out1, "indent_coarse") == len(jobs), out1[-3000:]
+    assert _count(out1, "grid_error") == 1, "one grid error table"
+    assert _count(out2, "indent_coarse") == 0, "no coarse runs without grid.coarse"
+
+
+def _count(out: str, rule: str) -> int:
+    """The job count of *rule* in the job stats table of ``snakemake -n``."""
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 2 and parts[0] == rule and parts[1].isdigit():
+            return int(parts[1])
+    return 0

@@ -15,6 +15,44 @@ rule merge:
         "../scripts/merge.py"
 
 
+# The companion runs on grid.coarse, merged; the grid error of every load (study.grid_error).
+rule merge_coarse:
+    input:
+        runs=coarse_run_files,
+    output:
+        stiffness="results/merge_coarse/stiffness.nc",
+        ensemble="results/merge_coarse/ensemble.nc",
+    log:
+        "logs/merge_coarse.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=COARSE_CONFIG,
+    script:
+        "../scripts/merge.py"
+
+
+rule grid_error:
+    input:
+        fine=rules.merge.output.stiffness,
+        coarse=rules.merge_coarse.output.stiffness,
+    output:
+        csv=report(
+            "results/grid_error.csv",
+            caption="../report/grid_error_table.rst",
+            category="Tables",
+            labels={"table": "grid error"},
+        ),
+    log:
+        "logs/grid_error.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/grid_error.py"
+
+
 rule fit_zeta:
     input:
         stiffness=rules.merge.output.stiffness,
@@ -119,6 +157,7 @@ rule models:
     input:
         stiffness=rules.merge.output.stiffness,
         zeta=rules.fit_zeta.output.csv,
+        grid_error=grid_error_table,
     output:
         csv=report(
             "results/models.csv",
@@ -140,7 +179,7 @@ rule models:
                 category="2. Model scorecard",
                 labels={"figure": name},
             )
-            for name in study_runs.sphere_names(config)
+            for name in study_runs.sphere_names(STUDY)
         ],
     log:
         "logs/models.log",

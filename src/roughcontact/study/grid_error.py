@@ -30,9 +30,10 @@ import numpy as np
 from ..errors import MergeError
 
 from .ensemble import resolved
+from .study_settings import StudySettings
 from .statistics import bootstrap_indices, interval
 
-__all__ = ["grid_error", "richardson", "run_grid_error", "GRID_ERROR_FRACTION"]
+__all__ = ["grid_error", "richardson", "run_grid_error", "run_study_grid_error", "GRID_ERROR_FRACTION"]
 
 #: a load is resolved when its grid error is at most this fraction of the finer ensemble's band
 GRID_ERROR_FRACTION = 0.5
@@ -95,6 +96,21 @@ def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: floa
     return pd.DataFrame(rows)
 
 
+def run_study_grid_error(study, fine_nc, coarse_nc, out_csv) -> None:
+    """``grid_error`` rule: the study's ``stiffness.nc`` (*fine_nc*) against its companion's on
+    ``grid.coarse`` (*coarse_nc*, the same surfaces) -> ``grid_error.csv`` (an empty table without
+    sphere runs), with the study's fit windows (``fit.zeta``)."""
+    import pandas as pd
+
+    from .io import read_groups, write_csv
+
+    zeta = StudySettings.of(study).fit.zeta
+    fine, coarse = read_groups(fine_nc), read_groups(coarse_nc)
+    table = (grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
+                        confidence=zeta.confidence) if "sphere" in fine and "sphere" in coarse else pd.DataFrame())
+    write_csv(table, out_csv)
+
+
 def run_grid_error(coarse_results, fine_results, out_csv, *, fraction: float = GRID_ERROR_FRACTION) -> None:
     """The grid error of two studies' ``results`` directories (``stiffness.nc`` each; the fit
     settings of the finer study's configuration) written to *out_csv*."""
@@ -112,10 +128,9 @@ def run_grid_error(coarse_results, fine_results, out_csv, *, fraction: float = G
     if "sphere" not in coarse or "sphere" not in fine:
         raise MergeError(f"{coarse_results} and {fine_results}: the grid error needs sphere runs in both studies")
     with xr.open_datatree(Path(fine_results) / "stiffness.nc", engine="netcdf4") as tree:
-        cfg = json.loads(tree.attrs["config"])
-    zeta = cfg["fit"]["zeta"]
-    table = grid_error(coarse["sphere"], fine["sphere"], min_cells=int(zeta["min_cells"]),
-                       bootstrap=int(zeta["bootstrap"]), confidence=float(zeta["confidence"]), fraction=fraction)
+        zeta = StudySettings.of(json.loads(tree.attrs["config"])).fit.zeta
+    table = grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells,
+                       bootstrap=zeta.bootstrap, confidence=zeta.confidence, fraction=fraction)
     write_csv(table, out_csv)
 
 

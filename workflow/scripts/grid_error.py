@@ -1,0 +1,7 @@
+"""Snakemake `grid_error` job: stiffness.nc of the study and of its grid.coarse companion -> grid_error.csv."""
+from roughcontact.study.grid_error import run_study_grid_error
+from roughcontact.study.logs import log_to
+
+snakemake = globals()["snakemake"]
+with log_to(snakemake.log[0]):
+    run_study_grid_error(snakemake.params.cfg, snakemake.input.fine, snakemake.input.coarse, snakemake.output.csv)
