@@ -114,3 +114,10 @@ def test_pull_off_scales_with_w_and_r():
 def test_bad_arguments_name_themselves(kwargs, name):
     with pytest.raises(ValueError, match=name):
         adhesion.jkr(0.1, **{"radius": R, "e_star": E, "work_of_adhesion": W, **kwargs})
+
+
+def test_maugis_cohesive_stress_inverts_the_parameter():
+    """sigma_0(lambda) and lambda(sigma_0) are inverses (to rounding, 1e-14)."""
+    sigma = adhesion.maugis_cohesive_stress(0.8, radius=R, e_star=E, work_of_adhesion=W)
+    lam = adhesion.maugis_parameter(sigma, radius=R, e_star=E, work_of_adhesion=W)
+    assert lam == pytest.approx(0.8, rel=1e-14), f"lambda(sigma_0(0.8)) = {lam}"
