@@ -2,9 +2,10 @@
 
 roughcontact.bem.adhesion (detachment criterion) against JKR and Hertz: the pull-off converging to
 -(3/2) pi w R as the contact grows in cells, Hertz without adhesion, unloading that retraces loading
-without adhesion and departs from it with, the units' scaling. roughcontact.bem.cohesive (Maugis-Dugdale cohesive zone) against Maugis' pull-off across
-lambda, DMT's for small lambda, on the free and the periodic half-space (even and odd grids), with
-refinement, no hysteresis at small lambda, the units' scaling."""
+without adhesion and departs from it with, the units' scaling. roughcontact.bem.cohesive
+(Maugis-Dugdale cohesive zone) against Maugis' pull-off across lambda, DMT's for small lambda, on
+the free and the periodic half-space (even and odd grids), with refinement, no hysteresis at small
+lambda, the units' scaling. Both: elastic only (no hardness)."""
 from __future__ import annotations
 
 import functools
@@ -257,3 +258,12 @@ def test_cohesive_edge_rule_is_named():
     with pytest.raises(ValueError, match="edge_rule"):
         cohesive_path(np.zeros((8, 8)), [0.1], length=1.0, e_star=1.0, work_of_adhesion=0.1, cohesive_stress=1.0,
                       edge_rule="maxwell")
+
+
+@pytest.mark.parametrize("function, extra", [(adhesive_path, {"depths": [0.1]}),
+                                             (adhesive_force_path, {"forces": [0.1], "step": 0.01}),
+                                             (cohesive_path, {"depths": [0.1], "cohesive_stress": 1.0})])
+def test_adhesion_takes_no_hardness(function, extra):
+    """Adhesion is elastic only: a hardness is refused in one line naming it."""
+    with pytest.raises(TypeError, match="hardness"):
+        function(paraboloid(16, radius=1.0), **extra, length=1.0, e_star=1.0, work_of_adhesion=0.1, hardness=0.5)
