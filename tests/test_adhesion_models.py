@@ -2,7 +2,8 @@
 properties: JKR's pull-offs at dF/da = 0 and dd/da = 0, Hertz as w -> 0, Maugis-Dugdale between
 DMT (lambda -> 0) and JKR (lambda -> infinity), and the units' scaling. Rough surfaces
 (roughcontact.models.rough_adhesion): Fuller & Tabor's pull-off from JKR's (theta -> 0) falling
-with theta, its integral by another quadrature, Johnson's parameter."""
+with theta, its integral by another quadrature, Johnson's parameter, Pastewka & Robbins' criterion
+by hand."""
 from __future__ import annotations
 
 import math
@@ -214,3 +215,31 @@ def test_fuller_tabor_pull_off_is_gone_by_theta_10():
 def test_fuller_tabor_bad_theta_is_named():
     with pytest.raises(ValueError, match="theta"):
         rough_adhesion.fuller_tabor_pull_off(-1.0)
+
+
+#: h' = 0.2, h'' = 0.5, dr = 0.01: h'^2/(h'' dr) = 8, whose 2/3 power is 4; g0 = (16/3) 0.08 = 0.42667
+STICKY = {"rms_slope": 0.2, "rms_curvature": 0.5, "interaction_range": 0.01, "e_star": 1000.0}
+
+
+@pytest.mark.parametrize("w, number", [(8.0, 0.5), (2.0, 2.0)])
+def test_pastewka_robbins_number(w, number):
+    """(h' E* dr/(2w)) 4 = (0.2 1000 0.01/(2w)) 4 = 4/w by hand: 0.5 for w = 8, 2 for w = 2 (to rounding)."""
+    got = rough_adhesion.pastewka_robbins_stickiness(**STICKY, work_of_adhesion=w).number
+    assert got == pytest.approx(number, rel=1e-13), f"number {got}"
+
+
+@pytest.mark.parametrize("w, sticky", [(8.0, True), (2.0, False)])
+def test_pastewka_robbins_sticky_below_one(w, sticky):
+    assert rough_adhesion.pastewka_robbins_stickiness(**STICKY, work_of_adhesion=w).sticky is sticky, f"w = {w}"
+
+
+def test_pastewka_robbins_range_ratio():
+    """dr/g0 = 0.01/(16/3 * 0.04/0.5) = 0.0234375 exactly by hand: valid (< 0.1)."""
+    got = rough_adhesion.pastewka_robbins_stickiness(**STICKY, work_of_adhesion=8.0)
+    assert got.range_ratio == pytest.approx(0.0234375, rel=1e-14), f"dr/g0 = {got.range_ratio}"
+
+
+def test_pastewka_robbins_long_range_is_outside_validity():
+    """dr = 0.05: dr/g0 = 0.1171875 > 0.1, outside the criterion's range of validity."""
+    got = rough_adhesion.pastewka_robbins_stickiness(**{**STICKY, "interaction_range": 0.05}, work_of_adhesion=8.0)
+    assert got.valid is False, f"dr/g0 = {got.range_ratio}"

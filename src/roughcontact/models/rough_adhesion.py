@@ -1,4 +1,5 @@
-"""Adhesion of rough surfaces: Fuller & Tabor's asperity model and Johnson's rough-sphere parameter.
+"""Adhesion of rough surfaces: Fuller & Tabor's asperity model, Johnson's rough-sphere parameter and
+Pastewka & Robbins' stickiness criterion.
 
 Units are the caller's, consistent (lengths, ``E*`` and the work of adhesion ``w`` in
 force/length); forces are compressive positive, so pull-off forces are negative. ``E*`` is the
@@ -35,6 +36,13 @@ effective modulus (:func:`roughcontact.models.effective_modulus`).
   1985, ch. 5 and 13; as used by Li, Pohrt & Popov, Front. Mech. Eng. 5:7 (2019),
   doi:10.3389/fmech.2019.00007): the roughness ``h_rms`` over the JKR sphere's ``δ_c`` (the
   same expression with the sphere's radius ``R`` in place of ``β``), ``h_rms/δ_c``.
+* L. Pastewka, M. O. Robbins, "Contact between rough surfaces and a criterion for macroscopic
+  adhesion", PNAS 111, 3298-3303 (2014), doi:10.1073/pnas.1320846111: nominally flat surfaces of
+  rms slope ``h′`` and rms curvature ``h″`` with an interaction of range ``Δr`` are sticky when
+
+      (h′ E* Δr / (2w)) · (h′² / (h″ Δr))^(2/3) < 1,
+
+  valid where ``Δr/g₀ < 0.1``, ``g₀ = (16/3) h′²/h″``.
 """
 from __future__ import annotations
 
@@ -47,8 +55,9 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .._validate import check_finite_positive
 
-__all__ = ["FullerTaborPullOff", "fuller_tabor_force", "fuller_tabor_parameter", "fuller_tabor_pull_off",
-           "jkr_critical_approach", "johnson_rough_sphere_parameter"]
+__all__ = ["FullerTaborPullOff", "StickinessCriterion", "fuller_tabor_force", "fuller_tabor_parameter",
+           "fuller_tabor_pull_off", "jkr_critical_approach", "johnson_rough_sphere_parameter",
+           "pastewka_robbins_stickiness"]
 
 _CBRT3 = 3.0 ** (1 / 3)
 #: ``â`` where JKR's displacement-controlled branch ends (``dδ/da = 0``): ``â³ = 1/9``
@@ -175,3 +184,44 @@ def fuller_tabor_pull_off(theta: float, *, tol: float = 1e-10) -> FullerTaborPul
     force, separation = (best.fun, best.x) if best.fun <= forces[i] else (forces[i], grid[i])
     return FullerTaborPullOff(theta=float(theta), height_ratio=ratio, force=float(force),
                               separation=float(separation))
+
+
+@dataclasses.dataclass(frozen=True)
+class StickinessCriterion:
+    """Pastewka & Robbins' stickiness criterion (module docstring).
+
+    Attributes
+    ----------
+    number : float
+        ``(h′E*Δr/(2w)) (h′²/(h″Δr))^(2/3)`` (dimensionless).
+    sticky : bool
+        ``number < 1``.
+    g0 : float
+        ``g₀ = (16/3) h′²/h″`` (length).
+    range_ratio : float
+        ``Δr/g₀``.
+    valid : bool
+        ``Δr/g₀ < 0.1``, where the criterion was derived.
+    """
+
+    number: float
+    sticky: bool
+    g0: float
+    range_ratio: float
+    valid: bool
+
+
+def pastewka_robbins_stickiness(*, rms_slope: float, rms_curvature: float, interaction_range: float,
+                                e_star: float, work_of_adhesion: float) -> StickinessCriterion:
+    """Whether a nominally flat rough surface is sticky after Pastewka & Robbins (2014): ``rms_slope``
+    ``h′`` (dimensionless), ``rms_curvature`` ``h″`` (1/length), ``interaction_range`` ``Δr``
+    (length)."""
+    check_finite_positive("rms_slope", rms_slope)
+    check_finite_positive("rms_curvature", rms_curvature)
+    check_finite_positive("interaction_range", interaction_range)
+    _check_material(e_star, work_of_adhesion)
+    slope, curvature, reach = rms_slope, rms_curvature, interaction_range
+    number = slope * e_star * reach / (2 * work_of_adhesion) * (slope**2 / (curvature * reach)) ** (2 / 3)
+    g0 = 16 / 3 * slope**2 / curvature
+    return StickinessCriterion(number=number, sticky=number < 1, g0=g0, range_ratio=reach / g0,
+                               valid=reach / g0 < 0.1)
