@@ -1,15 +1,19 @@
 """Closed forms of the adhesive sphere (roughcontact.models.adhesion) against their defining
 properties: JKR's pull-offs at dF/da = 0 and dd/da = 0, Hertz as w -> 0, Maugis-Dugdale between
-DMT (lambda -> 0) and JKR (lambda -> infinity), and the units' scaling."""
+DMT (lambda -> 0) and JKR (lambda -> infinity), and the units' scaling. Rough surfaces
+(roughcontact.models.rough_adhesion): Fuller & Tabor's pull-off from JKR's (theta -> 0) falling
+with theta, its integral by another quadrature, Johnson's parameter, Pastewka & Robbins' criterion
+by hand."""
 from __future__ import annotations
 
 import math
 
 import numpy as np
 import pytest
+from scipy.integrate import trapezoid
 from scipy.optimize import minimize_scalar
 
-from roughcontact.models import adhesion
+from roughcontact.models import adhesion, rough_adhesion
 
 #: a non-unit setting: R = 2.5, E* = 3.0, w = 0.04 (consistent units)
 R, E, W = 2.5, 3.0, 0.04
@@ -114,3 +118,128 @@ def test_pull_off_scales_with_w_and_r():
 def test_bad_arguments_name_themselves(kwargs, name):
     with pytest.raises(ValueError, match=name):
         adhesion.jkr(0.1, **{"radius": R, "e_star": E, "work_of_adhesion": W, **kwargs})
+
+
+def test_maugis_cohesive_stress_inverts_the_parameter():
+    """sigma_0(lambda) and lambda(sigma_0) are inverses (to rounding, 1e-14)."""
+    sigma = adhesion.maugis_cohesive_stress(0.8, radius=R, e_star=E, work_of_adhesion=W)
+    lam = adhesion.maugis_parameter(sigma, radius=R, e_star=E, work_of_adhesion=W)
+    assert lam == pytest.approx(0.8, rel=1e-14), f"lambda(sigma_0(0.8)) = {lam}"
+
+
+# --- rough surfaces (roughcontact.models.rough_adhesion) --------------------------------------------
+
+def _delta_c(radius=R):
+    return rough_adhesion.jkr_critical_approach(radius=radius, e_star=E, work_of_adhesion=W)
+
+
+def test_jkr_critical_approach_is_the_fixed_grips_jump_off():
+    """delta_c = (3/4)(pi^2 w^2 R/E*^2)^(1/3) is minus JKR's approach where dd/da = 0 (to rounding)."""
+    _, _, depth = adhesion.jkr_fixed_grips_pull_off(radius=R, e_star=E, work_of_adhesion=W)
+    assert _delta_c() == pytest.approx(-depth, rel=1e-12), f"delta_c {_delta_c()} vs {-depth}"
+
+
+def test_johnson_rough_sphere_parameter():
+    """h_rms/delta_c by hand: delta_c = 0.75 (pi^2 0.04^2 2.5/9)^(1/3) = 0.1569656... for R = 2.5,
+    E* = 3, w = 0.04; h_rms = 0.1 gives 0.637082... (to rounding)."""
+    expected = 0.1 / (0.75 * (math.pi**2 * 0.04**2 * 2.5 / 9) ** (1 / 3))
+    got = rough_adhesion.johnson_rough_sphere_parameter(0.1, radius=R, e_star=E, work_of_adhesion=W)
+    assert got == pytest.approx(expected, rel=1e-14), f"h_rms/delta_c = {got}"
+
+
+def test_fuller_tabor_height_ratio_is_johnsons_parameter_of_one_asperity():
+    """sigma/delta_c = (4/3) pi^(-2/3) theta^(2/3) equals h_rms/delta_c with the asperity's radius."""
+    sigma, beta = 0.02, 0.3
+    theta = rough_adhesion.fuller_tabor_parameter(sigma=sigma, asperity_radius=beta, e_star=E, work_of_adhesion=W)
+    johnson = rough_adhesion.johnson_rough_sphere_parameter(sigma, radius=beta, e_star=E, work_of_adhesion=W)
+    assert rough_adhesion.fuller_tabor_pull_off(theta).height_ratio == pytest.approx(johnson, rel=1e-12), \
+        f"theta = {theta}"
+
+
+def test_fuller_tabor_theta_zero_comes_off_where_jkr_does():
+    """theta = 0: F = -N (3/2) pi w beta at d = -(JKR's approach at a_c), 3^(-2/3) delta_c (to rounding)."""
+    _, a_c = adhesion.jkr_pull_off(radius=R, e_star=E, work_of_adhesion=W)
+    depth = float(_jkr(a_c).depth)
+    assert rough_adhesion.fuller_tabor_pull_off(0.0).separation * _delta_c() == pytest.approx(-depth, rel=1e-12)
+
+
+def test_fuller_tabor_small_theta_is_one_jkr_asperity():
+    """theta = 1e-6 (sigma = 6e-5 delta_c): the force at d = -delta(a = 1.3 a_c) is JKR's force there in
+    units of (3/2) pi w R, within 1e-6 (the height spread's effect is ~ (sigma/delta_c)^2 ~ 4e-9)."""
+    _, a_c = adhesion.jkr_pull_off(radius=R, e_star=E, work_of_adhesion=W)
+    state = _jkr(1.3 * a_c)
+    expected = float(state.force) / (1.5 * math.pi * W * R)
+    got = float(rough_adhesion.fuller_tabor_force(-float(state.depth) / _delta_c(), 1e-6))
+    assert got == pytest.approx(expected, abs=1e-6), f"F/(N P_c) = {got}, JKR {expected}"
+
+
+def test_fuller_tabor_smooth_limit():
+    """theta = 1e-3 (sigma/delta_c = 0.0062): the pull-off is JKR's, -1, within 1e-4 (the spread
+    lowers it by ~ (sigma/delta_c)^2 |P''|/2 ~ 2e-5)."""
+    force = rough_adhesion.fuller_tabor_pull_off(1e-3).force
+    assert force == pytest.approx(-1.0, abs=1e-4), f"F/(N P_c) = {force}"
+
+
+def test_fuller_tabor_integral_by_another_quadrature():
+    """theta = 1, d = 0.2 delta_c (near the pull-off): the integral against the trapezoidal rule over
+    20001 contact radii of models.adhesion.jkr (beta = 2, E* = 3, w = 0.05; second order: ~1e-8),
+    within 1e-6."""
+    beta, e_star, w, theta = 2.0, 3.0, 0.05, 1.0
+    sigma = (theta * math.sqrt(beta) * w / e_star) ** (2 / 3)
+    delta_c = rough_adhesion.jkr_critical_approach(radius=beta, e_star=e_star, work_of_adhesion=w)
+    d = 0.2 * delta_c
+    a_end = (math.pi * w * beta**2 / (8 * e_star)) ** (1 / 3)
+    a = np.linspace(a_end, 3.0 * math.sqrt(beta * (d + 12 * sigma)) + a_end, 20001)
+    state = adhesion.jkr(a, radius=beta, e_star=e_star, work_of_adhesion=w)
+    z = d + state.depth
+    density = np.exp(-0.5 * (z / sigma) ** 2) / (sigma * math.sqrt(2 * math.pi))
+    expected = trapezoid(state.force * density, state.depth) / (1.5 * math.pi * w * beta)
+    got = float(rough_adhesion.fuller_tabor_force(0.2, theta))
+    assert got == pytest.approx(expected, abs=1e-6), f"F/(N P_c) = {got}, trapezoid {expected}"
+
+
+def test_fuller_tabor_pull_off_falls_with_theta():
+    """The pull-off weakens monotonically: theta = 0.1 ... 10 (computed -0.989, -0.733, -0.512,
+    -0.362, -0.185, -0.036 at 0.1, 1, 2, 3, 5, 10)."""
+    forces = [rough_adhesion.fuller_tabor_pull_off(theta).force for theta in (0.1, 1.0, 2.0, 3.0, 5.0, 10.0)]
+    assert all(np.diff(forces) > 0), f"pull-off against theta: {forces}"
+
+
+def test_fuller_tabor_pull_off_is_gone_by_theta_10():
+    """Fuller & Tabor (Fig. 3): hardly any pull-off left by theta ~ 5-10. At theta = 10 less than 5 %
+    of the smooth value (computed 3.6 %; 18.5 % at theta = 5)."""
+    force = rough_adhesion.fuller_tabor_pull_off(10.0).force
+    assert abs(force) < 0.05, f"F/(N P_c) = {force} at theta = 10"
+
+
+def test_fuller_tabor_bad_theta_is_named():
+    with pytest.raises(ValueError, match="theta"):
+        rough_adhesion.fuller_tabor_pull_off(-1.0)
+
+
+#: h' = 0.2, h'' = 0.5, dr = 0.01: h'^2/(h'' dr) = 8, whose 2/3 power is 4; g0 = (16/3) 0.08 = 0.42667
+STICKY = {"rms_slope": 0.2, "rms_curvature": 0.5, "interaction_range": 0.01, "e_star": 1000.0}
+
+
+@pytest.mark.parametrize("w, number", [(8.0, 0.5), (2.0, 2.0)])
+def test_pastewka_robbins_number(w, number):
+    """(h' E* dr/(2w)) 4 = (0.2 1000 0.01/(2w)) 4 = 4/w by hand: 0.5 for w = 8, 2 for w = 2 (to rounding)."""
+    got = rough_adhesion.pastewka_robbins_stickiness(**STICKY, work_of_adhesion=w).number
+    assert got == pytest.approx(number, rel=1e-13), f"number {got}"
+
+
+@pytest.mark.parametrize("w, sticky", [(8.0, True), (2.0, False)])
+def test_pastewka_robbins_sticky_below_one(w, sticky):
+    assert rough_adhesion.pastewka_robbins_stickiness(**STICKY, work_of_adhesion=w).sticky is sticky, f"w = {w}"
+
+
+def test_pastewka_robbins_range_ratio():
+    """dr/g0 = 0.01/(16/3 * 0.04/0.5) = 0.0234375 exactly by hand: valid (< 0.1)."""
+    got = rough_adhesion.pastewka_robbins_stickiness(**STICKY, work_of_adhesion=8.0)
+    assert got.range_ratio == pytest.approx(0.0234375, rel=1e-14), f"dr/g0 = {got.range_ratio}"
+
+
+def test_pastewka_robbins_long_range_is_outside_validity():
+    """dr = 0.05: dr/g0 = 0.1171875 > 0.1, outside the criterion's range of validity."""
+    got = rough_adhesion.pastewka_robbins_stickiness(**{**STICKY, "interaction_range": 0.05}, work_of_adhesion=8.0)
+    assert got.valid is False, f"dr/g0 = {got.range_ratio}"

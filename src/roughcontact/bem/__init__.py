@@ -6,7 +6,8 @@ The face is :func:`solve` (one load), :func:`load_path` and :func:`iter_load_pat
 operators (:mod:`.operators`), the constrained conjugate-gradient kernels
 (:mod:`.solver`), the windows and working sets they run on (:mod:`.active_sets`), the
 flat-punch stiffness (:mod:`.punch`) and penetration-hardness plasticity (:mod:`.plastic`).
-Conventions are those of :mod:`roughcontact`.
+Adhesive paths, elastic only: the detachment criterion (:mod:`.adhesion`) and the Maugis–Dugdale
+cohesive zone (:mod:`.cohesive`). Conventions are those of :mod:`roughcontact`.
 """
 
 from .contact import (

@@ -30,6 +30,11 @@ conjugate gradients (``‖K_CC p_C − u_C‖ ≤ tol ‖u_C‖``); cells of ``C
 leave it, cells outside with a closed gap (``z_i − min z − d + u_i < 0``) join it, and the
 solve repeats until ``C`` is unchanged. Each approach starts from the previous contact set and
 pressures (warm start). Pressures are compressive positive, forces ``F = Σ p Δx²``.
+
+The half-space is elastic: the adhesive paths take no ``hardness`` (passing one is a
+``TypeError``); penetration-hardness plasticity (:mod:`roughcontact.bem.plastic`) is not combined
+with adhesion. The Maugis–Dugdale cohesive zone is the other adhesive interaction
+(:mod:`roughcontact.bem.cohesive`).
 """
 from __future__ import annotations
 
@@ -42,7 +47,7 @@ from .._validate import check_finite_positive
 from ..errors import ConvergenceError
 from .operators import operator_for
 
-__all__ = ["DETACHMENT_CONSTANT", "critical_stress", "AdhesivePath", "adhesive_path", "adhesive_force_path"]
+__all__ = ["DETACHMENT_CONSTANT", "AdhesivePath", "adhesive_force_path", "adhesive_path", "critical_stress"]
 
 #: ``c`` of the detachment criterion ``σ_c = √(c E* w/Δx)``, calibrated on JKR (module docstring)
 DETACHMENT_CONSTANT = 2.1

@@ -130,14 +130,22 @@ class FreeSpaceOperator:
         return min((padded + 1) // 2, self.n)
 
     def _spectrum(self, shape: tuple[int, int]) -> tuple[tuple[int, int], np.ndarray]:
+        """The kernel's spectrum on the padded size of a window of *shape*, cached by padded size.
+
+        The kernel holds the offsets of the largest window of that padded size,
+        ``min((M + 1)//2, n)`` cells a side, not those of *shape*: a cached spectrum then
+        serves every window that maps to its padded size (one built for a smaller window would
+        miss the far offsets of a larger one).
+        """
         padded = tuple(scipy.fft.next_fast_len(2 * m - 1, real=True) for m in shape)
         spectrum = self._spectra.get(padded)
         if spectrum is None:
+            largest = [min((size + 1) // 2, self.n) for size in padded]
             index = [np.arange(size) for size in padded]
-            used = [(idx < m) | (idx > size - m) for idx, m, size in zip(index, shape, padded)]
+            used = [(idx < m) | (idx > size - m) for idx, m, size in zip(index, largest, padded)]
             offsets = [np.where(idx < m, idx, np.where(use, size - idx, 0))
-                       for idx, m, size, use in zip(index, shape, padded, used)]
-            kernel = self._coefficients(max(shape))[offsets[0][:, None], offsets[1][None, :]]
+                       for idx, m, size, use in zip(index, largest, padded, used)]
+            kernel = self._coefficients(max(largest))[offsets[0][:, None], offsets[1][None, :]]
             kernel = kernel * (used[0][:, None] & used[1][None, :])
             spectrum = scipy.fft.rfft2(kernel)
             self._spectra[padded] = spectrum

@@ -5,8 +5,10 @@ profile included); :mod:`.greenwood_tripp` the rough sphere of Greenwood & Tripp
 summit statistics of :mod:`.asperities`; :mod:`.mdr` the method of dimensionality reduction;
 :mod:`.persson` Persson's theory, flat and (through :mod:`.axisymmetric`) under a sphere.
 :func:`effective_modulus` gives ``E*`` of two elastic bodies; :mod:`.adhesion` the adhesive smooth
-sphere (JKR, DMT, Maugis–Dugdale); :mod:`.scorecard` the registry of the scorecard's models. Models use the spectra and profiles of :mod:`roughcontact.surfaces` and never the
-boundary-element method.
+sphere (JKR, DMT, Maugis–Dugdale); :mod:`.rough_adhesion` adhesion of rough surfaces (Fuller &
+Tabor's asperities, Johnson's rough-sphere parameter, Pastewka & Robbins' stickiness);
+:mod:`.scorecard` the registry of the scorecard's models. Models use the spectra and profiles of
+:mod:`roughcontact.surfaces` and never the boundary-element method.
 """
 
 from . import asperities, axisymmetric, greenwood_tripp, mdr, paper, persson

@@ -35,8 +35,8 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .._validate import check_finite_positive
 
-__all__ = ["JKRState", "jkr", "jkr_pull_off", "jkr_fixed_grips_pull_off", "dmt_pull_off", "dmt_contact_radius",
-           "maugis_parameter", "MaugisDugdaleState", "maugis_dugdale", "maugis_dugdale_pull_off"]
+__all__ = ["JKRState", "MaugisDugdaleState", "dmt_contact_radius", "dmt_pull_off", "jkr", "jkr_fixed_grips_pull_off",
+           "jkr_pull_off", "maugis_cohesive_stress", "maugis_dugdale", "maugis_dugdale_pull_off", "maugis_parameter"]
 
 
 def _check(radius, e_star, work):
@@ -122,6 +122,14 @@ def maugis_parameter(cohesive_stress: float, *, radius: float, e_star: float, wo
     check_finite_positive("cohesive_stress", cohesive_stress)
     k = 4 * e_star / 3
     return 2 * cohesive_stress * (radius / (math.pi * work_of_adhesion * k**2)) ** (1 / 3)
+
+
+def maugis_cohesive_stress(lam: float, *, radius: float, e_star: float, work_of_adhesion: float) -> float:
+    """The inverse of :func:`maugis_parameter`: ``σ₀ = (λ/2)(πwK²/R)^(1/3)`` (pressure), ``K = 4E*/3``."""
+    _check(radius, e_star, work_of_adhesion)
+    check_finite_positive("lam", lam)
+    k = 4 * e_star / 3
+    return lam / 2 * (math.pi * work_of_adhesion * k**2 / radius) ** (1 / 3)
 
 
 @dataclasses.dataclass(frozen=True)
