@@ -183,7 +183,7 @@ def _record(solver, d, contact, pressure, updates) -> dict:
 
 def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: float, periodic: bool = False,
                   constant: float = DETACHMENT_CONSTANT, tol: float = 1e-10, maxiter: int = 2000,
-                  max_updates: int = 2000) -> AdhesivePath:
+                  max_updates: int = 2000, on_state=None) -> AdhesivePath:
     """Press the indenter *z* (``n × n`` heights, lowest first) along the approaches *depths*
     (length, from first touch; rising for loading, falling for unloading, in any sequence) into
     a half-space that sticks by the detachment criterion (module docstring).
@@ -204,6 +204,9 @@ def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
         Keyword-only: the conjugate gradients' relative residual and iteration limit per solve.
     max_updates : int
         Most contact-set updates per approach.
+    on_state : callable, optional
+        Called as ``on_state(i, contact)`` with the contact set (boolean, ``n × n``) of each
+        recorded approach ``i``, e.g. for the stiffness of the contact (the sets are not kept).
 
     Raises
     ------
@@ -217,6 +220,8 @@ def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
     for d in np.asarray(depths, dtype=float):
         contact, pressure, updates = solver.settle(float(d), contact, pressure)
         records.append(_record(solver, d, contact, pressure, updates))
+        if on_state is not None:
+            on_state(len(records) - 1, contact)
         if records[-1]["contact_cells"] == 0 and math.isnan(detach_depth) and len(records) > 1 \
                 and records[-2]["contact_cells"] > 0:
             detach_depth = float(d)
@@ -227,7 +232,7 @@ def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
 def adhesive_force_path(z, forces, *, step: float, length: float, e_star: float, work_of_adhesion: float,
                         periodic: bool = False, constant: float = DETACHMENT_CONSTANT, tol: float = 1e-10,
                         maxiter: int = 2000, max_updates: int = 2000, force_tol: float = 1e-6,
-                        max_steps: int = 10000) -> AdhesivePath:
+                        max_steps: int = 10000, on_state=None) -> AdhesivePath:
     """The force-controlled path through the target *forces* (in path order; force): for each, the
     approach is moved from the last one in steps of *step* (length) along the path's branch until
     the force crosses the target, then bisected (every trial from the state before the crossing
@@ -278,4 +283,6 @@ def adhesive_force_path(z, forces, *, step: float, length: float, e_star: float,
         else:
             raise ConvergenceError(f"the force {target:g} was not reached in {max_steps} steps of {step:g}")
         records.append(_record(solver, d, contact, pressure, 0))
+        if on_state is not None:
+            on_state(len(records) - 1, contact)
     return _path(records, solver, float(least) if records else math.nan, detach_depth)
