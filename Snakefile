@@ -19,6 +19,7 @@ include: "workflow/rules/indent.smk"
 include: "workflow/rules/analysis.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/measured.smk"
+include: "workflow/rules/adhesion.smk"
 
 
 localrules:
@@ -30,6 +31,10 @@ localrules:
     claims,
     models,
     figures,
+    merge_coarse,
+    grid_error,
+    adhesion,
+    adhesion_figures,
     measured_surface,
     measured_merge,
     measured_spectrum,
@@ -54,6 +59,12 @@ rule all:
                 rules.figures.output,
             ]
             if STUDY.generated
+            else []
+        ),
+        # the adhesive runs' pull-off and figures (none without work_of_adhesion > 0)
+        (
+            [rules.adhesion.output, rules.adhesion_figures.output]
+            if study_adhesion.adhesive_runs(STUDY)
             else []
         ),
         measured_targets(),

@@ -81,12 +81,13 @@ def test_paper_setting_keeps_the_run_hash(toy_axis):
 
 
 def test_registry_order_is_the_merged_dimension_order():
-    assert runs.AXES["sphere"] == ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness"), \
+    assert runs.AXES["sphere"] == ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness",
+                                   "work_of_adhesion"), \
         f"sphere dimensions: {runs.AXES['sphere']}"
 
 
 def test_flat_surfaces_do_not_sweep_the_body_axes():
-    assert runs.AXES["flat"] == ("hurst", "h_rms", "rolloff", "cutoff", "hardness"), \
+    assert runs.AXES["flat"] == ("hurst", "h_rms", "rolloff", "cutoff", "hardness", "work_of_adhesion"), \
         f"flat dimensions: {runs.AXES['flat']}"
 
 

@@ -120,3 +120,9 @@ def test_coarse_grid_must_be_coarser():
     with pytest.raises(ConfigError) as err:
         study_settings({**load_config(ROOT / "presets" / "tiny.yaml"), "grid": {"n": 65, "coarse": 65}})
     assert err.value.key == "grid.coarse", err.value
+
+
+def test_an_axis_the_mapping_lacks_takes_its_paper_value(study):
+    """A file's configuration recorded before an optional axis existed: the axis at its paper value."""
+    old = {k: v for k, v in study.config.items() if k != "hardness"}
+    assert StudySettings.of(old).hardness == (None,), "hardness of a configuration without the key"

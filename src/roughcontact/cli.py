@@ -376,8 +376,10 @@ def main(argv=None) -> int:
             measured = (f"; measured: {len(study.topography)} scan(s) x {len(study.radius)} radii x their tiles, "
                         f"{len(study.spectrum)} spectrum(s) x {len(study.radius)} radii x "
                         f"{len(study.seeds) if study.spectrum else 0} seeds")
+        coarse = (f", and as many on the coarse grid {study.grid.coarse}² (grid.coarse)"
+                  if study.grid.coarse is not None and study.generated else "")
         print(f"{args.config}: valid; {len(runs.runs(study))} indent jobs "
-              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds){measured}")
+              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds){coarse}{measured}")
         return 0
     if args.command == "measured":
         return _measured(args)

@@ -130,6 +130,7 @@ rule claims:
         zeta_replicates=rules.fit_zeta.output.nc,
         stiffness=rules.merge.output.stiffness,
         exponents=rules.exponents.output.csv,
+        pull_off=pull_off_table,
     output:
         csv=report(
             "results/claims.csv",
@@ -179,7 +180,7 @@ rule models:
                 category="2. Model scorecard",
                 labels={"figure": name},
             )
-            for name in study_runs.sphere_names(STUDY)
+            for name in study_runs.sphere_names(STUDY, adhesive=False)
         ],
     log:
         "logs/models.log",

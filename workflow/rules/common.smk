@@ -21,6 +21,7 @@ from roughcontact.study import (
     settings as study_settings,
 )  # noqa: E402
 from roughcontact.study.study_settings import StudySettings, coarse_config  # noqa: E402
+from roughcontact.study.adhesion import merge as study_adhesion  # noqa: E402
 from roughcontact.study.measured import config as measured_inputs  # noqa: E402
 
 try:
@@ -65,6 +66,19 @@ def coarse_run_files(wildcards):
     if COARSE is None:
         raise ValueError("grid.coarse is not set: no coarse runs")
     return study_runs.run_paths(COARSE, COARSE_RUN_PATTERN)
+
+
+def adhesive_run_files(wildcards):
+    """The run files of the adhesive runs (work_of_adhesion > 0), in the order their merge expects."""
+    return [
+        study_runs.run_path(run, RUN_PATTERN)
+        for run in study_adhesion.adhesive_runs(STUDY)
+    ]
+
+
+def pull_off_table(wildcards):
+    """The pull-off table where the study has adhesive runs (the claims rule's optional input)."""
+    return rules.adhesion.output.csv if study_adhesion.adhesive_runs(STUDY) else []
 
 
 def grid_error_table(wildcards):

@@ -26,9 +26,10 @@ __all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema
 
 #: where an axis acts on a run: the roughness of the surface (an argument of
 #: :func:`roughcontact.surfaces.self_affine` and :func:`~roughcontact.surfaces.rough_sphere`),
-#: the body it is superposed on (an argument of ``rough_sphere`` only), or the contact solver
-#: (an argument of :func:`roughcontact.bem.iter_load_path`)
-ROLES = ("roughness", "body", "solver")
+#: the body it is superposed on (an argument of ``rough_sphere`` only), the contact solver
+#: (an argument of :func:`roughcontact.bem.iter_load_path`), or the interaction of the surfaces
+#: (adhesion: off its paper value the run is an adhesive one, :mod:`roughcontact.study.adhesive`)
+ROLES = ("roughness", "body", "solver", "interaction")
 
 
 def kind_of(radius) -> str:
@@ -292,3 +293,29 @@ register(Axis(
     _nullable(exclusiveMinimum=0), "solver", paper_coordinate=lambda length: math.inf,
     flag_help="penetration hardness in units of E* (default: elastic)", claim="k",
     to_solver=lambda value, e_star: value * e_star, check=_check_hardness))
+
+
+# --------------------------------------------------------------------------
+# adhesion: a work of adhesion (Pohrt & Popov's detachment criterion)
+# --------------------------------------------------------------------------
+def _check_adhesion(cfg: dict, kinds: set) -> None:
+    adhesive = [w for w in cfg["work_of_adhesion"] if w > 0]
+    if not adhesive:
+        return
+    plastic = [h for h in cfg["hardness"] if h is not None]
+    if plastic:
+        raise ConfigError(f"config key 'work_of_adhesion' = {adhesive[0]:g} is not allowed with 'hardness' = "
+                          f"{plastic[0]:g}; allowed: adhesion or a hardness (adhesive contact is elastic only)",
+                          key="work_of_adhesion")
+    if cfg["solver"]["stiffness"] == "difference":
+        raise ConfigError("config key 'solver.stiffness' = 'difference' is not allowed with 'work_of_adhesion' > 0; "
+                          "allowed: punch (the stiffness of the adhesive contact set)", key="solver.stiffness")
+
+
+register(Axis(
+    "work_of_adhesion", "w", "work of adhesion", "e_star * length",
+    "works of adhesion w of the surfaces (energy per area, in units of e_star * length); 0 = no adhesion "
+    "(the elastic runs); w > 0: an adhesive run with Pohrt & Popov's detachment criterion, loaded to the forces "
+    "and retracted to pull-off (roughcontact.study.adhesive)",
+    _number(minimum=0), "interaction", paper=0.0,
+    flag_help="work of adhesion in units of E* L (default 0: no adhesion)", claim="o", check=_check_adhesion))

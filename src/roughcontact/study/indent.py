@@ -130,9 +130,14 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
 
 
 def compute_run(s: JobSettings, progress=None) -> dict:
-    """Solve the load path of one generated run (:func:`make_surface`, :func:`solve_load_path`)."""
+    """Solve the load path of one generated run (:func:`make_surface`, :func:`solve_load_path`; an
+    adhesive run, ``work_of_adhesion > 0``: :func:`roughcontact.study.adhesion.adhesive_run`)."""
     logger.info("indent %s: %d loads F/(E*L^2) = %g ... %g, tol = %g, stiffness = %s", s.describe(), s.force_count,
                 s.force_from, s.force_to, s.tol, s.stiffness_method)
+    if s.work_of_adhesion > 0:   # adhesive: loaded to the forces, then retracted to pull-off
+        from .adhesion import adhesive_run
+
+        return adhesive_run(make_surface(s), s, name=s.describe(), progress=progress)
     return solve_load_path(make_surface(s), s.forces(), path_settings(s), progress)
 
 

@@ -51,8 +51,11 @@ def read_run(path, expected: JobSettings | None = None):
     if missing or ds.attrs.get("title") != runfile.TITLE:
         what = f"lacks {', '.join(missing)}" if missing else "is not a roughcontact indentation run"
         raise MergeError(f"{path}: foreign NetCDF file ({what}); {hint}")
-    if list(ds.dims) != ["force"]:
-        raise MergeError(f"{path}: foreign NetCDF file (dimensions {dict(ds.sizes)}, expected only 'force'); {hint}")
+    adhesive = expected.work_of_adhesion > 0 if expected is not None else "retract" in ds.dims
+    dims = ["force", "retract"] if adhesive else ["force"]   # an adhesive run has its retract path too
+    if sorted(ds.dims) != sorted(dims):
+        raise MergeError(f"{path}: foreign NetCDF file (dimensions {dict(ds.sizes)}, expected {', '.join(dims)}); "
+                         f"{hint}")
     if expected is not None:
         for key in runfile.SCALARS:
             got, want = float(ds[key]), float(getattr(expected, key))

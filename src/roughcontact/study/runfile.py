@@ -11,9 +11,8 @@ import dataclasses
 
 from .axes import AXES
 
-__all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "SCALARS", "AXIS_ATTRS",
-           "FORCE_ATTRS", "TITLE",
-           "write_run"]
+__all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "RETRACT_VARIABLES",
+           "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)
 TITLE = "roughcontact indentation run"
@@ -47,6 +46,24 @@ PLASTIC_VARIABLES = ("loading_stiffness", "plastic_cells")
 
 #: the force coordinate
 FORCE_ATTRS = {"long_name": "normal force F", "units": "e_star * length**2"}
+
+#: per-step variables of an adhesive run's retract path (dimension ``retract``,
+#: :mod:`roughcontact.study.adhesive`)
+RETRACT_VARIABLES = {
+    "retract_depth": Variable("f8", "approach from first touch along the retract path (displacement control)",
+                              "length"),
+    "retract_force": Variable("f8", "normal force along the retract path (negative: tensile)", "e_star * length**2"),
+    "retract_contact_cells": Variable("i8", "number of grid cells in contact along the retract path", "1"),
+}
+#: the retract coordinate
+RETRACT_ATTRS = {"long_name": "step of the retract path", "units": "1"}
+#: the pull-off of an adhesive run (scalars)
+PULL_OFF_VARIABLES = {
+    "pull_off_force": Variable("f8", "pull-off force: the most tensile force of the retract path (load control)",
+                               "e_star * length**2"),
+    "pull_off_depth": Variable("f8", "approach at the pull-off force", "length"),
+    "pull_off_contact_radius": Variable("f8", "contact radius sqrt(A/pi) at the pull-off force", "length"),
+}
 
 #: scalar variables of a run file: (NetCDF type, long name, units)
 SCALARS = {
@@ -117,6 +134,16 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str, units: dic
                 v = nc.createVariable(name, meta.dtype, ("force",))
                 v[:] = out[name] * scale if scale != 1.0 else out[name]
                 v.setncatts({"long_name": long, "units": unit, **({"coordinates": labels} if labels else {})})
+            if "retract_force" in out:   # an adhesive run: its retract path and pull-off
+                nc.createDimension("retract", len(out["retract_force"]))
+                for name, meta in RETRACT_VARIABLES.items():
+                    v = nc.createVariable(name, meta.dtype, ("retract",))
+                    v[:] = out[name]
+                    v.setncatts({"long_name": meta.long_name, "units": meta.units})
+                for name, meta in PULL_OFF_VARIABLES.items():
+                    v = nc.createVariable(name, meta.dtype, ())
+                    v.assignValue(out[name])
+                    v.setncatts({"long_name": meta.long_name, "units": meta.units})
             for name, (values, var_attrs) in extra.items():
                 v = nc.createVariable(name, "f8", ("force",))
                 v[:] = values

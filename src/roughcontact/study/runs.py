@@ -134,9 +134,11 @@ def parse_combo(name: str) -> dict:
     return out
 
 
-def sphere_names(study) -> list[str]:
-    """:func:`combo_name` of every sphere combination of the study, in sweep order."""
-    return [combo_name(c) for c in combinations(study) if c["kind"] == "sphere"]
+def sphere_names(study, *, adhesive: bool | None = None) -> list[str]:
+    """:func:`combo_name` of every sphere combination of the study, in sweep order; *adhesive*:
+    only those with (``True``) or without (``False``) a work of adhesion."""
+    return [combo_name(c) for c in combinations(study) if c["kind"] == "sphere"
+            and (adhesive is None or (c.get("work_of_adhesion", 0.0) > 0) == adhesive)]
 
 
 def run_path(run: dict, pattern: str) -> str:

@@ -10,7 +10,8 @@ ensemble mean (mean contact cells ≥ ``fit.zeta.min_cells``, as for the verdict
 * ``rms_rel_dev``, the root-mean-square of the same deviations.
 
 A model that does not apply to a combination (Greenwood–Tripp off the paraboloid or with a
-roll-off or cutoff) has no row for it. Forces are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
+roll-off or cutoff) has no row for it; an adhesive combination (``work_of_adhesion`` > 0) has
+none (the models are elastic; its pull-off is ``results/adhesion/pull_off.csv``). Forces are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
 
 Grid error (``grid.coarse``, :mod:`roughcontact.study.grid_error`): with the same surfaces pressed
 on a coarser grid, ``g = k̄_coarse/k̄ − 1`` at each load bounds the grid error of the study's own
@@ -57,7 +58,7 @@ class Combination(dict):
     def paper_setting(self) -> bool:
         """No roll-off, no cutoff and elastic (the axes eqs. 11–17 are written for)."""
         return (self["rolloff"] == self["length"] and self["cutoff"] == 0.0
-                and math.isinf(self["hardness"]))
+                and math.isinf(self["hardness"]) and self.get("work_of_adhesion", 0.0) == 0.0)
 
     def surface(self) -> registry.Surface:
         """What the models read (:class:`roughcontact.models.scorecard.Surface`)."""
@@ -73,6 +74,9 @@ def _combinations(ds, study: StudySettings, zeta_of: dict):
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
     for position in itertools.product(*(range(ds.sizes[a]) for a in axes)):
         combo = Combination({a: float(ds[a].values[i]) for a, i in zip(axes, position)})
+        for axis, setting in runs.DEFAULTS.items():   # an axis a file made before it existed lacks
+            if axis in runs.AXES["sphere"]:
+                combo.setdefault(axis, runs.coordinate(axis, setting, study.grid.length))
         combo.update(n=study.grid.n, length=study.grid.length, e_star=study.e_star,
                      zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)))
         yield combo, ds.isel(dict(zip(axes, position))).transpose("seed", "force")
@@ -80,8 +84,8 @@ def _combinations(ds, study: StudySettings, zeta_of: dict):
 
 def combo_label(c: Combination) -> str:
     """The run name of a combination (``H0.7_R0.5_h0.009`` and the tags of the optional axes)."""
-    run = {axis: c[axis] for axis in ("hurst", "radius", "h_rms", "exponent")}
-    run.update({axis: runs.axis_value(axis, c[axis], c["length"]) for axis in ("rolloff", "cutoff", "hardness")})
+    run = {axis: runs.axis_value(axis, c[axis], c["length"]) if axis in runs.DEFAULTS else c[axis]
+           for axis in runs.AXES["sphere"]}
     return runs.combo_name(run)
 
 
@@ -173,6 +177,8 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
     force_norm = ds["force"].values / (E * L**2)
     rows, curves = [], {}
     for combo, sub in _combinations(ds, study, zeta_of):
+        if combo.get("work_of_adhesion", 0.0) > 0:   # the models are elastic
+            continue
         k = sub["stiffness"].values
         k_mean = k.mean(0)
         k_boot = k[indices].mean(1)                               # (resample, force)
@@ -260,8 +266,8 @@ def _figure(path, label: str, curve, table) -> None:
 
 def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures, grid_error_csv=None):
     """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
-    per combination) and one figure per sphere combination (*figures*, in the order of
-    :func:`roughcontact.study.runs.sphere_names`); *grid_error_csv*: ``grid_error.csv`` of the
+    per combination) and one figure per elastic sphere combination (*figures*, in the order of
+    :func:`roughcontact.study.runs.sphere_names` with ``adhesive=False``); *grid_error_csv*: ``grid_error.csv`` of the
     study's companion on ``grid.coarse`` (or ``None``)."""
     import pandas as pd
 
@@ -282,7 +288,7 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
                             "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
                             "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",
                             "systematic_high_total_verdict", "n_loads"))
-    names = runs.sphere_names(study)
+    names = runs.sphere_names(study, adhesive=False)
     if len(names) != len(figures):
         raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
     for label, path in zip(names, figures):

@@ -217,8 +217,11 @@ class StudySettings:
                               else int(grid["realization_of"]),
                               coarse=None if grid.get("coarse") is None else int(grid["coarse"])),
             e_star=float(cfg["e_star"]),
-            sweep=tuple((name, tuple(None if v is None else float(v) for v in cfg.get(name, ())))
-                        for name in axes.AXES),   # floats: a configuration read back from JSON has "inf"
+            # floats: a configuration read back from JSON has "inf"; an optional axis the mapping lacks
+            # (a file's configuration from before the axis was registered) at its paper value
+            sweep=tuple((name, tuple(None if v is None else float(v)
+                                     for v in cfg.get(name, [spec.paper] if spec.optional else [])))
+                        for name, spec in axes.AXES.items()),
             seeds=tuple(int(s) for s in cfg.get("seeds", ())),
             forces=types.MappingProxyType({kind: ForceRange(float(r["from"]), float(r["to"]), int(r["count"]))
                                            for kind, r in cfg["forces"].items()}),

@@ -35,6 +35,9 @@ class ClaimInputs:
         The local exponents (``exponents.csv``).
     zeta_replicates : xarray.DataArray or None
         Bootstrap replicates of ζ(H) (``zeta.nc``).
+    adhesion : pandas.DataFrame or None
+        The pull-off table of the adhesive runs (``adhesion/pull_off.csv``,
+        :mod:`roughcontact.study.adhesion.merge`); ``None`` without adhesive runs.
     """
 
     cross: object
@@ -44,6 +47,7 @@ class ClaimInputs:
     groups: dict | None = None
     exponents: object = None
     zeta_replicates: object = None
+    adhesion: object = None
 
 
 @dataclasses.dataclass(frozen=True)
