@@ -30,6 +30,20 @@ def test_bad_work_of_adhesion_is_one_line_naming_the_key(value, text):
     assert text in str(err.value) and "\n" not in str(err.value), str(err.value)
 
 
+def test_work_of_adhesion_with_its_unit_in_the_studys_units():
+    """50 mJ/m² in a study of µm and MPa: 0.05 J/m² / (10⁶ Pa · 10⁻⁶ m) = 0.05 MPa µm."""
+    study = study_settings({**TINY, "work_of_adhesion": ["50 mJ/m^2"], "units": {"length": "um", "e_star": "MPa"}})
+    assert study.work_of_adhesion[0] == pytest.approx(0.05, rel=1e-12), study.work_of_adhesion
+
+
+@pytest.mark.parametrize("value, units", [(0.05, {"length": "um", "e_star": "MPa"}), ("50 mJ/m^2", {}),
+                                          ("50 furlongs", {"length": "um", "e_star": "MPa"})])
+def test_a_missing_or_foreign_unit_is_one_line_naming_the_key(value, units):
+    with pytest.raises(ConfigError) as err:
+        study_settings({**TINY, "work_of_adhesion": [value], **({"units": units} if units else {})})
+    assert err.value.key == "work_of_adhesion[0]" and "\n" not in str(err.value), str(err.value)
+
+
 def test_adhesion_with_a_hardness_is_rejected():
     with pytest.raises(ConfigError) as err:
         study_settings({**TINY, "work_of_adhesion": [1e-3], "hardness": [0.5]})

@@ -132,7 +132,10 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
                                           bodies.get("nu2", 0.0))
     cfg["e_star"] = float(cfg["e_star"])
     for axis in AXES.values():  # sorted floats, null (an optional axis's paper setting) first
-        cfg[axis.name] = axis.normalise(cfg.get(axis.name, []))  # hurst, h_rms: absent with measured inputs only
+        values = cfg.get(axis.name, [])   # hurst, h_rms: absent with measured inputs only
+        if axis.in_units is not None:     # a value written with its unit, in the study's units
+            values = [axis.in_units(v, cfg.get("units") or {}, f"{axis.name}[{i}]") for i, v in enumerate(values)]
+        cfg[axis.name] = axis.normalise(values)
     if "seeds" in cfg:  # absent with measured scans only
         seeds = cfg["seeds"]
         cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)

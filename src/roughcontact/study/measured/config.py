@@ -18,39 +18,13 @@ from pathlib import Path
 
 from ...errors import ConfigError, InputFileError
 from ...surfaces.psd import read_psd
+from ..units import FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_newtons, to_pascals
 
 __all__ = ["LENGTH_UNITS", "PRESSURE_UNITS", "FORCE_UNITS", "to_newtons", "config_directory", "has_measured", "resolve_inputs",
            "topography_names", "spectrum_names", "plain_unit", "to_metres", "to_pascals"]
 
-#: metres per length unit of ``units.length`` (and of a topography entry's ``unit``)
-LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}
-#: pascals per pressure unit of ``units.e_star``
-PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9}
-#: newtons per force unit of the command line's ``--force-unit`` and of progress lines
-FORCE_UNITS = {"N": 1.0, "mN": 1e-3, "uN": 1e-6, "nN": 1e-9}
-
 _TOPOGRAPHY_DEFAULTS = {"name": None, "unit": None, "size": None, "detrend": "height", "interpolate": False}
 _SPECTRUM_DEFAULTS = {"name": None, "convention": "c2d"}
-
-
-def plain_unit(unit) -> str | None:
-    """A length unit spelt in ASCII: ``µm`` (micro sign or Greek mu) as ``um``; None stays None."""
-    return None if unit is None else str(unit).replace("µ", "u").replace("μ", "u")
-
-
-def to_metres(unit: str) -> float:
-    """Metres per ``unit`` (one of :data:`LENGTH_UNITS`)."""
-    return LENGTH_UNITS[unit]
-
-
-def to_pascals(unit: str) -> float:
-    """Pascals per ``unit`` (one of :data:`PRESSURE_UNITS`)."""
-    return PRESSURE_UNITS[unit]
-
-
-def to_newtons(unit: str) -> float:
-    """Newtons per ``unit`` (one of :data:`FORCE_UNITS`; µN spelt with µ or u)."""
-    return FORCE_UNITS[plain_unit(unit)]
 
 
 def has_measured(cfg: dict) -> bool:
