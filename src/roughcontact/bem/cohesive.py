@@ -19,7 +19,9 @@ doi:10.1007/s00466-017-1392-5). It is solved by the constrained conjugate gradie
 Polonsky & Keer (Wear 231, 206 (1999)) with the approach given (no force constraint: the gap on
 ``q > 0`` is the residual; cells of ``S`` with ``q = 0`` and ``g < 0`` enter), to
 ``max |g| ≤ tol·s`` on ``q > 0`` and ``g ≥ −tol·s`` elsewhere on ``S``,
-``s = max(δ_t, max_S |h − d|)``; on the free half-space on the bounding box of ``S``. Then ``S``
+``s = max(δ_t, max_S |h − d|)``; on the bounding box of ``S`` (the periodic half-space too, by the
+periodic kernel on the window's zero-padded FFT, exact for lifts inside the box, while the box is
+at most half the grid a side; the whole grid otherwise). Then ``S``
 is updated from the gaps of the whole grid and the solve repeats until ``S`` is unchanged. Each
 approach starts from the previous ``S`` and lifts (warm start), so that where several
 equilibria exist (the jump-in and jump-out of the non-convex law) the path picks its branch.
@@ -55,6 +57,7 @@ with adhesion.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
 import numpy as np
@@ -62,7 +65,7 @@ import numpy as np
 from .._validate import check_finite, check_finite_positive
 from ..errors import ConvergenceError, DomainTooSmallError
 from .adhesion import AdhesivePath
-from .operators import operator_for
+from .operators import FreeSpaceOperator, PeriodicOperator, operator_for
 
 __all__ = ["EDGE_RULES", "CohesivePath", "cohesive_path"]
 
@@ -117,6 +120,33 @@ def _box(mask: np.ndarray) -> tuple[slice, slice]:
     return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
 
 
+class _PeriodicWindows(FreeSpaceOperator):
+    """The periodic half-space on windows of the grid: the windowed, zero-padded convolution of
+    :class:`~roughcontact.bem.operators.FreeSpaceOperator` with the periodic kernel as its table.
+
+    The periodic displacement under a unit cell pressure, ``k[i mod n, j mod n]``, is even in each
+    offset, so the table ``k[|i|, |j|]`` of the offsets ``|i|, |j| < n`` is all a window needs:
+    for pressures inside a window of at most ``n`` cells a side the linear convolution on the
+    padded window gives the periodic displacement on the window exactly (round-off apart), at the
+    cost of the window's FFT instead of the grid's.
+    """
+
+    periodic = True
+
+    def __init__(self, operator: PeriodicOperator):
+        self._periodic_kernel = operator._kernel
+        super().__init__(operator.n, operator.n * operator.spacing, operator.e_star)
+
+    def _coefficients(self, size: int) -> np.ndarray:
+        return self._periodic_kernel
+
+
+@functools.lru_cache(maxsize=4)
+def _periodic_windows(operator: PeriodicOperator) -> _PeriodicWindows:
+    """One :class:`_PeriodicWindows` per (cached) periodic operator, so its spectra are reused."""
+    return _PeriodicWindows(operator)
+
+
 class _CohesiveSolver:
     """The solve at one approach (module docstring) on one grid."""
 
@@ -137,6 +167,7 @@ class _CohesiveSolver:
         self.sigma = float(cohesive_stress)
         self.range = work_of_adhesion / cohesive_stress
         self.operator = operator_for(n, length, e_star, periodic)
+        self.windows = _periodic_windows(self.operator) if periodic else self.operator
         self.periodic = periodic
         self.heights = z - z.min()
         self.tol, self.maxiter, self.max_updates = tol, maxiter, max_updates
@@ -152,11 +183,12 @@ class _CohesiveSolver:
         """The lifts ``q = p + σ₀ ≥ 0`` on *reach* (``S``) at the approach *d*: the convex contact
         problem of the module docstring, by displacement-controlled constrained conjugate
         gradients (Polonsky & Keer 1999 with the approach given: no force constraint, the gap
-        itself the residual), on the bounding box of ``S`` (free space) or the grid (periodic).
-        Stops when ``max_(q>0) |g| ≤ tol·s`` and ``min_(S, q=0) g ≥ −tol·s``,
-        ``s = max(δ_t, max_S |h − d|)``."""
-        operator = self.operator
-        box = (slice(None), slice(None)) if self.periodic else _box(reach)
+        itself the residual), on the bounding box of ``S`` (periodic: the grid when the box is
+        more than half of it a side). Stops when ``max_(q>0) |g| ≤ tol·s`` and
+        ``min_(S, q=0) g ≥ −tol·s``, ``s = max(δ_t, max_S |h − d|)``."""
+        box, operator = _box(reach), self.windows
+        if self.periodic and max(side.stop - side.start for side in box) > self.heights.shape[0] // 2:
+            box, operator = (slice(None), slice(None)), self.operator
         inside = reach[box]
         q = np.where(inside, lift[box], 0.0)
         base = self.heights[box] - d
