@@ -22,7 +22,9 @@ Polonsky & Keer (Wear 231, 206 (1999)) with the approach given (no force constra
 ``s = max(δ_t, max_S |h − d|)``; on the bounding box of ``S`` (the periodic half-space too, by the
 periodic kernel on the window's zero-padded FFT, exact for lifts inside the box, while the box is
 at most half the grid a side; the whole grid otherwise). Then ``S``
-is updated from the gaps of the whole grid and the solve repeats until ``S`` is unchanged. Each
+is updated from the gaps of the whole grid — computed on a window around ``S``, widened to every
+cell that a bound of the displacement elsewhere leaves possibly in range — and the solve repeats
+until ``S`` is unchanged. Each
 approach starts from the previous ``S`` and lifts (warm start), so that where several
 equilibria exist (the jump-in and jump-out of the non-convex law) the path picks its branch.
 Every state returned satisfies the law above.
