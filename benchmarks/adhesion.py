@@ -2,7 +2,7 @@
 
 Builds one seeded rough sphere and a Maugis–Dugdale interaction (``λ = 1``; the length
 ``ℓ = (πwR²/K)^{1/3}`` fixed in units of L, 16 cells at n = 513), and runs the same
-displacement-controlled path — approach from ``−0.5`` to ``1`` ``ℓ²/R``, then retract to ``−1.1``
+displacement-controlled path — approach from ``−0.5`` to ``1`` ``ℓ²/R``, then retract to ``−1``
 ``ℓ²/R``, past the loss of contact — with :func:`roughcontact.bem.cohesive.cohesive_path` and with
 tamaas' Polonsky–Keer–Rey solver plus ``MaugisAdhesionFunctional``
 (``benchmarks/peers.py``, :class:`TamaasAdhesionPeer`). tamaas adds adhesion only on the periodic
@@ -38,15 +38,15 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from run import E_STAR, HURST, LENGTH, RADIUS, machine_lines  # noqa: E402
 
-#: Roughness of the sphere: small, so that the adhesive contact is one patch, 30–50 cells across
-#: at n = 513 (the long wavelengths dominate the rms; at the contact's scale it is ≈ 10⁻⁴ L).
+#: Roughness of the sphere: small, so that the adhesive contact is one patch, 30–50 cells across at
+#: n = 513 (the rms is mostly that of the longest wavelengths).
 H_RMS = 1e-3
 #: Maugis' parameter and length ``ℓ = (πwR²/K)^{1/3}``, ``K = 4E*/3`` (16 cells at n = 513).
 LAMBDA = 1.0
 ELL = 1.0 / 32
 #: The path in units of ``ℓ²/R``: approach from FIRST to TOP (a quarter of the loads), retract to
 #: BOTTOM (the rest).
-FIRST, TOP, BOTTOM = -0.5, 1.0, -1.1
+FIRST, TOP, BOTTOM = -0.5, 1.0, -1.0
 #: Solver tolerances: roughcontact's gap tolerance (its default); tamaas' own error measure, 1e-8 as in
 #: run.py (at 1e-10 it stalls at 1e-10 to 2e-9 on contacts of a few tens of cells, with the same states).
 TOL = 1e-10
@@ -104,7 +104,15 @@ def worker(spec: dict) -> dict:
                       iterations=path.iterations, converged=path.converged, law_residual=path.law_residual,
                       error=path.error, step_seconds=path.seconds)
     else:
+        from roughcontact.bem import operators
         from roughcontact.bem.cohesive import cohesive_path
+
+        counts = {"window": 0, "grid": 0}
+        for cls, kind in ((operators.FreeSpaceOperator, "window"), (operators.PeriodicOperator, "grid")):
+            def counted(self, pressure, _call=cls.__call__, _kind=kind):
+                counts[_kind] += 1
+                return _call(self, pressure)
+            cls.__call__ = counted
 
         def run():
             return cohesive_path(heights, depths, length=LENGTH, e_star=E_STAR, work_of_adhesion=w,
@@ -117,7 +125,8 @@ def worker(spec: dict) -> dict:
         seconds = time.perf_counter() - start
         result = dict(force=path.force, contact_cells=path.contact_cells, zone_cells=path.zone_cells,
                       iterations=path.iterations, fallback=path.fallback)
-    result = {key: np.asarray(value).tolist() for key, value in result.items()}
+        result.update(convolutions=dict(counts))
+    result = {key: value if isinstance(value, dict) else np.asarray(value).tolist() for key, value in result.items()}
     result.update(seconds=seconds, rss_growth_per_cell=(_peak_rss_bytes() - before) / n**2)
     if spec["code"] != "tamaas" and spec.get("tracemalloc"):
         import tracemalloc
@@ -135,6 +144,106 @@ def launch(spec: dict) -> dict:
     done = subprocess.run([sys.executable, __file__, "--worker", json.dumps(spec)], check=True,
                           stdout=subprocess.PIPE, text=True)
     return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+# ---------------------------------------------------------------------------------------- report
+
+TAMAAS = "tamaas periodic PKR+Maugis"
+LIKE = "roughcontact periodic metastable"
+
+
+def report(runs: dict, depths: np.ndarray, w: float, unit: float, cell: float) -> None:
+    """Print the per-approach table and the summary of *runs* (the numbers of :func:`worker`);
+    *cell* is one cell's tension ``σ₀Δx²``."""
+    scale = math.pi * w * RADIUS
+    reference, like = runs.get(TAMAAS), runs.get(LIKE)
+    if reference is not None:
+        ok = np.asarray(reference["converged"])
+        reference_pull = min(f for f, good in zip(reference["force"], ok) if good)
+    same = []
+    if reference is not None and like is not None:
+        same = [reference["contact_cells"][i] == like["contact_cells"][i]
+                and reference["zone_cells"][i] == like["zone_cells"][i] for i in range(len(depths))]
+
+    print()
+    print("per approach: F/(πwR), contact cells, zone cells" + (
+        "; tamaas: its iterations (* = above its tolerance at the cap: not a solution)" if reference else ""))
+    header = f"{'d/(ℓ²/R)':>9} |" + "".join(f" {name.replace('roughcontact ', 'ours '):>33} |" for name in runs)
+    if same:
+        header += f" {'ΔF/|F_po|':>9} {'same n':>6}"
+    print(header)
+    print("-" * len(header))
+    for i, d in enumerate(depths):
+        row = f"{d / unit:9.3f} |"
+        for name, run in runs.items():
+            extra = ""
+            if run is reference:
+                extra = f"{run['iterations'][i]:d}{'' if run['converged'][i] else '*'}"
+            row += (f" {run['force'][i] / scale:+9.5f} {run['contact_cells'][i]:6d} "
+                    f"{run['zone_cells'][i]:5d} {extra:>7} |")
+        if same:
+            difference = ((reference["force"][i] - like["force"][i]) / abs(min(like["force"]))
+                          if reference["converged"][i] else math.nan)
+            row += f" {difference:+9.1e} {'yes' if same[i] else 'no':>6}"
+        print(row)
+    print("-" * len(header))
+    if same:
+        print("ΔF: tamaas − ours periodic metastable, over |pull-off|; same n: the same contact and zone "
+              "cell counts")
+
+    print()
+    summary = (f"{'code':<34} {'loads':>5} {'wall s':>8} {'s/load':>7} {'iterations':>18} "
+               f"{'pull-off F':>12} {'F/(πwR)':>8} {'ΔF/F tamaas':>11} {'B/cell':>6}")
+    print(summary)
+    print("-" * len(summary))
+    for name, run in runs.items():
+        if run is reference:
+            pull = reference_pull
+            counted = f"{sum(run['iterations']):d} PKR"
+        else:
+            pull = min(run["force"])
+            counted = f"{sum(run['iterations']):d} S / {sum(run['convolutions'].values()):d} conv"
+        difference = (f"{pull / reference_pull - 1:+11.2e}" if reference is not None and run is not reference
+                      else f"{'':>11}")
+        print(f"{name:<34} {len(run['force']):5d} {run['seconds']:8.2f} {run['seconds'] / len(run['force']):7.3f} "
+              f"{counted:>18} {pull:12.5e} {pull / scale:8.4f} {difference} {run['rss_growth_per_cell']:6.1f}")
+    print("-" * len(summary))
+    print("iterations: tamaas' Polonsky–Keer–Rey iterations (one grid-sized convolution each); "
+          "roughcontact's updates of the zone S (one constrained-CG contact solve each) / its "
+          "convolutions (FFT on windows, or on the grid). B/cell: peak memory, the growth of ru_maxrss "
+          "over the RSS just before the call, per cell (the heights, 8 B/cell, not counted).")
+    if reference is not None:
+        print("tamaas' pull-off: over the approaches where it converged.")
+    for name, run in runs.items():
+        notes = []
+        if "traced_peak_per_cell" in run:
+            notes.append(f"tracemalloc peak {run['traced_peak_per_cell']:.1f} B/cell")
+        if "convolutions" in run:
+            notes.append(f"convolutions {run['convolutions']['window']} on windows, {run['convolutions']['grid']} "
+                         f"on the grid")
+        if any(run.get("fallback", [])):
+            notes.append(f"{sum(run['fallback'])} approaches settled by the metastable fallback")
+        if notes:
+            print(f"{name}: " + "; ".join(notes))
+    if reference is None:
+        return
+    capped = [i for i, good in enumerate(ok) if not good]
+    kept = sum(s for s, good in zip(reference["step_seconds"], ok) if good)
+    residual = max(r for r, good in zip(reference["law_residual"], ok) if good)
+    print(f"tamaas: {len(capped)} of {len(ok)} approaches above its tolerance at the cap (approaches "
+          f"{capped}; {sum(reference['step_seconds']) - kept:.1f} s); {kept:.1f} s on the others, whose states "
+          f"satisfy the Dugdale law to {residual:.1e} σ₀")
+    for name, run in runs.items():
+        if run is not reference:
+            print(f"time ratio tamaas / {name}: {reference['seconds'] / run['seconds']:.1f} "
+                  f"(tamaas without its capped approaches: {kept / run['seconds']:.1f})")
+    if same:
+        matched = [i for i in range(len(depths)) if same[i] and ok[i] and like["force"][i] != 0.0]
+        agreement = max((abs(reference["force"][i] / like["force"][i] - 1) for i in matched), default=math.nan)
+        apart = max(abs(reference["force"][i] - like["force"][i]) / cell for i in range(len(depths)) if ok[i])
+        print(f"tamaas and ours periodic metastable: the same contact and zone cell counts at {sum(same)} of "
+              f"{len(depths)} approaches, where the forces agree to {agreement:.1e} (converged, attached ones); "
+              f"elsewhere within {apart:.1f} cells' tension σ₀Δx²")
 
 
 # ------------------------------------------------------------------------------------------ main
@@ -163,6 +272,7 @@ def main(argv=None) -> int:
                         help="tamaas' iteration cap per approach (default 2000)")
     parser.add_argument("--tracemalloc", action="store_true",
                         help="also the tracemalloc peak of this project's runs (a second call each)")
+    parser.add_argument("--json", help="also write every run's numbers to this file")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.worker:
@@ -203,80 +313,10 @@ def main(argv=None) -> int:
             print(f"running {label} ...", file=sys.stderr, flush=True)
             runs[label] = launch(dict(base, code="tamaas", max_iter=args.max_iter))
 
-    reference = runs.get("tamaas periodic PKR+Maugis")
-    like = runs.get("roughcontact periodic metastable")
-
-    # per approach
-    columns = list(runs)
-    header = f"{'d/(ℓ²/R)':>9} |" + "".join(f" {name.replace('roughcontact ', 'ours '):>33} |" for name in columns)
-    if reference is not None and like is not None:
-        header += f" {'ΔF/|F_po|':>9} {'same n':>6}"
-    print()
-    print("force F/(πwR) and contact / zone cells per approach" + (
-        "; ΔF: tamaas − ours periodic metastable, over |pull-off|" if reference and like else ""))
-    print(header)
-    print("-" * len(header))
-    for i, d in enumerate(depths):
-        row = f"{d / unit:9.3f} |"
-        for name in columns:
-            run = runs[name]
-            extra = ""
-            if name.startswith("tamaas"):
-                extra = f"{run['iterations'][i]:d}{'' if run['converged'][i] else '*'}"
-            row += (f" {run['force'][i] / (math.pi * w * RADIUS):+9.5f} {run['contact_cells'][i]:6d} "
-                    f"{run['zone_cells'][i]:5d} {extra:>7} |")
-        if reference is not None and like is not None:
-            pull = abs(min(like["force"]))
-            same = (reference["contact_cells"][i] == like["contact_cells"][i]
-                    and reference["zone_cells"][i] == like["zone_cells"][i])
-            row += f" {(reference['force'][i] - like['force'][i]) / pull:+9.1e} {'yes' if same else 'no':>6}"
-        print(row)
-    print("-" * len(header))
-    if reference is not None:
-        print("columns: F/(πwR), contact cells, zone cells; tamaas: its iterations, * = error above tol at the "
-              "cap; same n: tamaas and ours periodic metastable have the same contact and zone cell counts")
-
-    # summary
-    print()
-    summary = (f"{'code':<34} {'loads':>5} {'wall s':>8} {'s/load':>7} {'iterations':>11} "
-               f"{'pull-off F':>12} {'F/(πwR)':>8} {'ΔF/F vs tamaas':>14} {'peak B/cell':>11}")
-    print(summary)
-    print("-" * len(summary))
-    for name, run in runs.items():
-        pull = min(run["force"])
-        difference = f"{pull / min(reference['force']) - 1:+14.2e}" if reference and run is not reference else f"{'':>14}"
-        counted = "PKR" if name.startswith("tamaas") else "S upd."
-        memory = f"{run['rss_growth_per_cell']:11.1f}"
-        print(f"{name:<34} {len(run['force']):5d} {run['seconds']:8.2f} {run['seconds'] / len(run['force']):7.3f} "
-              f"{sum(run['iterations']):>6d} {counted:<4} {pull:12.5e} {pull / (math.pi * w * RADIUS):8.4f} "
-              f"{difference} {memory}")
-    print("-" * len(summary))
-    print("iterations: tamaas' Polonsky–Keer–Rey iterations; roughcontact's updates of the zone S "
-          "(one constrained-CG contact solve each). peak B/cell: growth of ru_maxrss over the RSS "
-          "before the call, per cell (heights not counted).")
-    for name, run in runs.items():
-        if "traced_peak_per_cell" in run:
-            print(f"{name}: tracemalloc peak {run['traced_peak_per_cell']:.1f} B/cell")
-        if "fallback" in run and any(run["fallback"]):
-            print(f"{name}: {sum(run['fallback'])} approaches settled by the metastable fallback")
-    if reference is not None:
-        capped = [i for i, ok in enumerate(reference["converged"]) if not ok]
-        kept = sum(s for i, s in enumerate(reference["step_seconds"]) if i not in capped)
-        print(f"tamaas: {len(capped)} of {len(reference['force'])} approaches above tol at the cap "
-              f"(approaches {capped}); {kept:.2f} s on the others; largest violation of the Dugdale law "
-              f"by its states {max(reference['law_residual']):.1e} σ₀")
-        for name, run in runs.items():
-            if run is not reference:
-                print(f"time ratio tamaas / {name}: {reference['seconds'] / run['seconds']:.1f} "
-                      f"(without tamaas' capped approaches {kept / run['seconds']:.1f})")
-        if like is not None:
-            same = sum(reference["contact_cells"][i] == like["contact_cells"][i]
-                       and reference["zone_cells"][i] == like["zone_cells"][i] for i in range(len(depths)))
-            both = [i for i in range(len(depths)) if reference["contact_cells"][i] == like["contact_cells"][i]
-                    and reference["zone_cells"][i] == like["zone_cells"][i] and like["force"][i] != 0.0]
-            agreement = max((abs(reference["force"][i] / like["force"][i] - 1) for i in both), default=math.nan)
-            print(f"tamaas and ours periodic metastable land on the same contact and zone cell counts at {same} of "
-                  f"{len(depths)} approaches, where the forces agree to {agreement:.1e}")
+    if args.json:
+        Path(args.json).write_text(json.dumps(dict(n=args.n, depths=depths.tolist(), work_of_adhesion=w,
+                                                   cohesive_stress=sigma, unit=unit, runs=runs)))
+    report(runs, depths, w, unit, sigma * spacing**2)
     return 0
 
 
