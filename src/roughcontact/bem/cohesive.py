@@ -283,9 +283,7 @@ class _CohesiveSolver:
         """``[m]``: largest ``|k|`` of the periodic kernel at periodic distance ≥ ``m`` in a direction."""
         kernel = self.operator._kernel
         n = kernel.shape[0]
-        magnitude = np.abs(kernel)
-        rows = np.maximum(magnitude.max(axis=1), magnitude.max(axis=0))
-        del magnitude
+        rows = np.maximum.reduce([kernel.max(axis=1), -kernel.min(axis=1), kernel.max(axis=0), -kernel.min(axis=0)])
         index = np.arange(n)
         tails = np.zeros(n // 2 + 1)
         np.maximum.at(tails, np.minimum(index, n - index), rows)
