@@ -32,6 +32,29 @@ tamaas 2.9
     the rigid-body offset, so ``d`` is recovered as the mean over the contact
     set of ``K p − model.displacement`` with the solver's own operator ``K``.
 
+Adhesion (:class:`TamaasAdhesionPeer`)
+    tamaas 2.9 adds an adhesive interaction only to the Polonsky–Keer–Rey
+    solver whose primal variable is the gap (``PolonskyKeerRey.gap``):
+    ``addFunctionalTerm`` passes the functional the primal field, so on the
+    pressure primal (the one that can take the ``dcfft`` operator) it would
+    read pressures as gaps, and the gap primal needs the inverse operator
+    (pressure from displacement), which tamaas has for the periodic
+    half-space only (``westergaard_dirichlet``). The comparison is therefore
+    made on the periodic half-space: tamaas' ``westergaard_neumann`` operator
+    (``ũ = 2p̃/(E*|q|)``, ``ũ(0) = 0``) coincides with roughcontact's
+    ``PeriodicOperator`` to round-off. With the constraint on the gap too,
+    ``solve(ḡ)`` imposes the mean gap ``ḡ`` over the grid; tamaas' gap is
+    ``g = u − h`` with ``h = −(z − min z)`` and ``u`` its displacement (rigid
+    offset included), roughcontact's ``g = (z − min z) − d + K p`` with
+    ``K p`` of zero mean, so the approach ``d`` is imposed by
+    ``ḡ = mean(z − min z) − d``. ``MaugisAdhesionFunctional`` with
+    ``rho = δ_t`` and ``surface_energy = w`` adds the tension ``w/ρ = σ₀`` on
+    every open cell with ``g ≤ ρ`` — the Dugdale law of
+    :mod:`roughcontact.bem.cohesive` — and the contact pressure is bounded
+    below by ``−σ₀`` by the same Lagrange condition. The pressure is
+    ``model.traction`` (compressive positive; round-off of ±10⁻¹³ off the
+    contact), the contact the cells with ``g ≤ 10⁻¹²·δ_t``.
+
 Tolerances
 ----------
 roughcontact stops when ``max_c |g| ≤ tol·d`` and ``min_(not c) g ≥ −tol·d``
@@ -43,7 +66,11 @@ known before the solve: it is estimated from a neighbouring solution
 (``d₀ (F/F₀)^(2/3)``), or, without one, the solve is repeated warm-started
 with the depth just found until the estimate is within a factor 2 of the
 result. tamaas' Polonsky–Keer–Rey solver has its own relative error measure
-and is given ``tol`` unchanged.
+and is given ``tol`` unchanged. With an adhesion functional, its
+``computeError()`` called after ``solve`` does not include the functional
+(it reads 10–50 on converged states), so :class:`TamaasAdhesionPeer` reads
+the error of the last iteration from tamaas' log, and checks each state
+against the Dugdale law itself (``law_residual``).
 
 Stiffness
 ---------
@@ -69,6 +96,8 @@ __all__ = [
     "PeerPoint",
     "ContactMechanicsPeer",
     "TamaasPeer",
+    "TamaasAdhesionPeer",
+    "AdhesionPeerPath",
     "make_peer",
     "load_path",
     "peer_versions",
@@ -397,6 +426,145 @@ class TamaasPeer:
         seconds = time.perf_counter() - start
         return PeerSolution(force=float(force), depth=depth, pressure=pressure, contact=contact,
                             iterations=iterations, seconds=seconds)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class AdhesionPeerPath:
+    """A displacement-controlled adhesive path solved by a peer, in roughcontact's conventions.
+
+    Attributes
+    ----------
+    depth, force : numpy.ndarray
+        Approach from first touch (length) and total force ``Σ p Δ²`` (negative: tensile).
+    contact_cells, zone_cells : numpy.ndarray
+        Cells in contact (``g = 0``) and in the cohesive zone (``0 < g ≤ δ_t``).
+    iterations : numpy.ndarray
+        Iterations of the peer's solver per approach.
+    error : numpy.ndarray
+        The peer's own error at its last iteration, per approach.
+    converged : numpy.ndarray
+        Bool per approach: ``error ≤ tol`` within the iteration cap.
+    law_residual : numpy.ndarray
+        Per approach, the largest violation of the Dugdale law by the returned state, over
+        ``σ₀``: ``|p − law(g)|`` on the open cells (``law = −σ₀`` for ``g ≤ δ_t``, 0 beyond) and
+        ``−σ₀ − p`` where positive on the contact.
+    seconds : numpy.ndarray
+        Wall time per approach.
+    """
+
+    depth: np.ndarray
+    force: np.ndarray
+    contact_cells: np.ndarray
+    zone_cells: np.ndarray
+    iterations: np.ndarray
+    error: np.ndarray
+    converged: np.ndarray
+    law_residual: np.ndarray
+    seconds: np.ndarray
+
+    @property
+    def pull_off_force(self) -> float:
+        """The most tensile force of the path."""
+        return float(self.force.min())
+
+
+class TamaasAdhesionPeer:
+    """tamaas' Polonsky–Keer–Rey solver with ``MaugisAdhesionFunctional`` (periodic half-space).
+
+    The conventions are in the module docstring (Adhesion). Each approach is warm-started from
+    the previous one: tamaas keeps its gap between calls of ``solve``.
+
+    Parameters
+    ----------
+    heights : array_like, shape (n, n)
+        Indenter shape ``z`` in roughcontact's convention.
+    length, e_star : float
+        Side of the grid and effective modulus (``E = E*``, ``ν = 0``).
+    work_of_adhesion, cohesive_stress : float
+        ``w`` and ``σ₀`` of :func:`roughcontact.bem.cohesive.cohesive_path`; ``rho = w/σ₀``.
+    tol : float
+        Tolerance of ``PolonskyKeerRey`` (its own error measure).
+    max_iter : int
+        Iteration cap per approach.
+    """
+
+    name = "tamaas"
+    _log_row = re.compile(r"^\s*(\d+)\s+(\S+)\s+(\S+)\s*$")
+
+    def __init__(self, heights, *, length: float, e_star: float, work_of_adhesion: float,
+                 cohesive_stress: float, tol: float = 1e-10, max_iter: int = 10_000):
+        import tamaas as tm
+
+        self._tm = tm
+        self.surface = _peer_heights(heights)          # h = −(z − min z); kept alive for tamaas
+        self.n = self.surface.shape[0]
+        self.length = float(length)
+        self.tol = float(tol)
+        self.sigma = float(cohesive_stress)
+        self.range = float(work_of_adhesion) / self.sigma
+        self.mean_height = float(-self.surface.mean())
+        self.model = tm.ModelFactory.createModel(tm.model_type.basic_2d,
+                                                 [self.length, self.length], [self.n, self.n])
+        self.model.E = float(e_star)
+        self.model.nu = 0.0
+        self.solver = tm.PolonskyKeerRey(self.model, self.surface, self.tol,
+                                         tm.PolonskyKeerRey.gap, tm.PolonskyKeerRey.gap)
+        self.solver.max_iter = int(max_iter)
+        self.adhesion = tm.MaugisAdhesionFunctional(self.surface)
+        self.adhesion.parameters = {"rho": self.range, "surface_energy": float(work_of_adhesion)}
+        self.solver.addFunctionalTerm(self.adhesion)
+
+    def _run(self, mean_gap: float) -> tuple[int, float]:
+        """Solve at the mean gap; ``(iterations, error)`` of the last line of tamaas' log."""
+        tm = self._tm
+        log = io.StringIO()
+        level = tm.get_log_level()
+        tm.set_log_level(tm.LogLevel.info)
+        try:
+            with contextlib.redirect_stderr(log):
+                self.solver.solve(mean_gap)
+        finally:
+            tm.set_log_level(level)
+        rows = [m.groups() for m in map(self._log_row.match, log.getvalue().splitlines()) if m]
+        if not rows:
+            raise RuntimeError(f"could not read tamaas' iteration count from its log: {log.getvalue()!r}")
+        return int(rows[-1][0]), float(rows[-1][2])
+
+    def state(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(pressure, gap)`` of the last solve, ``(n, n)`` each."""
+        pressure = np.array(self.model.traction, copy=True).reshape(self.n, self.n)
+        gap = np.asarray(self.model.displacement).reshape(self.n, self.n) - self.surface
+        return pressure, gap
+
+    def law_residual(self, pressure: np.ndarray, gap: np.ndarray) -> float:
+        """Largest violation of the Dugdale law over ``σ₀`` (:class:`AdhesionPeerPath`)."""
+        open_ = gap > 0.0
+        law = np.where(gap <= self.range, -self.sigma, 0.0)
+        on_open = float(np.abs(pressure - law)[open_].max(initial=0.0))
+        on_contact = float((-self.sigma - pressure)[~open_].max(initial=0.0))
+        return max(on_open, on_contact) / self.sigma
+
+    def path(self, depths, *, progress=None) -> AdhesionPeerPath:
+        """Solve at each approach in order, warm-started; *progress(i, total)* after each."""
+        depths = np.asarray(depths, dtype=float).reshape(-1)
+        columns = {key: [] for key in ("force", "contact_cells", "zone_cells", "iterations", "error",
+                                       "converged", "law_residual", "seconds")}
+        for i, d in enumerate(depths):
+            start = time.perf_counter()
+            iterations, error = self._run(self.mean_height - float(d))
+            seconds = time.perf_counter() - start
+            pressure, gap = self.state()
+            contact = gap <= 0.0
+            for key, value in (("force", float(pressure.sum()) * (self.length / self.n) ** 2),
+                               ("contact_cells", int(np.count_nonzero(contact))),
+                               ("zone_cells", int(np.count_nonzero(~contact & (gap <= self.range)))),
+                               ("iterations", iterations), ("error", error),
+                               ("converged", error <= self.tol), ("law_residual", self.law_residual(pressure, gap)),
+                               ("seconds", seconds)):
+                columns[key].append(value)
+            if progress is not None:
+                progress(i + 1, depths.size)
+        return AdhesionPeerPath(depth=depths, **{key: np.asarray(value) for key, value in columns.items()})
 
 
 def make_peer(name: str, heights, *, length: float, e_star: float, tol: float = 1e-8):

@@ -259,6 +259,38 @@ def test_cohesive_unloading_holds_tension_where_loading_was_apart():
     assert unload - load < -0.9, f"at -0.8: loading {load:.3f}, unloading {unload:.3f} pi w R"
 
 
+@pytest.mark.parametrize("periodic", [False, True])
+def test_cohesive_zone_update_on_a_window_is_the_whole_grids(periodic, monkeypatch):
+    """The update of the zone computes the gaps on a window around it and bounds the displacement
+    elsewhere; on a rough sphere's load-unload path (lambda = 1, energy rule) every update finds
+    the same cells and force as the gaps of the whole grid."""
+    from roughcontact.bem import cohesive
+    from roughcontact.surfaces import rough_sphere
+
+    original, checked = cohesive._CohesiveSolver._in_range, []
+
+    def in_range(self, d, reach, lift, shift):
+        new, force = original(self, d, reach, lift, shift)
+        n = self.heights.shape[0]
+        pressure = np.where(reach, lift.on((slice(0, n), slice(0, n))) - self.sigma, 0.0)
+        gap = self.heights - d + self.operator(pressure) + np.where(reach, shift, -shift)
+        np.testing.assert_array_equal(new, gap <= self.range)
+        assert force == pytest.approx(float(pressure.sum()) * self.spacing**2, rel=1e-12, abs=1e-300)
+        checked.append(int(reach.sum()))
+        return new, force
+
+    monkeypatch.setattr(cohesive._CohesiveSolver, "_in_range", in_range)
+    n, radius, ell = 96, 0.5, 6 / 96
+    w = (4 / 3) * ell**3 / (math.pi * radius**2)
+    sigma = adhesion.maugis_cohesive_stress(1.0, radius=radius, e_star=1.0, work_of_adhesion=w)
+    unit = ell**2 / radius
+    depths = np.concatenate([np.linspace(-0.5, 1.0, 4), np.linspace(1.0, -1.2, 9)[1:]]) * unit
+    path = cohesive_path(rough_sphere(n, radius=radius, hurst=0.7, h_rms=1e-3, seed=3), depths, length=1.0,
+                         e_star=1.0, work_of_adhesion=w, cohesive_stress=sigma, periodic=periodic)
+    assert path.contact_cells.max() > 0 and path.contact_cells[-1] == 0
+    assert len(checked) == path.iterations.sum() and max(checked) < n * n / 16
+
+
 def test_cohesive_zone_at_the_grid_edge_is_named():
     with pytest.raises(DomainTooSmallError, match="edge of the free-space grid"):
         _maugis_sphere(0.05, 8, 32)

@@ -19,8 +19,12 @@ doi:10.1007/s00466-017-1392-5). It is solved by the constrained conjugate gradie
 Polonsky & Keer (Wear 231, 206 (1999)) with the approach given (no force constraint: the gap on
 ``q > 0`` is the residual; cells of ``S`` with ``q = 0`` and ``g < 0`` enter), to
 ``max |g| ≤ tol·s`` on ``q > 0`` and ``g ≥ −tol·s`` elsewhere on ``S``,
-``s = max(δ_t, max_S |h − d|)``; on the free half-space on the bounding box of ``S``. Then ``S``
-is updated from the gaps of the whole grid and the solve repeats until ``S`` is unchanged. Each
+``s = max(δ_t, max_S |h − d|)``; on the bounding box of ``S`` (the periodic half-space too, by the
+periodic kernel on the window's zero-padded FFT, exact for lifts inside the box, while the box is
+at most half the grid a side; the whole grid otherwise). Then ``S``
+is updated from the gaps of the whole grid — computed on a window around ``S``, widened to every
+cell that a bound of the displacement elsewhere leaves possibly in range — and the solve repeats
+until ``S`` is unchanged. Each
 approach starts from the previous ``S`` and lifts (warm start), so that where several
 equilibria exist (the jump-in and jump-out of the non-convex law) the path picks its branch.
 Every state returned satisfies the law above.
@@ -55,6 +59,7 @@ with adhesion.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
 import numpy as np
@@ -62,7 +67,7 @@ import numpy as np
 from .._validate import check_finite, check_finite_positive
 from ..errors import ConvergenceError, DomainTooSmallError
 from .adhesion import AdhesivePath
-from .operators import operator_for
+from .operators import FreeSpaceOperator, PeriodicOperator, operator_for
 
 __all__ = ["EDGE_RULES", "CohesivePath", "cohesive_path"]
 
@@ -117,6 +122,56 @@ def _box(mask: np.ndarray) -> tuple[slice, slice]:
     return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
 
 
+@dataclasses.dataclass(frozen=True)
+class _Lift:
+    """The lifts ``q`` held on a box of the grid (zero outside it): the state's only floats, so that
+    a path keeps no grid-sized array but the heights."""
+
+    box: tuple[slice, slice]
+    values: np.ndarray
+
+    def on(self, box: tuple[slice, slice]) -> np.ndarray:
+        """The lifts on *box* (a new array, zero outside :attr:`box`)."""
+        out = np.zeros((box[0].stop - box[0].start, box[1].stop - box[1].start))
+        rows = slice(max(box[0].start, self.box[0].start), min(box[0].stop, self.box[0].stop))
+        cols = slice(max(box[1].start, self.box[1].start), min(box[1].stop, self.box[1].stop))
+        if rows.start < rows.stop and cols.start < cols.stop:
+            out[rows.start - box[0].start:rows.stop - box[0].start, cols.start - box[1].start:cols.stop - box[1].start] = \
+                self.values[rows.start - self.box[0].start:rows.stop - self.box[0].start,
+                            cols.start - self.box[1].start:cols.stop - self.box[1].start]
+        return out
+
+
+_NO_LIFT = _Lift((slice(0, 0), slice(0, 0)), np.zeros((0, 0)))
+
+
+class _PeriodicWindows(FreeSpaceOperator):
+    """The periodic half-space on windows of the grid: the windowed, zero-padded convolution of
+    :class:`~roughcontact.bem.operators.FreeSpaceOperator` with the periodic kernel as its table.
+
+    The periodic displacement under a unit cell pressure, ``k[i mod n, j mod n]``, is even in each
+    offset, so the table ``k[|i|, |j|]`` of the offsets ``|i|, |j| < n`` is all a window needs:
+    for pressures inside a window of at most ``n`` cells a side the linear convolution on the
+    padded window gives the periodic displacement on the window exactly (round-off apart), at the
+    cost of the window's FFT instead of the grid's.
+    """
+
+    periodic = True
+
+    def __init__(self, operator: PeriodicOperator):
+        self._periodic_kernel = operator._kernel
+        super().__init__(operator.n, operator.n * operator.spacing, operator.e_star)
+
+    def _coefficients(self, size: int) -> np.ndarray:
+        return self._periodic_kernel
+
+
+@functools.lru_cache(maxsize=4)
+def _periodic_windows(operator: PeriodicOperator) -> _PeriodicWindows:
+    """One :class:`_PeriodicWindows` per (cached) periodic operator, so its spectra are reused."""
+    return _PeriodicWindows(operator)
+
+
 class _CohesiveSolver:
     """The solve at one approach (module docstring) on one grid."""
 
@@ -137,6 +192,7 @@ class _CohesiveSolver:
         self.sigma = float(cohesive_stress)
         self.range = work_of_adhesion / cohesive_stress
         self.operator = operator_for(n, length, e_star, periodic)
+        self.windows = _periodic_windows(self.operator) if periodic else self.operator
         self.periodic = periodic
         self.heights = z - z.min()
         self.tol, self.maxiter, self.max_updates = tol, maxiter, max_updates
@@ -146,19 +202,21 @@ class _CohesiveSolver:
 
     def empty(self):
         """The state before any interaction: ``(reach, lift)``, both zero."""
-        return np.zeros(self.heights.shape, dtype=bool), np.zeros(self.heights.shape)
+        return np.zeros(self.heights.shape, dtype=bool), _NO_LIFT
 
     def _contact(self, d, reach, lift):
         """The lifts ``q = p + σ₀ ≥ 0`` on *reach* (``S``) at the approach *d*: the convex contact
         problem of the module docstring, by displacement-controlled constrained conjugate
         gradients (Polonsky & Keer 1999 with the approach given: no force constraint, the gap
-        itself the residual), on the bounding box of ``S`` (free space) or the grid (periodic).
-        Stops when ``max_(q>0) |g| ≤ tol·s`` and ``min_(S, q=0) g ≥ −tol·s``,
-        ``s = max(δ_t, max_S |h − d|)``."""
-        operator = self.operator
-        box = (slice(None), slice(None)) if self.periodic else _box(reach)
+        itself the residual), on the bounding box of ``S`` (periodic: the grid when the box is
+        more than half of it a side). Stops when ``max_(q>0) |g| ≤ tol·s`` and
+        ``min_(S, q=0) g ≥ −tol·s``, ``s = max(δ_t, max_S |h − d|)``."""
+        n = self.heights.shape[0]
+        box, operator = _box(reach), self.windows
+        if self.periodic and max(side.stop - side.start for side in box) > n // 2:
+            box, operator = (slice(0, n), slice(0, n)), self.operator
         inside = reach[box]
-        q = np.where(inside, lift[box], 0.0)
+        q = np.where(inside, lift.on(box), 0.0)
         base = self.heights[box] - d
         scale = max(self.range, float(np.abs(base[inside]).max()))
         base = base - self.sigma * operator(inside.astype(float))     # h − d + K(−σ₀ 1_S)
@@ -177,9 +235,7 @@ class _CohesiveSolver:
                 displacement, exact, since_exact = operator(q), True, 0
                 continue
             if error <= limit:
-                out = np.zeros(self.heights.shape)
-                out[box] = q
-                return out
+                return _Lift(box, q)
             if iteration == self.maxiter:
                 break
             residual = np.where(support, gap, 0.0)
@@ -209,8 +265,76 @@ class _CohesiveSolver:
         raise ConvergenceError(f"the cohesive contact did not reach tol = {self.tol:g} in {self.maxiter} "
                                f"iterations at d = {d:g} (error {error / scale:.2e})")
 
+    def _tail(self, distance: int) -> float:
+        """Largest ``|K_ij|`` (displacement under a unit cell pressure) at offsets of at least
+        *distance* cells in one direction (the periodic distance on the periodic half-space);
+        Love's coefficients fall monotonically with each offset, so the free half-space's is
+        the one at ``(distance, 0)``."""
+        n = self.heights.shape[0]
+        if self.periodic:
+            tails = self._periodic_tails
+            return float(tails[distance]) if distance < tails.size else 0.0
+        if distance >= n:
+            return 0.0
+        return float(self.windows._coefficients(distance + 1)[distance, 0])
+
+    @functools.cached_property
+    def _periodic_tails(self) -> np.ndarray:
+        """``[m]``: largest ``|k|`` of the periodic kernel at periodic distance ≥ ``m`` in a direction."""
+        kernel = self.operator._kernel
+        n = kernel.shape[0]
+        rows = np.maximum.reduce([kernel.max(axis=1), -kernel.min(axis=1), kernel.max(axis=0), -kernel.min(axis=0)])
+        index = np.arange(n)
+        tails = np.zeros(n // 2 + 1)
+        np.maximum.at(tails, np.minimum(index, n - index), rows)
+        return np.maximum.accumulate(tails[::-1])[::-1]
+
+    def _in_range(self, d: float, reach, lift, shift: float):
+        """``(new, force)``: the cells with ``g ± shift ≤ δ_t`` (``+`` in ``S``, ``−`` out) under
+        the pressure ``p = q − σ₀`` on *reach*, and the force ``Σ p Δx²``.
+
+        The gaps are computed on a window: the bounding box of ``S`` widened by a margin ``m``,
+        and further to take every cell outside it that might be in range, ``h − d − B ≤ δ_t +
+        shift`` with ``B = Σ|p| · max_(offset ≥ m+1) |K|`` a bound of ``|u|`` there (the free
+        half-space's window clipped to the grid; the periodic one on the whole grid when it
+        would wrap). Exact: the displacement on the window is that of all of ``p``, which lies
+        inside it, and no cell outside is in range."""
+        n = self.heights.shape[0]
+        if not reach.any():
+            return self.heights <= d + self.range + shift, 0.0
+        rows, cols = _box(reach)
+        inside = reach[rows, cols]
+        pressure = np.where(inside, lift.on((rows, cols)) - self.sigma, 0.0)
+        force = float(pressure.sum() * self.spacing**2)
+        margin = max(8, max(rows.stop - rows.start, cols.stop - cols.start) // 2)
+        window = [max(rows.start - margin, 0), min(rows.stop + margin, n),
+                  max(cols.start - margin, 0), min(cols.stop + margin, n)]
+        whole = self.periodic and (rows.start < margin or cols.start < margin or rows.stop + margin > n
+                                   or cols.stop + margin > n)
+        if not whole:
+            bound = float(np.abs(pressure).sum()) * self._tail(margin + 1)
+            candidates = self.heights <= d + self.range + shift + bound
+            c_rows, c_cols = _box(candidates) if candidates.any() else (rows, cols)
+            del candidates
+            window = [min(window[0], c_rows.start), max(window[1], c_rows.stop),
+                      min(window[2], c_cols.start), max(window[3], c_cols.stop)]
+            whole = self.periodic and max(window[1] - window[0], window[3] - window[2]) > n // 2
+        if whole:
+            window, operator = [0, n, 0, n], self.operator
+        else:
+            operator = self.windows
+        box = (slice(window[0], window[1]), slice(window[2], window[3]))
+        loaded = np.zeros((window[1] - window[0], window[3] - window[2]))
+        loaded[rows.start - window[0]:rows.stop - window[0], cols.start - window[2]:cols.stop - window[2]] = pressure
+        gap = operator(loaded)
+        gap += self.heights[box] - d
+        gap += np.where(reach[box], shift, -shift)
+        new = np.zeros(reach.shape, dtype=bool)
+        new[box] = gap <= self.range
+        return new, force
+
     def settle(self, d: float, reach, lift):
-        """``(reach, lift, pressure, updates, fallback)`` at the approach *d* from the state
+        """``(reach, lift, force, updates, fallback)`` at the approach *d* from the state
         ``(reach, lift)`` (not modified): ``S`` updated by the edge rule until unchanged
         (module docstring); *fallback* tells whether the energy rule cycled and the metastable
         rule settled the approach."""
@@ -221,19 +345,13 @@ class _CohesiveSolver:
             seen = set()
             while updates < self.max_updates:
                 updates += 1
-                if reach.any():
-                    lift = self._contact(d, reach, lift)
-                    pressure = lift - self.sigma * reach
-                    gap = self.heights - d + self.operator(pressure)
-                else:
-                    lift, pressure = np.zeros(self.heights.shape), np.zeros(self.heights.shape)
-                    gap = self.heights - d
-                new = gap + np.where(reach, shift, -shift) <= self.range
+                lift = self._contact(d, reach, lift) if reach.any() else _NO_LIFT
+                new, force = self._in_range(d, reach, lift, shift)
                 if not self.periodic and (new[0].any() or new[-1].any() or new[:, 0].any() or new[:, -1].any()):
                     raise DomainTooSmallError(f"the cohesive zone reached the edge of the free-space grid at "
                                               f"d = {d:g}: enlarge length (or use periodic=True)")
                 if np.array_equal(new, reach):
-                    return reach, lift, pressure, updates, rule != self.edge_rule
+                    return reach, lift, force, updates, rule != self.edge_rule
                 key = np.packbits(new).tobytes()
                 if key in seen:
                     break                                   # a cycle: the next rule from here
@@ -242,9 +360,6 @@ class _CohesiveSolver:
             else:
                 raise ConvergenceError(f"the cohesive zone did not settle in {self.max_updates} updates at d = {d:g}")
         raise ConvergenceError(f"the cohesive zone's updates cycle at d = {d:g} under every edge rule")
-
-    def force(self, pressure) -> float:
-        return float(pressure.sum() * self.spacing**2)
 
 
 def cohesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: float, cohesive_stress: float,
@@ -304,14 +419,14 @@ def cohesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
     detach_depth, touched = math.nan, False
     for d in np.asarray(depths, dtype=float).reshape(-1):
         check_finite("depths", float(d))
-        reach, lift, pressure, updates, fallback = solver.settle(float(d), reach, lift)
-        cells = int(np.count_nonzero(lift > 0.0))
+        reach, lift, force, updates, fallback = solver.settle(float(d), reach, lift)
+        cells = int(np.count_nonzero(lift.values > 0.0))
         zone_cells = int(np.count_nonzero(reach)) - cells
         if cells and not touched:
             touched = True
         elif touched and not cells and math.isnan(detach_depth):
             detach_depth = float(d)
-        for key, value in (("depth", float(d)), ("force", solver.force(pressure)), ("contact_cells", cells),
+        for key, value in (("depth", float(d)), ("force", force), ("contact_cells", cells),
                            ("contact_radius", math.sqrt(cells * area / math.pi)), ("iterations", updates),
                            ("zone_cells", zone_cells),
                            ("zone_radius", math.sqrt((cells + zone_cells) * area / math.pi)),
