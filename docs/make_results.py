@@ -22,7 +22,8 @@ import xarray as xr
 
 DOCS = Path(__file__).resolve().parent
 #: the figure shown for each preset (a file of results/figures/, first match)
-FIGURE = {"zeta": ["zeta.png"], "zeta-law": ["zeta.png"], "zeta-law-fine": ["zeta.png"], "finite-size": ["../exponents/local_exponents.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"]}
+FIGURE = {"zeta": ["zeta.png"], "zeta-law": ["zeta.png"], "zeta-law-fine": ["zeta.png"], "finite-size": ["../exponents/local_exponents.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"],
+          "adhesion": ["../adhesion_figures/pull_off.png"]}
 SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
                  "rms_rel_dev", "n_loads"]
 #: Fig. 3 at the paper's setting, the figure of a preset that has it
