@@ -333,6 +333,20 @@ class ContactMechanicsPeer:
                             contact=pressure > 0, iterations=iterations, seconds=seconds)
 
 
+def _tamaas_log(tm, call) -> str:
+    """Run *call* with tamaas logging at info level to stderr, captured; return the log text
+    (tamaas prints its iteration table there), the previous log level restored."""
+    log = io.StringIO()
+    level = tm.get_log_level()
+    tm.set_log_level(tm.LogLevel.info)
+    try:
+        with contextlib.redirect_stderr(log):
+            call()
+    finally:
+        tm.set_log_level(level)
+    return log.getvalue()
+
+
 class TamaasPeer:
     """tamaas' Polonsky–Keer–Rey solver on the non-periodic ("dcfft") half-space.
 
@@ -372,18 +386,10 @@ class TamaasPeer:
 
     def _run(self, force: float) -> int:
         """Solve, returning the iteration count that tamaas logs (to stderr) at info level."""
-        tm = self._tm
-        log = io.StringIO()
-        level = tm.get_log_level()
-        tm.set_log_level(tm.LogLevel.info)
-        try:
-            with contextlib.redirect_stderr(log):
-                self.solver.solve(force / self.length**2)
-        finally:
-            tm.set_log_level(level)
-        lines = [m.group(1) for m in map(self._last_iteration.match, log.getvalue().splitlines()) if m]
+        log = _tamaas_log(self._tm, lambda: self.solver.solve(force / self.length**2))
+        lines = [m.group(1) for m in map(self._last_iteration.match, log.splitlines()) if m]
         if not lines:
-            raise RuntimeError(f"could not read tamaas' iteration count from its log: {log.getvalue()!r}")
+            raise RuntimeError(f"could not read tamaas' iteration count from its log: {log!r}")
         error = self.solver.computeError()
         if not error <= self.tol:
             raise RuntimeError(f"tamaas did not converge: error {error:g} > tol {self.tol:g}")
@@ -516,18 +522,10 @@ class TamaasAdhesionPeer:
 
     def _run(self, mean_gap: float) -> tuple[int, float]:
         """Solve at the mean gap; ``(iterations, error)`` of the last line of tamaas' log."""
-        tm = self._tm
-        log = io.StringIO()
-        level = tm.get_log_level()
-        tm.set_log_level(tm.LogLevel.info)
-        try:
-            with contextlib.redirect_stderr(log):
-                self.solver.solve(mean_gap)
-        finally:
-            tm.set_log_level(level)
-        rows = [m.groups() for m in map(self._log_row.match, log.getvalue().splitlines()) if m]
+        log = _tamaas_log(self._tm, lambda: self.solver.solve(mean_gap))
+        rows = [m.groups() for m in map(self._log_row.match, log.splitlines()) if m]
         if not rows:
-            raise RuntimeError(f"could not read tamaas' iteration count from its log: {log.getvalue()!r}")
+            raise RuntimeError(f"could not read tamaas' iteration count from its log: {log!r}")
         return int(rows[-1][0]), float(rows[-1][2])
 
     def state(self) -> tuple[np.ndarray, np.ndarray]:

@@ -15,10 +15,7 @@ pick different states the force differs by about the tension of the cells that d
 ``σ₀ Δx²`` each (measured 0.6–1.4 cells here, up to 5 on another seed).
 """
 
-import importlib.util
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -28,6 +25,7 @@ pytest.importorskip("tamaas")
 from roughcontact import surfaces  # noqa: E402
 from roughcontact.bem.cohesive import cohesive_path  # noqa: E402
 from roughcontact.models import adhesion  # noqa: E402
+from test_peers import _load_peers  # noqa: E402  (benchmarks/peers.py, loaded once per use)
 
 N = 80
 LENGTH = 1.0
@@ -47,15 +45,6 @@ SAME_STATE_RTOL = 1e-6
 CELLS = 3.0
 #: tamaas' states satisfy the Dugdale law (measured ≤ 1e-9 σ₀).
 LAW_RESIDUAL = 1e-7
-
-
-def _load_peers():
-    path = Path(__file__).resolve().parents[1] / "benchmarks" / "peers.py"
-    spec = importlib.util.spec_from_file_location("roughcontact_benchmark_peers", path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module          # dataclasses look their module up there
-    spec.loader.exec_module(module)
-    return module
 
 
 @pytest.fixture(scope="module")
