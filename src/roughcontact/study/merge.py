@@ -7,6 +7,7 @@ All forces in the tables are normalised, F/(E* L²); stiffnesses k/(E* L).
 """
 from __future__ import annotations
 
+import dataclasses
 import logging
 
 import numpy as np
@@ -18,7 +19,7 @@ from .io import read_run, write_groups
 from .settings import job_settings
 from .study_settings import StudySettings
 
-__all__ = ["merge_runs", "run_merge"]
+__all__ = ["KindLayout", "kind_layouts", "merge_runs", "run_merge"]
 
 
 log = logging.getLogger(__name__)
@@ -34,6 +35,51 @@ def _force_coords(study: StudySettings, kind: str) -> dict:
         "force": ("force", force, runfile.FORCE_ATTRS),
         "force_normalized": ("force", force / scale, {"long_name": "F/(E* L^2)", "units": "1"}),
     }
+
+
+@dataclasses.dataclass(frozen=True)
+class KindLayout:
+    """Where the runs of one surface kind go in a merged Dataset: ``rows`` (run, path) of the
+    kind, its sweep ``axes`` (:data:`runs.AXES`), the sorted merged-file ``coords`` of each axis
+    and of ``seed``, and each run's coordinates (:meth:`index`)."""
+
+    kind: str
+    rows: list
+    axes: tuple
+    coords: dict
+    at: dict
+
+    @property
+    def shape(self) -> tuple:
+        """The sizes of the axes and ``seed``."""
+        return tuple(len(v) for v in self.coords.values())
+
+    @property
+    def half_space(self) -> str:
+        """The ``half_space`` attribute of the kind's group."""
+        return "periodic" if self.kind == "flat" else "free (non-periodic)"
+
+    def index(self, row) -> tuple:
+        """The position of the run *row* along the axes and ``seed``."""
+        return (tuple(self.coords[a].index(self.at[id(row)][a]) for a in self.axes)
+                + (self.coords["seed"].index(row["seed"]),))
+
+
+def kind_layouts(study: StudySettings, table: list, paths) -> list[KindLayout]:
+    """The :class:`KindLayout` of each surface kind that the runs *table* (dicts of
+    :func:`runs.runs`, one path of *paths* each, in order) have, sphere first."""
+    L = study.grid.length
+    out = []
+    for kind in ("sphere", "flat"):
+        rows = [(row, path) for row, path in zip(table, paths) if row["kind"] == kind]
+        if not rows:
+            continue
+        axes = runs.AXES[kind]
+        at = {id(row): {axis: runs.coordinate(axis, row[axis], L) for axis in axes} for row, _ in rows}
+        coords = {axis: sorted({at[id(row)][axis] for row, _ in rows}) for axis in axes}
+        coords["seed"] = list(study.seeds)
+        out.append(KindLayout(kind=kind, rows=rows, axes=axes, coords=coords, at=at))
+    return out
 
 
 def merge_runs(study, paths) -> dict:
@@ -53,24 +99,16 @@ def merge_runs(study, paths) -> dict:
     if len(paths) != len(table):
         raise MergeError(f"merge got {len(paths)} run files for {len(table)} runs of the config")
     groups = {}
-    for kind in ("sphere", "flat"):
-        rows = [(row, path) for row, path in zip(table, paths) if row["kind"] == kind]
-        if not rows:
-            continue
-        axes = runs.AXES[kind]
-        L = study.grid.length
-        at = {id(row): {axis: runs.coordinate(axis, row[axis], L) for axis in axes} for row, _ in rows}
-        coords = {axis: sorted({at[id(row)][axis] for row, _ in rows}) for axis in axes}
-        coords["seed"] = list(study.seeds)
-        count = study.forces[kind].count
-        shape = tuple(len(v) for v in coords.values()) + (count,)
+    for layout in kind_layouts(study, table, paths):
+        kind, rows, axes, coords = layout.kind, layout.rows, layout.axes, layout.coords
+        shape = layout.shape + (study.forces[kind].count,)
         plastic = any(row["hardness"] is not None for row, _ in rows)
         names = runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
         data = {name: np.zeros(shape, dtype=runfile.VARIABLES[name].dtype) for name in names}
         attrs_of, commits = {}, set()
         for row, path in rows:
             ds = read_run(path, job_settings(study, row))
-            idx = tuple(coords[axis].index(at[id(row)][axis]) for axis in axes) + (coords["seed"].index(row["seed"]),)
+            idx = layout.index(row)
             for name in names:
                 # an elastic run's loading tangent is its stiffness, and nothing flows
                 values = ds[name] if name in ds else (ds["stiffness"] if name == "loading_stiffness" else 0)
@@ -83,7 +121,7 @@ def merge_runs(study, paths) -> dict:
             {name: (dims, data[name], attrs_of.get(name, {})) for name in names},
             coords={**{axis: (axis, coords[axis], runfile.AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
                     **_force_coords(study, kind)},
-            attrs={"surface_kind": kind, "half_space": "periodic" if kind == "flat" else "free (non-periodic)",
+            attrs={"surface_kind": kind, "half_space": layout.half_space,
                    "run_git_commits": provenance.canonical_json(sorted(commits))},
         )
         groups[kind] = ds

@@ -28,6 +28,7 @@ from ...errors import MergeError
 from ...models.rough_adhesion import johnson_rough_sphere_parameter
 from .. import provenance, runfile, runs
 from ..io import read_run
+from ..merge import kind_layouts
 from ..settings import job_settings
 from ..statistics import bootstrap_indices, interval
 from ..study_settings import StudySettings
@@ -49,39 +50,29 @@ def merge_adhesion(study, paths) -> dict:
     table = adhesive_runs(study)
     if len(paths) != len(table):
         raise MergeError(f"the adhesion merge got {len(paths)} run files for {len(table)} adhesive runs")
-    L = study.grid.length
+    variables_of = {**runfile.RETRACT_VARIABLES, **runfile.PULL_OFF_VARIABLES}
     groups = {}
-    for kind in ("sphere", "flat"):
-        rows = [(row, path) for row, path in zip(table, paths) if row["kind"] == kind]
-        if not rows:
-            continue
-        axes = runs.AXES[kind]
-        at = {id(row): {a: runs.coordinate(a, row[a], L) for a in axes} for row, _ in rows}
-        coords = {a: sorted({at[id(row)][a] for row, _ in rows}) for a in axes}
-        coords["seed"] = list(study.seeds)
-        shape = tuple(len(v) for v in coords.values())
+    for layout in kind_layouts(study, table, paths):
         data, count = {}, None
-        for row, path in rows:
+        for row, path in layout.rows:
             ds = read_run(path, job_settings(study, row))
             if "retract_force" not in ds:
                 raise MergeError(f"{path}: an adhesive run without its retract path; delete it and rerun snakemake")
             count = ds.sizes["retract"] if count is None else count
-            idx = tuple(coords[a].index(at[id(row)][a]) for a in axes) + (coords["seed"].index(row["seed"]),)
-            for name, meta in {**runfile.RETRACT_VARIABLES, **runfile.PULL_OFF_VARIABLES}.items():
+            for name, meta in variables_of.items():
                 values = ds[name].values
                 if name not in data:
-                    data[name] = np.zeros(shape + values.shape, dtype=meta.dtype)
-                data[name][idx] = values
-        dims = (*axes, "seed")
+                    data[name] = np.zeros(layout.shape + values.shape, dtype=meta.dtype)
+                data[name][layout.index(row)] = values
+        dims = (*layout.axes, "seed")
         variables = {name: ((*dims, "retract") if name in runfile.RETRACT_VARIABLES else dims, values,
-                            {"long_name": meta.long_name, "units": meta.units})
-                     for name, values in data.items()
-                     for meta in [{**runfile.RETRACT_VARIABLES, **runfile.PULL_OFF_VARIABLES}[name]]}
-        groups[kind] = xr.Dataset(
+                            {"long_name": variables_of[name].long_name, "units": variables_of[name].units})
+                     for name, values in data.items()}
+        groups[layout.kind] = xr.Dataset(
             variables,
-            coords={**{a: (a, coords[a], runfile.AXIS_ATTRS[a]) for a in dims},
+            coords={**{a: (a, layout.coords[a], runfile.AXIS_ATTRS[a]) for a in dims},
                     "retract": ("retract", np.arange(count), runfile.RETRACT_ATTRS)},
-            attrs={"surface_kind": kind, "half_space": "periodic" if kind == "flat" else "free (non-periodic)"})
+            attrs={"surface_kind": layout.kind, "half_space": layout.half_space})
     return groups
 
 
