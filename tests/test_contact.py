@@ -175,6 +175,19 @@ def test_flat_punch_stiffness(n, cells):
     assert bem.stiffness(state) == pytest.approx(2 * E_STAR * a, rel=2e-2), "punch stiffness"
 
 
+@pytest.mark.parametrize("n, cells", [(128, 30), (129, 31)])
+def test_contact_stiffness_of_a_disc_is_the_flat_punch(n, cells):
+    """bem.punch.contact_stiffness of a disc mask off the grid's centre: k = 2 E* a, a = √(area/π),
+    within the 2 % of the test above (the same discretised edge)."""
+    from roughcontact.bem.punch import contact_stiffness
+
+    r = surfaces.radial_distance(n, 1.0)
+    disc = np.roll(r <= cells / n, (n // 5, -n // 7), axis=(0, 1))
+    a = math.sqrt(np.count_nonzero(disc) / math.pi) / n
+    k = contact_stiffness(disc, length=1.0, e_star=E_STAR, periodic=False, tol=1e-10)
+    assert k == pytest.approx(2 * E_STAR * a, rel=2e-2), "punch stiffness of the mask"
+
+
 # --- periodic wavy surface -------------------------------------------------------------
 
 @pytest.mark.parametrize("n", [256, 255])

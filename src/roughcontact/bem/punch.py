@@ -20,9 +20,10 @@ import numpy as np
 from scipy.sparse.linalg import LinearOperator, cg
 
 from ..errors import ConvergenceError
-from .active_sets import dense_limit
+from .active_sets import _window_box, dense_limit
+from .operators import operator_for
 
-__all__ = ["INNER_RTOL", "punch_stiffness"]
+__all__ = ["INNER_RTOL", "punch_stiffness", "contact_stiffness"]
 
 #: Relative residual reduction of each single-precision inner solve of the refinement
 #: (products accurate to ≈ 1e-6): two steps reach ``tol = 1e-8``. On the 1025² flat load
@@ -120,3 +121,18 @@ def punch_stiffness(operator, footprint: np.ndarray, tol: float) -> float:
             punch = best + correction
         punch = best
     return float(_cg(exact, unit_depth, punch, tol, maxiter).sum())
+
+
+def contact_stiffness(contact: np.ndarray, *, length: float, e_star: float, periodic: bool, tol: float) -> float:
+    """``k = dF/dd`` of the contact set *contact* (bool, ``n × n``) held fixed: the rigid flat punch
+    on it (:func:`punch_stiffness`, times the cell area), on the window around the contact that a
+    load solve would use (free half-space) or on the whole grid (periodic). 0 without contact;
+    ``inf`` for a periodic grid in full contact. *tol*: keyword of :func:`punch_stiffness`."""
+    n = contact.shape[0]
+    if not contact.any():
+        return 0.0
+    if periodic and contact.all():
+        return math.inf
+    operator = operator_for(n, length, e_star, periodic)
+    footprint = contact if periodic else contact[_window_box(contact, operator)]
+    return punch_stiffness(operator, footprint, tol) * (length / n) ** 2

@@ -14,7 +14,7 @@ largest load above ``(9/4)πwR``); ``pull_off.csv`` reports the ratio of the two
    approach steps of :data:`LOAD_STEPS` per ``d_ref``, the smooth body's approach at the largest
    load plus ``3 h_rms``): per load the approach, the contact cells and area and the stiffness
    ``k = dF/dd`` of the contact set held fixed (the flat-punch stiffness of the contact,
-   :func:`roughcontact.bem.punch.punch_stiffness`: what a small oscillation measures, which moves
+   :func:`roughcontact.bem.punch.contact_stiffness`: what a small oscillation measures, which moves
    no crack front). The same variables, over ``force``, as an elastic run.
 2. **Retracting**, displacement-controlled, from the last loading approach ``d_max`` to
    ``−RETRACT_REACH · δ_c`` in :data:`RETRACT_STEPS` equal steps (``δ_c``: the JKR sphere's
@@ -35,8 +35,7 @@ import logging
 import numpy as np
 
 from ...bem import adhesion
-from ...bem.operators import operator_for
-from ...bem.punch import punch_stiffness
+from ...bem.punch import contact_stiffness
 from ...errors import ConvergenceError, IndentError
 from ...models.rough_adhesion import jkr_critical_approach
 
@@ -54,29 +53,13 @@ RETRACT_REACH = 3.0
 REFINE = 16
 
 
-def _reference_approach(s, z) -> float:
+def _reference_approach(s) -> float:
     """``d_ref``: Hertz's approach at the largest load (a sphere; ``a³ = 3FR/(4E*)``, ``d = a²/R``)
     plus three rms heights; a flat surface: six rms heights."""
     if s.kind == "flat":
         return 6.0 * s.h_rms
     a = (3.0 * s.forces()[-1] * s.radius / (4.0 * s.e_star)) ** (1.0 / 3.0)
     return a * a / s.radius + 3.0 * s.h_rms
-
-
-def _contact_stiffness(contact: np.ndarray, *, length: float, e_star: float, periodic: bool, tol: float) -> float:
-    """``k = dF/dd`` of the contact set held fixed: the flat punch on it
-    (:func:`roughcontact.bem.punch.punch_stiffness`; a free grid on the contact's bounding box)."""
-    n = contact.shape[0]
-    operator = operator_for(n, length, e_star, periodic)
-    cell = (length / n) ** 2
-    if not contact.any():
-        return 0.0
-    if periodic:
-        return punch_stiffness(operator, contact, tol) * cell
-    rows, cols = np.flatnonzero(contact.any(1)), np.flatnonzero(contact.any(0))
-    size = max(rows[-1] - rows[0], cols[-1] - cols[0]) + 1
-    r0, c0 = min(rows[0], n - size), min(cols[0], n - size)
-    return punch_stiffness(operator, contact[r0:r0 + size, c0:c0 + size], tol) * cell
 
 
 def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
@@ -92,7 +75,7 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
     stiffness = np.zeros(forces.size)
 
     def on_load(i, contact):
-        stiffness[i] = _contact_stiffness(contact, length=L, e_star=E, periodic=s.periodic, tol=1e-10)
+        stiffness[i] = contact_stiffness(contact, length=L, e_star=E, periodic=s.periodic, tol=1e-10)
         text = (f"load step {i + 1}/{forces.size}: F/(E*L^2) = {forces[i] / (E * L**2):.3e}, "
                 f"contact cells = {int(np.count_nonzero(contact))}, k/(E*L) = {stiffness[i] / (E * L):.4e}")
         logger.info("%s: %s", name, text)
@@ -100,7 +83,7 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
             progress(i + 1, forces.size, text)
 
     try:
-        loading = adhesion.adhesive_force_path(z, forces, step=_reference_approach(s, z) / LOAD_STEPS,
+        loading = adhesion.adhesive_force_path(z, forces, step=_reference_approach(s) / LOAD_STEPS,
                                                on_state=on_load, **common)
         if loading.depth.size != forces.size:
             raise IndentError(f"indent {name}: the adhesive contact came off while loading; raise "
