@@ -15,7 +15,8 @@ import numpy as np
 from ..bem import DEFAULT_MAXITER
 from . import axes
 from .runs import parse_combo
-from .study_settings import StudySettings, force_grid, kind_of
+from .axes import kind_of
+from .study_settings import StudySettings, force_grid
 
 __all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
 

@@ -25,7 +25,6 @@ from typing import Mapping
 import numpy as np
 
 from . import axes
-from .axes import kind_of
 
 __all__ = [
     "force_grid",
@@ -245,11 +244,6 @@ class StudySettings:
         )
 
     @property
-    def kinds(self) -> set:
-        """The surface kinds of the sweep's radii: ``sphere`` (finite) and ``flat`` (``inf``)."""
-        return {kind_of(r) for r in self.radius}
-
-    @property
     def generated(self) -> bool:
         """Whether the study generates surfaces (``hurst`` and ``h_rms`` given)."""
         return bool(self.hurst)
@@ -262,10 +256,6 @@ class StudySettings:
     def force_scale(self) -> float:
         """``E* L²``: the force of a normalised load of 1 (force units)."""
         return self.e_star * self.grid.length ** 2
-
-    def stiffness_scale(self) -> float:
-        """``E* L``: the stiffness of a normalised stiffness of 1."""
-        return self.e_star * self.grid.length
 
     def coarse_study(self) -> "StudySettings":
         """The companion study of the grid error (``grid.coarse``): the same runs and surfaces on
