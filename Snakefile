@@ -64,7 +64,7 @@ rule all:
         # the adhesive runs' pull-off and figures (none without work_of_adhesion > 0)
         (
             [rules.adhesion.output, rules.adhesion_figures.output]
-            if study_adhesion.adhesive_runs(STUDY)
+            if ADHESIVE_RUNS
             else []
         ),
         measured_targets(),

@@ -68,17 +68,18 @@ def coarse_run_files(wildcards):
     return study_runs.run_paths(COARSE, COARSE_RUN_PATTERN)
 
 
+# The adhesive runs (work_of_adhesion > 0), in the order their merge expects; empty without.
+ADHESIVE_RUNS = study_adhesion.adhesive_runs(STUDY)
+
+
 def adhesive_run_files(wildcards):
-    """The run files of the adhesive runs (work_of_adhesion > 0), in the order their merge expects."""
-    return [
-        study_runs.run_path(run, RUN_PATTERN)
-        for run in study_adhesion.adhesive_runs(STUDY)
-    ]
+    """The run files of the adhesive runs."""
+    return [study_runs.run_path(run, RUN_PATTERN) for run in ADHESIVE_RUNS]
 
 
 def pull_off_table(wildcards):
     """The pull-off table where the study has adhesive runs (the claims rule's optional input)."""
-    return rules.adhesion.output.csv if study_adhesion.adhesive_runs(STUDY) else []
+    return rules.adhesion.output.csv if ADHESIVE_RUNS else []
 
 
 def grid_error_table(wildcards):
