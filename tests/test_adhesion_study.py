@@ -147,6 +147,29 @@ def test_claim_o_differs_when_the_pairs_fall_apart():
     assert _claim_rows("o", _table(rows))[0]["verdict"] == "differs", _claim_rows("o", _table(rows))
 
 
+def _two_hurst(factor):
+    """Rows of H = 0.5 and 0.8 on one curve of the parameter, the second H's ratios times *factor*."""
+    curve = lambda p: 1.0 / (1.0 + 2.0 * p)   # noqa: E731
+    return _table([{**_rough(p, curve(p) * (factor if hurst > 0.6 else 1.0), w), "hurst": hurst}
+                   for hurst in (0.5, 0.8) for w in (1e-3, 3e-3) for p in (0.05, 0.2, 0.5)])
+
+
+def test_claim_p_agrees_with_li_et_al_when_the_hurst_exponents_fall_apart():
+    """The second H 30 % above the first (intervals ±3 %): Johnson's parameter alone does not collapse them."""
+    row = _claim_rows("p", _two_hurst(1.3))[0]
+    assert row["verdict"] == "consistent", row
+
+
+def test_claim_p_differs_when_one_curve_holds_every_hurst_exponent():
+    row = _claim_rows("p", _two_hurst(1.0))[0]
+    assert row["verdict"] == "differs", row
+
+
+def test_claim_p_needs_two_hurst_exponents():
+    row = _claim_rows("p", _table([_rough(p, 1.0, w) for w in (1e-3, 3e-3) for p in (0.05, 0.2, 0.5)]))[0]
+    assert row["verdict"] == "untested", row
+
+
 def test_workflow_end_to_end(tmp_path):
     """A smooth and a rough sphere with and without adhesion through snakemake: the pull-off table,
     the merged file, the figures and claims (n)-(q)."""
