@@ -134,24 +134,40 @@ def test_claim_n_needs_a_preload_wider_than_the_pull_off_contact():
     assert _claim_rows("n", table)[0]["verdict"] == "untested", "a capped pull-off is no test of JKR"
 
 
+def _curve(parameter):
+    """One master curve of Johnson's parameter, 1 for the smooth sphere."""
+    return 1.0 / (1.0 + 2.0 * parameter)
+
+
+def _pair(w, factor=1.0, *, smooth=1.0, hurst=0.7):
+    """One (R, w) pair: a smooth sphere of ratio *smooth* and three rough ones on the master curve,
+    times *factor* (intervals ±3 %)."""
+    rows = [_rough(0.001, smooth, w, half=0.001)] + [_rough(p, smooth * _curve(p) * factor, w) for p in (0.1, 0.2, 0.5)]
+    return [{**r, "hurst": hurst} for r in rows]
+
+
 def test_claim_o_collapse_is_consistent_when_one_curve_holds_every_pair():
-    curve = lambda p: 1.0 / (1.0 + 2.0 * p)   # noqa: E731  (one master curve of the parameter)
-    rows = [_rough(p, curve(p), w) for w in (1e-3, 3e-3) for p in (0.05, 0.2, 0.5)]
+    rows = _pair(1e-3) + _pair(3e-3)
     assert _claim_rows("o", _table(rows))[0]["verdict"] == "consistent", _claim_rows("o", _table(rows))
 
 
 def test_claim_o_differs_when_the_pairs_fall_apart():
-    """The second work of adhesion 30 % above the first at every parameter (intervals ±3 %): no one curve."""
-    curve = lambda p: 1.0 / (1.0 + 2.0 * p)   # noqa: E731
-    rows = [_rough(p, curve(p) * (1.3 if w > 2e-3 else 1.0), w) for w in (1e-3, 3e-3) for p in (0.05, 0.2, 0.5)]
+    """The second work of adhesion's rough pull-offs 30 % above the first's (intervals ±3 %): no one curve."""
+    rows = _pair(1e-3) + _pair(3e-3, 1.3)
     assert _claim_rows("o", _table(rows))[0]["verdict"] == "differs", _claim_rows("o", _table(rows))
 
 
+def test_claim_o_takes_each_pull_off_over_its_own_smooth_spheres():
+    """The method's error differs between the pairs' resolutions (smooth ratios 1.11 and 1.05): it is not
+    roughness, so the pairs still collapse."""
+    rows = _pair(1e-3, smooth=1.11) + _pair(3e-3, smooth=1.05)
+    assert _claim_rows("o", _table(rows))[0]["verdict"] == "consistent", _claim_rows("o", _table(rows))
+
+
 def _two_hurst(factor):
-    """Rows of H = 0.5 and 0.8 on one curve of the parameter, the second H's ratios times *factor*."""
-    curve = lambda p: 1.0 / (1.0 + 2.0 * p)   # noqa: E731
-    return _table([{**_rough(p, curve(p) * (factor if hurst > 0.6 else 1.0), w), "hurst": hurst}
-                   for hurst in (0.5, 0.8) for w in (1e-3, 3e-3) for p in (0.05, 0.2, 0.5)])
+    """Two (R, w) pairs at H = 0.5 and 0.8 on one master curve, the second H's rough ratios times *factor*."""
+    return _table([r for hurst in (0.5, 0.8) for w in (1e-3, 3e-3)
+                   for r in _pair(w, factor if hurst > 0.6 else 1.0, hurst=hurst)])
 
 
 def test_claim_p_agrees_with_li_et_al_when_the_hurst_exponents_fall_apart():
@@ -166,7 +182,7 @@ def test_claim_p_differs_when_one_curve_holds_every_hurst_exponent():
 
 
 def test_claim_p_needs_two_hurst_exponents():
-    row = _claim_rows("p", _table([_rough(p, 1.0, w) for w in (1e-3, 3e-3) for p in (0.05, 0.2, 0.5)]))[0]
+    row = _claim_rows("p", _table(_pair(1e-3) + _pair(3e-3)))[0]
     assert row["verdict"] == "untested", row
 
 
