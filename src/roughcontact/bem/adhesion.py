@@ -27,7 +27,8 @@ pull-off (steps of ``0.01 a_c²/R``, ``a_c`` JKR's pull-off radius; the figures 
 ``0.035 a_c²/R``): +12.9 %, +6.0 %, +2.8 % and +0.6 % at 10, 20, 40 and 80 cells; without the path's
 sampling (the force just before each detachment, from the fixed contact's linear response) +13.5 %,
 +6.4 %, +3.5 % and +0.9 %. A coarser step misses more of the most tensile force between two detachments,
-the more so the fewer the cells. ``tests/test_adhesion_jkr_convergence.py`` checks 10 to 40 cells (80 cells on 200²: 4–5 minutes).
+the more so the fewer the cells. ``tests/test_adhesion_jkr_convergence.py`` checks 10 to 40 cells
+(80 cells on 200²: 4–5 minutes).
 
 The solve at a given approach ``d`` (displacement control): on the contact set ``C`` the surface
 follows the indenter, ``u_i = d − (z_i − min z)``, and the pressures solve ``K_CC p_C = u_C`` by
