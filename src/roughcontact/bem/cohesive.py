@@ -66,7 +66,7 @@ import numpy as np
 
 from .._validate import check_finite, check_finite_positive
 from ..errors import ConvergenceError, DomainTooSmallError
-from .adhesion import AdhesivePath
+from .adhesion import AdhesivePath, _box
 from .operators import FreeSpaceOperator, PeriodicOperator, operator_for
 
 __all__ = ["EDGE_RULES", "CohesivePath", "cohesive_path"]
@@ -114,12 +114,6 @@ class CohesivePath(AdhesivePath):
     fallback: np.ndarray
     cohesive_stress: float
     interaction_range: float
-
-
-def _box(mask: np.ndarray) -> tuple[slice, slice]:
-    """Rows and columns of the bounding box of the true cells of *mask* (not empty)."""
-    rows, cols = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
-    return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
 
 
 @dataclasses.dataclass(frozen=True)
