@@ -2,10 +2,12 @@
 ``adhesion/pull_off.csv`` (:mod:`roughcontact.study.adhesion.merge`).
 
 (n) The smooth sphere's pull-off equals JKR's ``−(3/2)πwR`` (Johnson, Kendall & Roberts, Proc. R.
-Soc. A 324 (1971) 301): rows with Johnson's parameter ``h_rms/δ_c ≤`` :data:`SMOOTH`; consistent
-when the ratio lies within the detachment criterion's own discretisation error at the resolution
-of the row (:func:`method_error`) plus :data:`SAMPLING_ALLOWANCE`; untested where the preload's
-contact is not wider than JKR's pull-off radius (:data:`PRELOAD`).
+Soc. A 324 (1971) 301): rows with Johnson's parameter ``h_rms/δ_c ≤`` :data:`SMOOTH`. The detachment
+criterion converges to JKR as the contact grows in cells, from above (+0.9 % at 80 cells); at the
+row's resolution its pull-off is ``1 + e`` times JKR's, ``e`` its discretisation error there
+(:func:`method_error`). Consistent when the ratio and its interval lie within
+:data:`SAMPLING_ALLOWANCE` of ``1 + e`` (a two-sided test: a ratio below JKR's differs too);
+untested where the preload's contact is not wider than JKR's pull-off radius (:data:`PRELOAD`).
 
 (o) The rough pull-off collapses on Johnson's parameter ``h_rms/δ_c`` (his sphere form of Fuller &
 Tabor's θ, Proc. R. Soc. A 345 (1975) 327): per H, the curves of the (R, w) pairs against
@@ -48,22 +50,23 @@ __all__ = ["SMOOTH", "SAMPLING_ALLOWANCE", "PRELOAD", "method_error"]
 
 #: a sphere counts as smooth when its roughness is this small against JKR's pull-off approach δ_c
 SMOOTH = 0.05
-#: added to the method's error in claim (n): the pull-off's sampling along the retract path (±1 %)
-#: and the residual scatter of nearly smooth seeds
+#: claim (n)'s tolerance around the method's own pull-off: the pull-off's sampling along the retract
+#: path (±1 %) and the residual scatter of nearly smooth seeds
 SAMPLING_ALLOWANCE = 0.03
 #: the preload's contact radius over JKR's pull-off radius that claim (n) needs (the retract path
 #: must start from a contact wider than the one at pull-off)
 PRELOAD = 1.1
-#: the detachment criterion's pull-off over JKR's minus 1 at JKR's pull-off radius of 10, 20 and 40
-#: cells (c = 2.1; measured 2026-11-24, roughcontact.bem.adhesion); held beyond 40 cells, where it is
-#: conservative: +0.6 % at 80 cells (measured 2026-11-25 with a finer retract step than these three, so not
-#: a point of this table)
-_CELLS, _ERROR = (10.0, 20.0, 40.0), (0.109, 0.052, 0.014)
+#: the detachment criterion's pull-off over JKR's minus 1 at JKR's pull-off radius of 10, 20, 40 and 80
+#: cells (c = 2.1; measured 2026-11-25, roughcontact.bem.adhesion): the force just before each detachment,
+#: i.e. the method's own pull-off without the sampling of a retract path. The study's retract refines its
+#: least force by sub-steps of about 0.003 a_c²/R, so its pull-off is that: the adhesion preset's smooth
+#: spheres, 1.111 at 12.4 cells and 1.079 at 17.9, against 1.113 and 1.075 from this table.
+_CELLS, _ERROR = (10.0, 20.0, 40.0, 80.0), (0.135, 0.064, 0.035, 0.009)
 
 
 def method_error(cells: float) -> float:
     """The detachment criterion's relative pull-off error at JKR's pull-off radius of *cells*
-    cells: the calibration's values, interpolated in ``ln cells`` (held beyond 40 cells); NaN
+    cells: the calibration's values, interpolated in ``ln cells`` (held beyond 80 cells); NaN
     below 10 cells (not resolved)."""
     if not cells >= _CELLS[0]:
         return math.nan
@@ -96,16 +99,14 @@ def _n(inputs):
                            1.0, f"untested: JKR's pull-off radius is {r['jkr_radius_cells']:.1f} cells (the detachment "
                            "criterion needs >= 10)", sweep=sweep, **where))
             continue
-        tolerance = error + SAMPLING_ALLOWANCE
-        worst = max(abs(r["pull_off_ratio"] - 1), *(abs(r[c] - 1) for c in ("pull_off_ratio_ci_low",
-                                                                           "pull_off_ratio_ci_high")
-                                                     if math.isfinite(r[c])))
-        verdict = "consistent" if worst <= tolerance else "differs"
+        expected = 1.0 + error
+        worst = max(abs(r[c] - expected) for c in ("pull_off_ratio", "pull_off_ratio_ci_low", "pull_off_ratio_ci_high")
+                    if math.isfinite(r[c]))
+        verdict = "consistent" if worst <= SAMPLING_ALLOWANCE else "differs"
         out.append(row("n", statement, r["pull_off_ratio"], r["pull_off_ratio_ci_low"], r["pull_off_ratio_ci_high"],
-                       1.0, f"{verdict}: within {tolerance:.1%} of JKR (the method's error {error:.1%} at "
-                       f"{r['jkr_radius_cells']:.0f} cells, + {SAMPLING_ALLOWANCE:.0%})" if verdict == "consistent"
-                       else f"{verdict}: {worst:.1%} from JKR, more than the method's {error:.1%} at "
-                       f"{r['jkr_radius_cells']:.0f} cells + {SAMPLING_ALLOWANCE:.0%}", sweep=sweep, **where))
+                       1.0, f"{verdict}: {worst:.1%} from the method's own {expected:.3f} x JKR at "
+                       f"{r['jkr_radius_cells']:.1f} cells ({'within' if verdict == 'consistent' else 'more than'} "
+                       f"{SAMPLING_ALLOWANCE:.0%})", sweep=sweep, **where))
     return out
 
 
