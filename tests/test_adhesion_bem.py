@@ -38,6 +38,29 @@ def _sphere_path(n: int, cells: float, *, length=1.0, e_star=1.0, radius=1.0, st
     return adhesive_path(z, depths, length=length, e_star=e_star, work_of_adhesion=w), force, d_jump
 
 
+def test_a_path_continues_from_a_contact_set():
+    """The unloading of a 10-cell sphere (64²) started from the contact set of the full path at its
+    30th approach: the same contact cells and, the pressures solved again from zero to the same
+    relative residual (1e-10), the same forces to 1e-8."""
+    n, a_c = 64, 10 / 64
+    w = a_c**3 * 8 / (9 * math.pi)
+    z = paraboloid(n, radius=1.0)
+    depths = np.concatenate([np.linspace(0, 2.5 * a_c**2, 20), np.linspace(2.5 * a_c**2, -0.6 * a_c**2, 40)])
+    sets = []
+    full = adhesive_path(z, depths, length=1.0, e_star=1.0, work_of_adhesion=w,
+                         on_state=lambda i, contact: sets.append(contact.copy()))
+    part = adhesive_path(z, depths[30:], length=1.0, e_star=1.0, work_of_adhesion=w, start=sets[30])
+    assert np.array_equal(part.contact_cells, full.contact_cells[30:]), "contact cells differ from the full path's"
+    np.testing.assert_allclose(part.force, full.force[30:], rtol=1e-8, atol=1e-8 * abs(full.pull_off_force),
+                               err_msg="forces differ from the full path's")
+
+
+def test_a_start_that_is_not_a_contact_set_is_named():
+    with pytest.raises(ValueError, match="start must be a boolean"):
+        adhesive_path(paraboloid(16, radius=1.0), [0.0], length=1.0, e_star=1.0, work_of_adhesion=1e-3,
+                      start=np.zeros((16, 16)))
+
+
 @pytest.fixture(scope="module")
 def paths():
     """JKR pull-off radius of 10 cells (64²) and 20 cells (128²)."""

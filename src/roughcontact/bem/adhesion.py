@@ -200,7 +200,7 @@ def _record(solver, d, contact, pressure, updates) -> dict:
 
 def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: float, periodic: bool = False,
                   constant: float = DETACHMENT_CONSTANT, tol: float = 1e-10, maxiter: int = 2000,
-                  max_updates: int = 2000, on_state=None) -> AdhesivePath:
+                  max_updates: int = 2000, on_state=None, start=None) -> AdhesivePath:
     """Press the indenter *z* (``n × n`` heights, lowest first) along the approaches *depths*
     (length, from first touch; rising for loading, falling for unloading, in any sequence) into
     a half-space that sticks by the detachment criterion (module docstring).
@@ -224,6 +224,10 @@ def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
     on_state : callable, optional
         Called as ``on_state(i, contact)`` with the contact set (boolean, ``n × n``) of each
         recorded approach ``i``, e.g. for the stiffness of the contact (the sets are not kept).
+    start : array_like of bool, optional
+        The contact set (``n × n``) to begin from instead of no contact: a state of an earlier path
+        (e.g. from *on_state*), to continue that path from there without replaying it; its
+        pressures are solved again at the first approach.
 
     Raises
     ------
@@ -233,6 +237,11 @@ def adhesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
     solver = _Solver(z, length=length, e_star=e_star, work_of_adhesion=work_of_adhesion, periodic=periodic,
                      constant=constant, tol=tol, maxiter=maxiter, max_updates=max_updates)
     contact, pressure = solver.empty()
+    if start is not None:
+        start = np.asarray(start)
+        if start.shape != contact.shape or start.dtype != bool:
+            raise ValueError(f"start must be a boolean {contact.shape} contact set, got {start.dtype} {start.shape}")
+        contact = start.copy()
     records, detach_depth = [], math.nan
     for d in np.asarray(depths, dtype=float):
         contact, pressure, updates = solver.settle(float(d), contact, pressure)

@@ -23,7 +23,8 @@ largest load above ``(9/4)πwR``); ``pull_off.csv`` reports the ratio of the two
    ``retract_force`` and ``retract_contact_cells`` over ``retract``. Once the last cell has let
    go the force is 0 (exactly: nothing touches).
 3. **Pull-off**: the least force of the retract path (the pull-off under load control), refined by
-   :data:`REFINE` sub-steps between the retract approaches around it, with the approach and the
+   :data:`REFINE` sub-steps between the retract approaches around it (continued from the retract
+   path's contact set at the first of them, not replayed from the start), with the approach and the
    contact radius ``√(A/π)`` there.
 
 Forces in ``e_star * length**2``, lengths in the study's length unit, like every run file.
@@ -92,18 +93,19 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
         end = -d_max if s.kind == "flat" else -RETRACT_REACH * jkr_critical_approach(
             radius=s.radius, e_star=E, work_of_adhesion=w)
         retract = np.linspace(d_max, end, RETRACT_STEPS)
-        path = adhesion.adhesive_path(z, np.r_[loading.depth, retract[1:]], **common)
+        sets = []
+        path = adhesion.adhesive_path(z, np.r_[loading.depth, retract[1:]], **common,
+                                      on_state=lambda i, contact: sets.append(contact.copy()))
         first = loading.depth.size - 1                       # the retract path starts at d_max
         r_force, r_cells = path.force[first:], path.contact_cells[first:]
         j = int(np.argmin(r_force))
         lo, hi = max(j - 1, 0), min(j + 1, RETRACT_STEPS - 1)
         fine = np.linspace(retract[lo], retract[hi], 2 * REFINE + 1)
-        refined = adhesion.adhesive_path(z, np.r_[loading.depth, retract[1:lo + 1], fine[1:]], **common)
+        refined = adhesion.adhesive_path(z, fine, **common, start=sets[first + lo])   # on from retract[lo]
     except ConvergenceError as exc:
         raise IndentError(f"indent {name}: the adhesive solve did not converge ({exc}); use more cells (grid.n) "
                           f"or loosen solver.tol") from exc
-    tail = slice(first + lo, None)
-    m = first + lo + int(np.argmin(refined.force[tail]))
+    m = int(np.argmin(refined.force))
     better = refined.force[m] <= r_force[j]
     cell = (L / z.shape[0]) ** 2
     logger.info("%s: pull-off F/(E*L^2) = %.4e at d = %.4g", name, min(refined.force[m], r_force[j]) / (E * L**2),
