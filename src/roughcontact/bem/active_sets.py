@@ -37,7 +37,7 @@ import numpy as np
 
 from .operators import DenseOperator
 
-__all__ = ["DENSE_BYTES", "DENSE_CELLS", "WORKING_MARGIN", "dense_limit", "equilibrium",
+__all__ = ["DENSE_BYTES", "DENSE_CELLS", "WORKING_MARGIN", "bounding_box", "dense_limit", "equilibrium",
            "solve_candidates", "solve_working_set"]
 
 #: Dense influence matrices on at most this many cells on a grid (or padded window)
@@ -56,13 +56,18 @@ _LOOSE_TOL = 1e-4
 _GROWTH = 4
 
 
+def bounding_box(mask: np.ndarray) -> tuple[slice, slice]:
+    """Rows and columns of the bounding box of the true cells of *mask* (not empty)."""
+    rows, cols = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
+    return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
+
+
 def _window_box(mask: np.ndarray, operator) -> tuple[slice, slice]:
     """Window covering ``mask``, grown to the largest size with the same FFT cost."""
     n = mask.shape[0]
     window = []
-    for axis in (1, 0):
-        lines = np.flatnonzero(mask.any(axis=axis))
-        lo, hi = int(lines[0]), int(lines[-1]) + 1
+    for side in bounding_box(mask):
+        lo, hi = side.start, side.stop
         size = operator.window_size(hi - lo)
         lo = max(0, min(lo - (size - (hi - lo)) // 2, n - size))
         window.append(slice(lo, lo + size))

@@ -53,6 +53,7 @@ import numpy as np
 
 from .._validate import check_finite_positive
 from ..errors import ConvergenceError
+from .active_sets import bounding_box
 from .operators import operator_for
 
 __all__ = ["DETACHMENT_CONSTANT", "AdhesivePath", "adhesive_force_path", "adhesive_path", "critical_stress"]
@@ -123,12 +124,6 @@ def _cg(apply, rhs, x, *, tol, maxiter):
     raise ConvergenceError(f"conjugate gradients did not reach tol = {tol:g} in {maxiter} iterations")
 
 
-def _box(mask: np.ndarray) -> tuple[slice, slice]:
-    """Rows and columns of the bounding box of the true cells of *mask* (not empty)."""
-    rows, cols = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
-    return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
-
-
 class _Solver:
     """The solve at one approach (module docstring) on one grid: what the displacement- and
     force-controlled paths share."""
@@ -143,7 +138,6 @@ class _Solver:
         self.sigma_c = critical_stress(e_star=e_star, work_of_adhesion=work_of_adhesion, spacing=self.spacing,
                                        constant=constant)
         self.operator = operator_for(n, length, e_star, periodic)
-        self.periodic = periodic
         self.heights = z - z.min()
         self.tol, self.maxiter, self.max_updates = tol, maxiter, max_updates
 
@@ -163,7 +157,7 @@ class _Solver:
                 if not contact.any():
                     return contact, pressure, update + 1
             target = (d - heights)[contact]
-            box = (slice(None), slice(None)) if self.periodic else _box(contact)
+            box = (slice(None), slice(None)) if operator.periodic else bounding_box(contact)
             inside = contact[box]
 
             def apply(values, inside=inside):

@@ -20,7 +20,7 @@ import numpy as np
 from scipy.sparse.linalg import LinearOperator, cg
 
 from ..errors import ConvergenceError
-from .active_sets import _window_box, dense_limit
+from .active_sets import _window_box, bounding_box, dense_limit
 from .operators import operator_for
 
 __all__ = ["INNER_RTOL", "punch_stiffness", "contact_stiffness"]
@@ -91,8 +91,7 @@ def punch_stiffness(operator, footprint: np.ndarray, tol: float) -> float:
     double-precision products from the ``p`` of the smallest ``‖r‖``.
     """
     if not operator.periodic and footprint.any():  # the convolution on the box is the same
-        rows, cols = (np.flatnonzero(footprint.any(axis=axis)) for axis in (1, 0))
-        footprint = footprint[rows[0]: rows[-1] + 1, cols[0]: cols[-1] + 1]
+        footprint = footprint[bounding_box(footprint)]
     count = int(np.count_nonzero(footprint))
     unit_depth = np.ones(count)
     punch = unit_depth / operator.self_coefficient
