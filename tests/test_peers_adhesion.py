@@ -47,28 +47,41 @@ CELLS = 3.0
 LAW_RESIDUAL = 1e-7
 
 
-@pytest.fixture(scope="module")
-def problem():
-    w = (4 * E_STAR / 3) * ELL**3 / (math.pi * RADIUS**2)
-    sigma = adhesion.maugis_cohesive_stress(LAMBDA, radius=RADIUS, e_star=E_STAR, work_of_adhesion=w)
-    unit = ELL**2 / RADIUS
-    heights = surfaces.rough_sphere(N, radius=RADIUS, hurst=0.7, h_rms=1e-3, length=LENGTH, seed=SEED)
-    return dict(heights=heights, depths=DEPTHS * unit, work_of_adhesion=w, cohesive_stress=sigma)
+def _problem(n: int, lam: float, ell: float, seed: int) -> dict:
+    """The rough sphere of *seed* on ``n²`` and the Dugdale law of Maugis' *lam* at his length *ell*
+    (``w`` from ``ℓ³ = πwR²/K``), the approaches DEPTHS in units of ``ℓ²/R``."""
+    w = (4 * E_STAR / 3) * ell**3 / (math.pi * RADIUS**2)
+    sigma = adhesion.maugis_cohesive_stress(lam, radius=RADIUS, e_star=E_STAR, work_of_adhesion=w)
+    heights = surfaces.rough_sphere(n, radius=RADIUS, hurst=0.7, h_rms=1e-3, length=LENGTH, seed=seed)
+    return dict(heights=heights, depths=DEPTHS * ell**2 / RADIUS, work_of_adhesion=w, cohesive_stress=sigma)
 
 
-@pytest.fixture(scope="module")
-def ours(problem):
+def _ours(problem):
     return cohesive_path(problem["heights"], problem["depths"], length=LENGTH, e_star=E_STAR,
                          work_of_adhesion=problem["work_of_adhesion"], cohesive_stress=problem["cohesive_stress"],
                          periodic=True, edge_rule="metastable")
 
 
-@pytest.fixture(scope="module")
-def tamaas(problem):
+def _tamaas(problem):
     peer = _load_peers().TamaasAdhesionPeer(problem["heights"], length=LENGTH, e_star=E_STAR,
                                             work_of_adhesion=problem["work_of_adhesion"],
                                             cohesive_stress=problem["cohesive_stress"], tol=1e-8, max_iter=2000)
     return peer.path(problem["depths"])
+
+
+@pytest.fixture(scope="module")
+def problem():
+    return _problem(N, LAMBDA, ELL, SEED)
+
+
+@pytest.fixture(scope="module")
+def ours(problem):
+    return _ours(problem)
+
+
+@pytest.fixture(scope="module")
+def tamaas(problem):
+    return _tamaas(problem)
 
 
 def _cell_tension(problem):
@@ -116,15 +129,8 @@ PULL_OFF_RTOL = 1e-3
 
 @pytest.fixture(scope="module")
 def half():
-    w = (4 * E_STAR / 3) * HALF_ELL**3 / (math.pi * RADIUS**2)
-    sigma = adhesion.maugis_cohesive_stress(HALF_LAMBDA, radius=RADIUS, e_star=E_STAR, work_of_adhesion=w)
-    heights = surfaces.rough_sphere(HALF_N, radius=RADIUS, hurst=0.7, h_rms=1e-3, length=LENGTH, seed=0)
-    depths = DEPTHS * HALF_ELL**2 / RADIUS
-    ours = cohesive_path(heights, depths, length=LENGTH, e_star=E_STAR, work_of_adhesion=w, cohesive_stress=sigma,
-                         periodic=True, edge_rule="metastable")
-    peer = _load_peers().TamaasAdhesionPeer(heights, length=LENGTH, e_star=E_STAR, work_of_adhesion=w,
-                                            cohesive_stress=sigma, tol=1e-8, max_iter=2000)
-    return ours, peer.path(depths)
+    problem = _problem(HALF_N, HALF_LAMBDA, HALF_ELL, seed=0)
+    return _ours(problem), _tamaas(problem)
 
 
 def test_pull_off_matches_tamaas_at_the_benchmarks_lambda(half):
