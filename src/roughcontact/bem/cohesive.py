@@ -66,7 +66,6 @@ import numpy as np
 
 from .._validate import check_finite, check_finite_positive
 from ..errors import ConvergenceError, DomainTooSmallError
-from .active_sets import bounding_box
 from .adhesion import AdhesivePath
 from .operators import FreeSpaceOperator, PeriodicOperator, operator_for
 
@@ -115,6 +114,12 @@ class CohesivePath(AdhesivePath):
     fallback: np.ndarray
     cohesive_stress: float
     interaction_range: float
+
+
+def _box(mask: np.ndarray) -> tuple[slice, slice]:
+    """Rows and columns of the bounding box of the true cells of *mask* (not empty)."""
+    rows, cols = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
+    return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -207,7 +212,7 @@ class _CohesiveSolver:
         more than half of it a side). Stops when ``max_(q>0) |g| ≤ tol·s`` and
         ``min_(S, q=0) g ≥ −tol·s``, ``s = max(δ_t, max_S |h − d|)``."""
         n = self.heights.shape[0]
-        box, operator = bounding_box(reach), self.windows
+        box, operator = _box(reach), self.windows
         if self.periodic and max(side.stop - side.start for side in box) > n // 2:
             box, operator = (slice(0, n), slice(0, n)), self.operator
         inside = reach[box]
@@ -244,6 +249,9 @@ class _CohesiveSolver:
             norm_old = norm
             response = operator(direction)
             curvature = float((response * direction)[support].sum())
+            if not curvature > 0.0:         # a uniform direction on the whole periodic grid
+                raise ConvergenceError(f"the cohesive contact covers the periodic grid at d = {d:g}: in full "
+                                       "contact the approach does not fix the mean pressure")
             step = float((gap * direction)[support].sum()) / curvature
             trial = q - step * direction
             q = np.maximum(trial, 0.0)
@@ -297,7 +305,7 @@ class _CohesiveSolver:
         n = self.heights.shape[0]
         if not reach.any():
             return self.heights <= d + self.range + shift, 0.0
-        rows, cols = bounding_box(reach)
+        rows, cols = _box(reach)
         inside = reach[rows, cols]
         pressure = np.where(inside, lift.on((rows, cols)) - self.sigma, 0.0)
         force = float(pressure.sum() * self.spacing**2)
@@ -309,7 +317,7 @@ class _CohesiveSolver:
         if not whole:
             bound = float(np.abs(pressure).sum()) * self._tail(margin + 1)
             candidates = self.heights <= d + self.range + shift + bound
-            c_rows, c_cols = bounding_box(candidates) if candidates.any() else (rows, cols)
+            c_rows, c_cols = _box(candidates) if candidates.any() else (rows, cols)
             del candidates
             window = [min(window[0], c_rows.start), max(window[1], c_rows.stop),
                       min(window[2], c_cols.start), max(window[3], c_cols.stop)]
@@ -359,7 +367,7 @@ class _CohesiveSolver:
 
 def cohesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: float, cohesive_stress: float,
                   periodic: bool = False, edge_rule: str = "energy", tol: float = 1e-10, maxiter: int = 2000,
-                  max_updates: int = 500) -> CohesivePath:
+                  max_updates: int = 500, on_state=None, until=None) -> CohesivePath:
     """Press the indenter *z* along the approaches *depths* into a half-space that sticks by the
     Maugis–Dugdale cohesive zone (module docstring).
 
@@ -388,6 +396,14 @@ def cohesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
         ``max(δ_t, max_S |h − d|)``) and iteration limit per solve.
     max_updates : int
         Most updates of the zone per approach.
+    on_state : callable, optional
+        Called as ``on_state(i, contact, zone)`` with the contact (``g = 0``) and the zone
+        (in range, not in contact) as boolean ``n × n`` masks of each approach ``i``, e.g. for the
+        stiffness of the contact (the masks are not kept).
+    until : callable, optional
+        Called as ``until(i, force, contact_cells)`` after each approach ``i``; the path ends after
+        the first approach for which it returns true (the later *depths* are not solved), e.g.
+        once the contact covers a given area.
 
     Returns
     -------
@@ -417,6 +433,10 @@ def cohesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
         reach, lift, force, updates, fallback = solver.settle(float(d), reach, lift)
         cells = int(np.count_nonzero(lift.values > 0.0))
         zone_cells = int(np.count_nonzero(reach)) - cells
+        if on_state is not None:
+            contact = np.zeros(reach.shape, dtype=bool)
+            contact[lift.box] = lift.values > 0.0
+            on_state(len(columns["depth"]), contact, reach & ~contact)
         if cells and not touched:
             touched = True
         elif touched and not cells and math.isnan(detach_depth):
@@ -427,6 +447,8 @@ def cohesive_path(z, depths, *, length: float, e_star: float, work_of_adhesion: 
                            ("zone_radius", math.sqrt((cells + zone_cells) * area / math.pi)),
                            ("fallback", fallback)):
             columns[key].append(value)
+        if until is not None and until(len(columns["depth"]) - 1, force, cells):
+            break
     arrays = {key: np.asarray(values) for key, values in columns.items()}
     pull_off = float(arrays["force"].min()) if arrays["force"].size else math.nan
     return CohesivePath(**arrays, pull_off_force=pull_off, detach_depth=detach_depth,
