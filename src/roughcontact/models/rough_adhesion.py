@@ -57,7 +57,7 @@ from .._validate import check_finite_positive
 
 __all__ = ["FullerTaborPullOff", "StickinessCriterion", "fuller_tabor_force", "fuller_tabor_parameter",
            "fuller_tabor_pull_off", "jkr_critical_approach", "johnson_rough_sphere_parameter",
-           "pastewka_robbins_stickiness"]
+           "pastewka_robbins_stickiness", "STICKINESS_RANGE_LIMIT"]
 
 _CBRT3 = 3.0 ** (1 / 3)
 #: ``â`` where JKR's displacement-controlled branch ends (``dδ/da = 0``): ``â³ = 1/9``
@@ -67,6 +67,9 @@ _A_END = 3.0 ** (-2 / 3)
 _TAIL = 12.0
 #: separations scanned for the least force before the bounded minimisation
 _SCAN = 121
+#: the largest ``Δr/g₀`` of Pastewka & Robbins' derivation (an interaction range short against the
+#: gaps that open at the edge of a contact)
+STICKINESS_RANGE_LIMIT = 0.1
 
 
 def _check_material(e_star, work_of_adhesion):
@@ -201,7 +204,7 @@ class StickinessCriterion:
     range_ratio : float
         ``Δr/g₀``.
     valid : bool
-        ``Δr/g₀ < 0.1``, where the criterion was derived.
+        ``Δr/g₀ <`` :data:`STICKINESS_RANGE_LIMIT`, where the criterion was derived.
     """
 
     number: float
@@ -224,4 +227,4 @@ def pastewka_robbins_stickiness(*, rms_slope: float, rms_curvature: float, inter
     number = slope * e_star * reach / (2 * work_of_adhesion) * (slope**2 / (curvature * reach)) ** (2 / 3)
     g0 = 16 / 3 * slope**2 / curvature
     return StickinessCriterion(number=number, sticky=number < 1, g0=g0, range_ratio=reach / g0,
-                               valid=reach / g0 < 0.1)
+                               valid=reach / g0 < STICKINESS_RANGE_LIMIT)
