@@ -20,6 +20,7 @@ include: "workflow/rules/analysis.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/measured.smk"
 include: "workflow/rules/adhesion.smk"
+include: "workflow/rules/stickiness.smk"
 
 
 localrules:
@@ -35,6 +36,8 @@ localrules:
     grid_error,
     adhesion,
     adhesion_figures,
+    stickiness,
+    stickiness_figures,
     measured_surface,
     measured_merge,
     measured_spectrum,
@@ -65,6 +68,12 @@ rule all:
         (
             [rules.adhesion.output, rules.adhesion_figures.output]
             if ADHESIVE_RUNS
+            else []
+        ),
+        # Pastewka & Robbins' stickiness (none without the config's stickiness section)
+        (
+            [rules.stickiness.output, rules.stickiness_figures.output]
+            if STICKINESS is not None
             else []
         ),
         measured_targets(),

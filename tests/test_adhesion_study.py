@@ -193,12 +193,14 @@ def test_claim_p_needs_two_hurst_exponents():
 
 
 def test_workflow_end_to_end(tmp_path):
-    """A smooth and a rough sphere with and without adhesion through snakemake: the pull-off table,
-    the merged file, the figures and claims (n)-(q)."""
+    """A smooth and a rough sphere with and without adhesion through snakemake, and a stickiness
+    sweep of two flat surfaces at two numbers: the pull-off table, the merged file, the figures,
+    the stickiness table and claims (n)-(q)."""
     config = {"grid": {"n": 65}, "hurst": [0.7], "radius": [0.5], "h_rms": [1e-5, 5e-3],
               "work_of_adhesion": [0.0, 3e-3], "seeds": 2,
               "forces": {"sphere": {"from": 1e-4, "to": 1.6e-2, "count": 3}},
-              "fit": {"zeta": {"min_cells": 10, "bootstrap": 200}}}
+              "fit": {"zeta": {"min_cells": 10, "bootstrap": 200}},
+              "stickiness": {"n": 64, "cutoff": 4, "seeds": 2, "number": [0.3, 1000.0], "steps": 12}}
     (tmp_path / "c.yaml").write_text(yaml.safe_dump(config))
     proc = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--cores", "2", "-q",
                            "--configfile", "c.yaml", "-d", str(tmp_path)], cwd=tmp_path, capture_output=True,
@@ -211,3 +213,7 @@ def test_workflow_end_to_end(tmp_path):
     assert set(rows["claim"]) >= {"n", "o", "p", "q"}, sorted(set(rows["claim"]))
     for name in ("paths.png", "pull_off.png"):
         assert (tmp_path / "results" / "adhesion_figures" / name).stat().st_size > 0, name
+    sticky = pd.read_csv(tmp_path / "results" / "stickiness" / "stickiness.csv")
+    assert list(sticky["number"]) == [0.3, 1000.0], sticky
+    assert set(rows.loc[rows["claim"] == "q", "verdict"]) <= {"consistent", "differs", "untested"}, rows
+    assert (tmp_path / "results" / "stickiness_figures" / "loading.png").stat().st_size > 0, "stickiness figure"

@@ -131,6 +131,7 @@ rule claims:
         stiffness=rules.merge.output.stiffness,
         exponents=rules.exponents.output.csv,
         pull_off=pull_off_table,
+        stickiness=stickiness_table,
     output:
         csv=report(
             "results/claims.csv",

@@ -22,6 +22,7 @@ from roughcontact.study import (
 )  # noqa: E402
 from roughcontact.study.study_settings import StudySettings, coarse_config  # noqa: E402
 from roughcontact.study.adhesion import merge as study_adhesion  # noqa: E402
+from roughcontact.study.stickiness import StickinessSettings  # noqa: E402
 from roughcontact.study.measured import config as measured_inputs  # noqa: E402
 
 try:
@@ -80,6 +81,32 @@ def adhesive_run_files(wildcards):
 def pull_off_table(wildcards):
     """The pull-off table where the study has adhesive runs (the claims rule's optional input)."""
     return rules.adhesion.output.csv if ADHESIVE_RUNS else []
+
+
+# The stickiness sweep (the config's stickiness section; None without it) and its runs.
+STICKINESS = StickinessSettings.of(config)
+# (the stickiness_run rule's output: one run file per (H, N) combination and seed)
+STICKINESS_PATTERN = "results/stickiness_run/{combination}/seed{seed}.nc"
+
+
+def stickiness_run_files(wildcards):
+    """The run files of the stickiness sweep, in the order its merge expects."""
+    return [
+        STICKINESS_PATTERN.format(combination=job.combination, seed=job.seed)
+        for job in STICKINESS.jobs()
+    ]
+
+
+def stickiness_job(wildcards):
+    """The stickiness run of a job's wildcards (fails naming the sweep's runs for others)."""
+    if STICKINESS is None:
+        raise ValueError("the config has no stickiness section: no stickiness runs")
+    return STICKINESS.job(wildcards.combination, wildcards.seed)
+
+
+def stickiness_table(wildcards):
+    """The stickiness table where the config has a stickiness section (the claims rule's optional input)."""
+    return rules.stickiness.output.csv if STICKINESS is not None else []
 
 
 def grid_error_table(wildcards):

@@ -148,6 +148,11 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
         raise ConfigError(f"config key 'fit.slopes.window' = {window} is not allowed; allowed: an odd integer >= 3",
                           key="fit.slopes.window")
     resolve_inputs(cfg, base_dir)
+    sticky = cfg.get("stickiness")
+    if sticky is not None and sticky["cutoff"] > sticky["n"] / 2:
+        raise ConfigError(f"config key 'stickiness.cutoff' = {sticky['cutoff']:g} cells is not allowed; allowed: "
+                          f"2 <= cutoff <= stickiness.n/2 = {sticky['n'] / 2:g} (the shortest wavelength the grid "
+                          "holds)", key="stickiness.cutoff")
     if bool(cfg["hurst"]) != bool(cfg["h_rms"]):
         empty = "hurst" if not cfg["hurst"] else "h_rms"
         raise ConfigError(f"config key '{empty}' is empty but '{'h_rms' if empty == 'hurst' else 'hurst'}' is not; "

@@ -9,10 +9,13 @@ from __future__ import annotations
 
 import dataclasses
 
+import numpy as np
+
 from .axes import AXES
 
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "RETRACT_VARIABLES",
-           "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run"]
+           "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
+           "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "write_stickiness_run"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)
 TITLE = "roughcontact indentation run"
@@ -64,6 +67,32 @@ PULL_OFF_VARIABLES = {
     "pull_off_depth": Variable("f8", "approach at the pull-off force", "length"),
     "pull_off_contact_radius": Variable("f8", "contact radius sqrt(A/pi) at the pull-off force", "length"),
 }
+
+#: the ``title`` attribute that marks a stickiness run file (:mod:`roughcontact.study.stickiness`)
+STICKINESS_TITLE = "roughcontact stickiness run"
+#: per-approach variables of a stickiness run's loading path (dimension ``approach``)
+STICKINESS_VARIABLES = {
+    "depth": Variable("f8", "approach from first touch (displacement control; negative: apart)", "length"),
+    "force": Variable("f8", "normal force, the cohesive zone's tension included (negative: tensile)",
+                      "e_star * length**2"),
+    "contact_cells": Variable("i8", "number of grid cells in contact (gap 0)", "1"),
+    "zone_cells": Variable("i8", "number of grid cells in the cohesive zone (gap below the range, not in contact)",
+                           "1"),
+}
+#: scalars of a stickiness run: its surface, its interaction and its loading slope
+STICKINESS_SCALARS = {
+    "rms_slope": Variable("f8", "rms gradient h' of the surface", "1"),
+    "rms_curvature": Variable("f8", "rms of the mean curvature (Laplacian of h)/2 of the surface, h''", "1/length"),
+    "interaction_range": Variable("f8", "range dr of the Maugis-Dugdale interaction", "length"),
+    "work_of_adhesion": Variable("f8", "work of adhesion w", "e_star * length"),
+    "pastewka_robbins_number": Variable("f8", "Pastewka & Robbins' number (h'E* dr/(2w)) (h'^2/(h'' dr))^(2/3)",
+                                        "1"),
+    "range_ratio": Variable("f8", "dr/g0, g0 = (16/3) h'^2/h''", "1"),
+    "loading_slope": Variable("f8", "dF/dA of the loading with 0 < A <= stickiness.area L^2, in units of h'E* "
+                                    "(negative: sticky)", "1"),
+}
+#: the approach coordinate of a stickiness run
+APPROACH_ATTRS = {"long_name": "step of the loading path", "units": "1"}
 
 #: scalar variables of a run file: (NetCDF type, long name, units)
 SCALARS = {
@@ -148,3 +177,23 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str, units: dic
                 v = nc.createVariable(name, "f8", ("force",))
                 v[:] = values
                 v.setncatts(var_attrs)
+
+
+def write_stickiness_run(path, out: dict, *, attrs: dict) -> None:
+    """Write one stickiness run (NetCDF4, atomic): the arrays of :data:`STICKINESS_VARIABLES` over
+    ``approach`` and the scalars of :data:`STICKINESS_SCALARS` from *out*
+    (:func:`roughcontact.study.stickiness.stickiness_run`), with the global *attrs*."""
+    import xarray as xr
+
+    from . import provenance
+
+    data = {name: (("approach",), np.asarray(out[name]).astype(meta.dtype),
+                   {"long_name": meta.long_name, "units": meta.units})
+            for name, meta in STICKINESS_VARIABLES.items()}
+    data.update({name: ((), np.asarray(out[name], dtype=meta.dtype), {"long_name": meta.long_name,
+                                                                        "units": meta.units})
+                 for name, meta in STICKINESS_SCALARS.items()})
+    ds = xr.Dataset(data, coords={"approach": ("approach", np.arange(len(out["force"])), APPROACH_ATTRS)},
+                    attrs={**attrs, "title": STICKINESS_TITLE})
+    with provenance.atomic_path(path) as tmp:
+        ds.to_netcdf(tmp, engine="netcdf4")

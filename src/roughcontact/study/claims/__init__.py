@@ -74,7 +74,7 @@ def __getattr__(name: str):
 
 
 def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, exponents=None,
-                 zeta_replicates=None, adhesion=None):
+                 zeta_replicates=None, adhesion=None, stickiness=None):
     """``claims.csv``: one row per quantitative claim (every registered :class:`Claim` whose
     inputs are given) and per combination it is tested on, with the measured value, its 95 %
     interval, the paper's value, the verdict and the sweep and loads it rests on; ordered by
@@ -82,7 +82,8 @@ def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, expone
     import pandas as pd
 
     inputs = ClaimInputs(cross=cross, replicates=reps, zeta=zeta_df, study=StudySettings.of(study), groups=groups,
-                         exponents=exponents, zeta_replicates=zeta_replicates, adhesion=adhesion)
+                         exponents=exponents, zeta_replicates=zeta_replicates, adhesion=adhesion,
+                         stickiness=stickiness)
     rows = []
     for claim in claims().values():
         if all(getattr(inputs, need) is not None for need in claim.needs):
@@ -99,10 +100,11 @@ CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per s
 
 
 def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
-               pull_off_csv=None):
+               pull_off_csv=None, stickiness_csv=None):
     """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
-    runs, the local exponents and the adhesive runs' pull-off table (*pull_off_csv*, or ``None``
-    without adhesive runs) -> claims.csv and the same table as an HTML page for the report
+    runs, the local exponents, the adhesive runs' pull-off table (*pull_off_csv*, or ``None``
+    without adhesive runs) and the stickiness table (*stickiness_csv*, or ``None`` without the
+    config's ``stickiness`` section) -> claims.csv and the same table as an HTML page for the report
     (:mod:`roughcontact.study.tables`)."""
     import pandas as pd
     import xarray as xr
@@ -114,7 +116,8 @@ def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_
         exponents = pd.read_csv(exponents_csv) if Path(exponents_csv).stat().st_size > 1 else pd.DataFrame()
         table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), study, read_groups(stiffness_nc), exponents,
                              zds["zeta_replicates"].load(),
-                             adhesion=pd.read_csv(pull_off_csv) if pull_off_csv else None)
+                             adhesion=pd.read_csv(pull_off_csv) if pull_off_csv else None,
+                             stickiness=pd.read_csv(stickiness_csv) if stickiness_csv else None)
     write_csv(table, out_csv)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
                      first=("claim", "statement", "verdict", "measured", "ci_low", "ci_high", "paper_value", "reason"))

@@ -27,13 +27,14 @@ what is tested is the half of their finding that needs none: Johnson's ``h_rms/�
 different H; consistent with Li et al. when the largest distance exceeds 1 (no one curve of
 ``h_rms/δ_c`` for all H), differs when at most 1. Needs two or more H with four combinations each.
 
-(q) Pastewka & Robbins' stickiness (PNAS 111 (2014) 3298) on the flat adhesive runs: the surfaces
-are sticky when ``(h′E*Δr/(2w))(h′²/(h″Δr))^(2/3) < 1``, with ``h′`` the rms gradient and ``h″``
-the rms mean curvature ``∇²h/2`` of the generated surface (exact spectral sums,
-:func:`roughcontact.surfaces.moments.self_affine_moments`) and ``Δr = w/σ_c`` the range of a
-Dugdale interaction of the same work and peak stress as the detachment criterion
-(``σ_c = √(cE*w/Δx)``); consistent when the prediction and the measured majority of seeds
-(sticky: a tensile pull-off) agree; untested outside the criterion's range ``Δr/g₀ < 0.1``.
+(q) Pastewka & Robbins' stickiness (PNAS 111 (2014) 3298) on the stickiness runs
+(:mod:`roughcontact.study.stickiness`): nominally flat surfaces pressed by displacement into a
+half-space with a Maugis–Dugdale interaction of range ``Δr`` and work ``w`` are sticky — the
+loading slope ``dF/dA`` is negative — when ``N = (h′E*Δr/(2w))(h′²/(h″Δr))^(2/3) < 1``. One row per
+(H, N): the mean slope over seeds with its interval; consistent when the interval lies wholly on
+the predicted side of 0 (below for ``N < 1``), differs when wholly on the other, untested when it
+contains 0 or outside the criterion's range ``Δr/g₀ <`` :data:`~roughcontact.models.rough_adhesion.
+STICKINESS_RANGE_LIMIT`.
 """
 from __future__ import annotations
 
@@ -41,9 +42,8 @@ import math
 
 import numpy as np
 
-from ...bem.adhesion import critical_stress
-from ...models.rough_adhesion import pastewka_robbins_stickiness
-from ...surfaces.moments import self_affine_moments
+from ...models.rough_adhesion import STICKINESS_RANGE_LIMIT
+from ..statistics import verdict_bound
 from .registry import Claim, register, row
 
 __all__ = ["SMOOTH", "SAMPLING_ALLOWANCE", "PRELOAD", "method_error"]
@@ -216,32 +216,28 @@ def _p(inputs):
 
 
 def _q(inputs):
-    statement = "flat surfaces are sticky when Pastewka & Robbins' number < 1"
-    table = inputs.adhesion
-    flat = table[table["kind"] == "flat"] if len(table) else table
-    if not len(flat):
-        return [row("q", statement, math.nan, math.nan, math.nan, 1.0, "untested: no flat adhesive runs")]
-    study = inputs.study
-    n, length, e_star = study.grid.n, study.grid.length, study.e_star
+    statement = "flat surfaces are sticky (dF/dA < 0 while loading) when Pastewka & Robbins' number N < 1"
+    table = inputs.stickiness
+    if table is None or not len(table):
+        return [row("q", statement, math.nan, math.nan, math.nan, 1.0,
+                    "untested: no stickiness runs (the config's stickiness section)")]
     out = []
-    for _, r in flat.iterrows():
-        moments = self_affine_moments(r["hurst"], h_rms=r["h_rms"], n=n, length=length)
-        slope = math.sqrt(2 * moments.m2)                    # rms |grad h|
-        curvature = 0.5 * math.sqrt(8 * moments.m4 / 3)      # rms of the mean curvature (Laplacian)/2
-        w = r["work_of_adhesion"]
-        reach = w / critical_stress(e_star=e_star, work_of_adhesion=w, spacing=length / n)
-        criterion = pastewka_robbins_stickiness(rms_slope=slope, rms_curvature=curvature, interaction_range=reach,
-                                                e_star=e_star, work_of_adhesion=w)
-        sticky = r["sticky_fraction"] >= 0.5
-        where = {a: r[a] for a in ("hurst", "h_rms", "work_of_adhesion")}
-        if not criterion.valid:
-            verdict = f"untested: dr/g0 = {criterion.range_ratio:.2g} >= 0.1 (outside the criterion's range)"
+    for _, r in table.iterrows():
+        predicted = r["number"] < 1.0
+        low, high = r["loading_slope_ci_low"], r["loading_slope_ci_high"]
+        if not r["range_ratio"] < STICKINESS_RANGE_LIMIT:
+            verdict = f"untested: dr/g0 = {r['range_ratio']:.2g} >= {STICKINESS_RANGE_LIMIT:g} (outside the criterion's range)"
         else:
-            verdict = (f"{'consistent' if sticky == criterion.sticky else 'differs'}: predicted "
-                       f"{'sticky' if criterion.sticky else 'not sticky'}, {r['sticky_fraction']:.0%} of the seeds "
-                       "pull off under tension")
-        out.append(row("q", statement, criterion.number, math.nan, math.nan, 1.0, verdict,
-                       sweep=f"flat, {int(r['n_seeds'])} seeds, n = {n}", **where))
+            verdict = verdict_bound(0.0, low, high, side="below" if predicted else "above")
+            verdict = (f"{verdict.partition(':')[0]}: predicted {'sticky' if predicted else 'not sticky'}; "
+                       f"dF/dA = {r['loading_slope']:.3g} h'E* [{low:.3g}, {high:.3g}], "
+                       f"{r['sticky_fraction']:.0%} of the seeds sticky"
+                       + (f" ({verdict.partition(': ')[2]})" if verdict.startswith("untested") else ""))
+        out.append(row("q", statement, r["loading_slope"], low, high, 0.0, verdict,
+                       sweep=(f"flat, periodic, n = {int(r['n'])}, {int(r['n_seeds'])} seeds, h' = {r['rms_slope']:g}, "
+                              f"dr/g0 = {r['range_ratio']:.3g}"),
+                       loads="dF/dA in units of h'E*; paper value: the sign change at N = 1",
+                       note=f"N = {r['number']:g}", hurst=r["hurst"]))
     return out
 
 
@@ -249,4 +245,4 @@ register(Claim("n", "the smooth sphere's pull-off equals JKR's", _n, needs=("adh
 register(Claim("o", "the rough pull-off collapses on Johnson's h_rms/delta_c", _o, needs=("adhesion",)))
 register(Claim("p", "Li, Pohrt & Popov: Johnson's parameter alone does not collapse random roughness", _p,
                needs=("adhesion",)))
-register(Claim("q", "Pastewka & Robbins' stickiness criterion on flat surfaces", _q, needs=("adhesion",)))
+register(Claim("q", "Pastewka & Robbins' stickiness criterion on flat surfaces", _q, needs=("stickiness",)))

@@ -38,6 +38,9 @@ class ClaimInputs:
     adhesion : pandas.DataFrame or None
         The pull-off table of the adhesive runs (``adhesion/pull_off.csv``,
         :mod:`roughcontact.study.adhesion.merge`); ``None`` without adhesive runs.
+    stickiness : pandas.DataFrame or None
+        The stickiness table (``stickiness/stickiness.csv``, :mod:`roughcontact.study.stickiness.merge`);
+        ``None`` without the config's ``stickiness`` section.
     """
 
     cross: object
@@ -48,6 +51,7 @@ class ClaimInputs:
     exponents: object = None
     zeta_replicates: object = None
     adhesion: object = None
+    stickiness: object = None
 
 
 @dataclasses.dataclass(frozen=True)

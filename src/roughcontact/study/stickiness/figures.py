@@ -1,0 +1,50 @@
+"""The report's stickiness figure: load against contact area of the stickiness runs.
+
+One panel per Hurst exponent: ``F/(h′E*L²)`` against ``A/L²`` along the loading of every seed, from
+the surfaces apart (0, 0), one colour per Pastewka–Robbins number ``N`` (labelled with the mean
+loading slope ``F/A`` at ``A* = stickiness.area``, dotted). A curve that reaches ``A*`` under tension
+is sticky.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..plotting import pyplot, save_png
+from .settings import StickinessSettings
+
+__all__ = ["run_stickiness_figures"]
+
+
+def run_stickiness_figures(cfg, run_files, out_loading) -> None:
+    """``stickiness_figures`` rule: the stickiness run files (one per
+    :meth:`~.settings.StickinessSettings.jobs`, in its order) -> the load–area figure (module
+    docstring)."""
+    import xarray as xr
+
+    s = StickinessSettings.of(cfg)
+    plt = pyplot()
+    runs = {}
+    for job, path in zip(s.jobs(), run_files):
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            runs[job] = ds.load()
+    cells = float(s.n * s.n)
+    scale = s.rms_slope * s.e_star * s.length**2
+    fig, panels = plt.subplots(1, len(s.hurst), figsize=(5.2 * len(s.hurst), 4.0), squeeze=False)
+    for ax, hurst in zip(panels.flat, s.hurst):
+        for j, number in enumerate(s.number):
+            mine = [run for job, run in runs.items() if job.hurst == hurst and job.number == number]
+            slope = float(np.mean([float(run["loading_slope"]) for run in mine]))
+            for k, run in enumerate(mine):
+                area = np.r_[0.0, run["contact_cells"].values / cells]
+                force = np.r_[0.0, run["force"].values / scale]
+                ax.plot(area, force, ".-", color=f"C{j}", lw=0.8, ms=2,
+                        label=f"N = {number:g}: F/A = {slope:.3g} h'E* at A*" if k == 0 else None)
+        ax.axhline(0.0, color="0.6", lw=0.5)
+        ax.axvline(s.area, color="k", lw=0.5, ls=":")
+        ax.set(xlabel="contact area A / L²", ylabel="F / (h' E* L²)",
+               title=f"H {hurst:g}, n = {s.n}, h' = {s.rms_slope:g}, Δr/g₀ = {s.range_ratio:g}, every seed")
+        ax.title.set_fontsize(8)
+        ax.legend(fontsize=7)
+    fig.suptitle("loading into a Dugdale half-space; sticky (F < 0 at A*) predicted for N < 1", fontsize=9)
+    fig.tight_layout()
+    save_png(fig, out_loading)

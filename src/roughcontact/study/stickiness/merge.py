@@ -1,0 +1,100 @@
+"""The stickiness runs merged (``stickiness.nc``) and their table (``stickiness.csv``).
+
+The merged file has the runs' scalars over ``(hurst, number, seed)``
+(:data:`roughcontact.study.runfile.STICKINESS_SCALARS`); each run's loading path, which ends where
+its contact passes ``stickiness.area`` and so has a length of its own, stays in its run file
+(``results/stickiness_run/``). The table has one row per (H, N):
+
+* ``loading_slope`` — the mean over seeds of ``dF/dA`` in units of ``h′E*`` (negative: sticky), with
+  its percentile bootstrap interval over seeds (``fit.zeta.bootstrap``, ``fit.zeta.confidence``);
+* ``sticky_fraction`` — the fraction of seeds with a negative slope;
+* ``pastewka_robbins_number``, ``range_ratio`` (``Δr/g₀``), ``interaction_range``, ``work_of_adhesion``,
+  ``rms_curvature`` — means over seeds (the number is the sweep's own at every seed);
+* ``predicted_sticky`` — Pastewka & Robbins' prediction, ``N < 1``;
+* ``n``, ``n_seeds`` — the grid and the number of seeds.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...errors import MergeError
+from .. import provenance, runfile
+from ..statistics import bootstrap_indices, interval
+from .settings import StickinessSettings
+
+__all__ = ["merge_stickiness", "stickiness_table", "run_stickiness_merge"]
+
+_COORDS = {"hurst": {"long_name": "Hurst exponent H", "units": "1"},
+           "number": {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"},
+           "seed": {"long_name": "random seed of the surface", "units": "1"}}
+
+
+def merge_stickiness(s: StickinessSettings, paths):
+    """The scalars of the stickiness run files *paths* (one per :meth:`StickinessSettings.jobs`, in
+    its order) as one Dataset (module docstring). Raises :class:`~roughcontact.errors.MergeError`
+    naming a file that is not a stickiness run or not of the sweep's grid."""
+    import xarray as xr
+
+    jobs = s.jobs()
+    if len(paths) != len(jobs):
+        raise MergeError(f"the stickiness merge got {len(paths)} run files for {len(jobs)} runs")
+    shape = (len(s.hurst), len(s.number), s.seeds)
+    data = {}
+    for job, path in zip(jobs, paths):
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            if ds.attrs.get("title") != runfile.STICKINESS_TITLE:
+                raise MergeError(f"{path}: not a stickiness run (title {ds.attrs.get('title')!r}); delete it and "
+                                 "rerun snakemake")
+            if int(ds.attrs.get("grid_n", -1)) != s.n:
+                raise MergeError(f"{path}: a run on {ds.attrs.get('grid_n')}^2, the sweep has stickiness.n = "
+                                 f"{s.n}; delete it and rerun snakemake")
+            at = (s.hurst.index(job.hurst), s.number.index(job.number), job.seed)
+            for name, meta in runfile.STICKINESS_SCALARS.items():
+                data.setdefault(name, np.zeros(shape, dtype=meta.dtype))[at] = ds[name].values
+    dims = ("hurst", "number", "seed")
+    meta = runfile.STICKINESS_SCALARS
+    return xr.Dataset({name: (dims, values, {"long_name": meta[name].long_name, "units": meta[name].units})
+                       for name, values in data.items()},
+                      coords={"hurst": ("hurst", np.array(s.hurst), _COORDS["hurst"]),
+                              "number": ("number", np.array(s.number), _COORDS["number"]),
+                              "seed": ("seed", np.arange(s.seeds), _COORDS["seed"])},
+                      attrs={"grid_n": s.n, "area": s.area, "cutoff_cells": s.cutoff})
+
+
+def stickiness_table(ds, s: StickinessSettings):
+    """``stickiness.csv`` (module docstring) of the merged runs *ds*."""
+    import pandas as pd
+
+    indices = bootstrap_indices(s.seeds, s.bootstrap)
+    rows = []
+    for i, hurst in enumerate(s.hurst):
+        for j, number in enumerate(s.number):
+            slope = ds["loading_slope"].values[i, j]                   # (seed,)
+            low, high = interval(slope[indices].mean(1), s.confidence)
+            finite = slope[np.isfinite(slope)]
+            rows.append({
+                "hurst": hurst, "number": number, "loading_slope": float(np.mean(slope)),
+                "loading_slope_ci_low": low, "loading_slope_ci_high": high,
+                "sticky_fraction": float(np.mean(finite < 0)) if finite.size else math.nan,
+                **{name: float(ds[name].values[i, j].mean())
+                   for name in ("pastewka_robbins_number", "range_ratio", "interaction_range", "work_of_adhesion",
+                                "rms_curvature")},
+                "rms_slope": s.rms_slope, "predicted_sticky": bool(number < 1), "n": s.n, "n_seeds": s.seeds,
+            })
+    return pd.DataFrame(rows)
+
+
+def run_stickiness_merge(cfg, run_files, out_nc, out_csv) -> None:
+    """``stickiness`` rule: the stickiness run files -> ``stickiness.nc`` and ``stickiness.csv``."""
+    from ..io import write_csv
+
+    s = StickinessSettings.of(cfg)
+    ds = merge_stickiness(s, list(run_files))
+    ds.attrs.update(provenance.provenance_attrs(
+        config=s.config, title="roughcontact stickiness runs: loading slopes F/A at the area A*",
+        forces="e_star * length**2 (stickiness.csv: dF/dA in units of h'E*)"))
+    with provenance.atomic_path(out_nc) as tmp:
+        ds.to_netcdf(tmp, engine="netcdf4")
+    write_csv(stickiness_table(ds, s), out_csv)

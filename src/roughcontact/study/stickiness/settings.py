@@ -1,0 +1,103 @@
+"""The stickiness sweep of a configuration (its ``stickiness`` section), typed, and its jobs."""
+from __future__ import annotations
+
+import dataclasses
+import types
+from typing import Mapping
+
+__all__ = ["StickinessJob", "StickinessSettings"]
+
+
+@dataclasses.dataclass(frozen=True)
+class StickinessJob:
+    """One stickiness run: a surface (``hurst``, ``seed``) at one Pastewka–Robbins number."""
+
+    hurst: float
+    number: float
+    seed: int
+
+    @property
+    def combination(self) -> str:
+        """The name of its (H, N) combination in paths, e.g. ``H0.8_N0.5``."""
+        return f"H{self.hurst:g}_N{self.number:g}"
+
+
+@dataclasses.dataclass(frozen=True)
+class StickinessSettings:
+    """The ``stickiness`` section of a resolved configuration (the schema's descriptions).
+
+    Attributes
+    ----------
+    n : int
+        Grid points per side (periodic).
+    length, e_star : float
+        Side ``L`` of the surfaces (``grid.length``) and ``E*`` (``e_star``).
+    hurst, number : tuple of float
+        The Hurst exponents and Pastewka–Robbins numbers swept.
+    rms_slope : float
+        ``h′`` of every surface (dimensionless).
+    cutoff : float
+        Short-wavelength cutoff in cells.
+    range_ratio : float
+        ``Δr/g₀``.
+    seeds : int
+        Surfaces per (H, N): seeds ``0 … seeds−1``.
+    area : float
+        Contact fraction up to which a surface is loaded and its slope fitted.
+    steps : int
+        Approaches of a loading path.
+    tol, confidence, bootstrap :
+        The solver's tolerance (``solver.tol``, at most 1e-8) and the interval of the merged table
+        (``fit.zeta.confidence``, ``fit.zeta.bootstrap``).
+    config : mapping
+        The resolved configuration (provenance).
+    """
+
+    n: int
+    length: float
+    e_star: float
+    hurst: tuple
+    number: tuple
+    rms_slope: float
+    cutoff: float
+    range_ratio: float
+    seeds: int
+    area: float
+    steps: int
+    tol: float
+    confidence: float
+    bootstrap: int
+    config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
+                                        compare=False)
+
+    @classmethod
+    def of(cls, cfg) -> "StickinessSettings | None":
+        """The sweep of a resolved configuration (:func:`roughcontact.study.config.resolve_config`,
+        or a :class:`~roughcontact.study.study_settings.StudySettings`); ``None`` where it has no
+        ``stickiness`` section."""
+        cfg = getattr(cfg, "config", cfg)
+        section = cfg.get("stickiness")
+        if section is None:
+            return None
+        zeta = cfg["fit"]["zeta"]
+        return cls(n=int(section["n"]), length=float(cfg["grid"]["length"]), e_star=float(cfg["e_star"]),
+                   hurst=tuple(sorted(float(h) for h in section["hurst"])),
+                   number=tuple(sorted(float(x) for x in section["number"])),
+                   rms_slope=float(section["rms_slope"]), cutoff=float(section["cutoff"]),
+                   range_ratio=float(section["range_ratio"]), seeds=int(section["seeds"]),
+                   area=float(section["area"]), steps=int(section["steps"]),
+                   tol=min(float(cfg["solver"]["tol"]), 1e-8), confidence=float(zeta["confidence"]),
+                   bootstrap=int(zeta["bootstrap"]), config=types.MappingProxyType(dict(cfg)))
+
+    def jobs(self) -> list[StickinessJob]:
+        """Every run, by H, then N, then seed (the order the merge expects)."""
+        return [StickinessJob(h, x, s) for h in self.hurst for x in self.number for s in range(self.seeds)]
+
+    def job(self, combination: str, seed) -> StickinessJob:
+        """The run of a path's *combination* (``H0.8_N0.5``) and *seed*; ``KeyError`` naming the
+        combinations of the sweep for any other."""
+        for job in self.jobs():
+            if job.combination == combination and job.seed == int(seed):
+                return job
+        raise KeyError(f"no stickiness run {combination} seed {seed}; the sweep has "
+                       f"{sorted({j.combination for j in self.jobs()})} with seeds 0..{self.seeds - 1}")

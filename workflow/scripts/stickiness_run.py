@@ -1,0 +1,7 @@
+"""Snakemake `stickiness_run` job: one flat surface loaded into a Dugdale half-space -> its run file."""
+from roughcontact.study.logs import log_to
+from roughcontact.study.stickiness.run import run_stickiness_job
+
+snakemake = globals()["snakemake"]
+with log_to(snakemake.log[0]):
+    run_stickiness_job(snakemake.params.cfg, snakemake.params.job, snakemake.output.run)
