@@ -314,6 +314,35 @@ def test_cohesive_zone_update_on_a_window_is_the_whole_grids(periodic, monkeypat
     assert len(checked) == path.iterations.sum() and max(checked) < n * n / 16
 
 
+def _small_maugis_path(**options):
+    """A lambda = 1 sphere on 48^2 loaded over -1 ... 1.5 ell^2/R in 11 approaches."""
+    n, radius, ell = 48, 0.5, 6 / 48
+    w = (4 / 3) * ell**3 / (math.pi * radius**2)
+    sigma = adhesion.maugis_cohesive_stress(1.0, radius=radius, e_star=1.0, work_of_adhesion=w)
+    depths = np.linspace(-1.0, 1.5, 11) * ell**2 / radius
+    return cohesive_path(paraboloid(n, radius=radius, length=1.0), depths, length=1.0, e_star=1.0,
+                         work_of_adhesion=w, cohesive_stress=sigma, **options)
+
+
+def test_cohesive_path_until_ends_after_the_first_true_approach():
+    """until(i, force, cells) true once the contact passes 150 cells (the fifth of 11 approaches): the path is the full path's
+    prefix up to that approach, to the last bit (the same solves from the same states)."""
+    full = _small_maugis_path()
+    short = _small_maugis_path(until=lambda i, force, cells: cells > 150)
+    stop = int(np.argmax(full.contact_cells > 150))
+    assert short.depth.size == stop + 1, f"{short.depth.size} approaches, expected {stop + 1}"
+    np.testing.assert_array_equal(short.force, full.force[:stop + 1], err_msg="forces of the prefix")
+
+
+def test_cohesive_path_on_state_gets_the_contact_and_the_zone():
+    """The masks passed to on_state count the path's contact and zone cells at every approach."""
+    counts = []
+    path = _small_maugis_path(on_state=lambda i, contact, zone: counts.append(
+        (i, int(contact.sum()), int(zone.sum()), bool((contact & zone).any()))))
+    expected = [(i, int(c), int(z), False) for i, (c, z) in enumerate(zip(path.contact_cells, path.zone_cells))]
+    assert counts == expected, counts
+
+
 def test_cohesive_zone_at_the_grid_edge_is_named():
     with pytest.raises(DomainTooSmallError, match="edge of the free-space grid"):
         _maugis_sphere(0.05, 8, 32)

@@ -17,7 +17,7 @@ from roughcontact.models.rough_adhesion import STICKINESS_RANGE_LIMIT
 from roughcontact.study import claims, provenance, runfile
 from roughcontact.study.config import load_config, resolve_config, study_settings
 from roughcontact.study.stickiness import StickinessJob, StickinessSettings, loading_slope, stickiness_run
-from roughcontact.study.stickiness.merge import merge_stickiness, stickiness_table
+from roughcontact.study.stickiness.merge import merge_stickiness, stickiness_table, threshold
 from roughcontact.study.stickiness.run import stickiness_surface
 from roughcontact.surfaces.moments import spectral_moments
 
@@ -167,6 +167,7 @@ def test_the_table_has_the_mean_slope_inside_its_interval(tmp_path):
     assert -0.3 <= sticky["loading_slope_ci_low"] < -0.2 < sticky["loading_slope_ci_high"] <= -0.1, sticky
     assert sticky["sticky_fraction"] == 1.0, "every seed sticky"
     assert table[table["number"] == 3.0].iloc[0]["sticky_fraction"] == 0.0, "no seed sticky"
+    assert sticky["threshold"] == pytest.approx(math.sqrt(0.5 * 3.0), rel=1e-12), "mean slopes -0.2, +0.2"
 
 
 def test_the_merge_rejects_a_run_on_another_grid(tmp_path):
@@ -189,6 +190,7 @@ def test_the_merge_rejects_a_file_that_is_no_stickiness_run(tmp_path):
 def _q_rows(rows):
     base = {"hurst": 0.8, "sticky_fraction": 0.5, "pastewka_robbins_number": 1.0, "range_ratio": 0.05,
             "interaction_range": 1e-3, "work_of_adhesion": 1e-4, "rms_curvature": 2.0, "rms_slope": 0.1,
+            "threshold": math.nan, "threshold_ci_low": math.nan, "threshold_ci_high": math.nan,
             "n": 512, "n_seeds": 4}
     table = pd.DataFrame([{**base, **r} for r in rows])
     inputs = claims.ClaimInputs(cross=pd.DataFrame(), replicates=xr.Dataset(), zeta=pd.DataFrame(),
@@ -209,9 +211,35 @@ def test_claim_q_compares_the_sign_with_the_prediction(number, mean, verdict):
     assert row["verdict"] == verdict, row
 
 
+def test_claim_q_makes_no_prediction_at_the_threshold_itself():
+    row = _q_rows([_slope(1.0, -0.1, 0.05)])[0]
+    assert row["verdict"] == "untested" and "threshold" in row["reason"], row
+
+
 def test_claim_q_is_untested_outside_the_criterions_range():
     row = _q_rows([_slope(0.5, -0.1, 0.05, range_ratio=2 * STICKINESS_RANGE_LIMIT)])[0]
     assert row["verdict"] == "untested" and "dr/g0" in row["reason"], row
+
+
+@pytest.mark.parametrize("low, high, verdict", [(0.7, 1.4, "consistent"), (1.3, 2.0, "differs")])
+def test_claim_q_compares_the_measured_threshold_with_one(low, high, verdict):
+    crossing = {"threshold": 0.5 * (low + high), "threshold_ci_low": low, "threshold_ci_high": high}
+    rows = _q_rows([_slope(0.5, -0.1, 0.05, **crossing), _slope(3.0, 0.1, 0.05, **crossing)])
+    assert [r["verdict"] for r in rows if r["note"] == "threshold"] == [verdict], rows
+
+
+def test_claim_q_threshold_is_untested_without_a_sign_change():
+    rows = _q_rows([_slope(0.5, 0.1, 0.05), _slope(3.0, 0.2, 0.05)])
+    assert [r["verdict"] for r in rows if r["note"] == "threshold"] == ["untested"], rows
+
+
+def test_threshold_interpolates_in_ln_n():
+    """Slopes -1 at N = 1 and +1 at N = 4: the sign changes half-way in ln N, at N = 2."""
+    assert threshold([0.5, 1.0, 4.0], [-2.0, -1.0, 1.0]) == pytest.approx(2.0, rel=1e-12), "ln-N midpoint"
+
+
+def test_threshold_is_nan_without_a_sign_change():
+    assert math.isnan(threshold([0.5, 1.0], [0.1, 0.2])), "no crossing"
 
 
 def test_claim_q_has_no_rows_without_a_stickiness_table():

@@ -30,11 +30,14 @@ different H; consistent with Li et al. when the largest distance exceeds 1 (no o
 (q) Pastewka & Robbins' stickiness (PNAS 111 (2014) 3298) on the stickiness runs
 (:mod:`roughcontact.study.stickiness`): nominally flat surfaces pressed by displacement into a
 half-space with a Maugis–Dugdale interaction of range ``Δr`` and work ``w`` are sticky — the
-loading slope ``dF/dA`` is negative — when ``N = (h′E*Δr/(2w))(h′²/(h″Δr))^(2/3) < 1``. One row per
-(H, N): the mean slope over seeds with its interval; consistent when the interval lies wholly on
-the predicted side of 0 (below for ``N < 1``), differs when wholly on the other, untested when it
-contains 0 or outside the criterion's range ``Δr/g₀ <`` :data:`~roughcontact.models.rough_adhesion.
-STICKINESS_RANGE_LIMIT`.
+loading slope ``F/A`` at the contact area ``A*`` is negative — when
+``N = (h′E*Δr/(2w))(h′²/(h″Δr))^(2/3) < 1``. One row per (H, N): the mean slope over seeds with its
+interval; consistent when the interval lies wholly on the predicted side of 0 (below for
+``N < 1``), differs when wholly on the other, untested when it contains 0, at ``N = 1`` itself (no
+prediction) or outside the criterion's range ``Δr/g₀ <``
+:data:`~roughcontact.models.rough_adhesion.STICKINESS_RANGE_LIMIT`. And one row per H: the
+measured threshold, the ``N`` where the mean slope changes sign (``stickiness.csv``'s
+``threshold``), consistent when its interval holds 1.
 """
 from __future__ import annotations
 
@@ -43,6 +46,7 @@ import math
 import numpy as np
 
 from ...models.rough_adhesion import STICKINESS_RANGE_LIMIT
+from ..statistics import verdict as stat_verdict
 from ..statistics import verdict_bound
 from .registry import Claim, register, row
 
@@ -216,28 +220,46 @@ def _p(inputs):
 
 
 def _q(inputs):
-    statement = "flat surfaces are sticky (dF/dA < 0 while loading) when Pastewka & Robbins' number N < 1"
+    statement = "flat surfaces are sticky (F < 0 at the area A*) when Pastewka & Robbins' number N < 1"
     table = inputs.stickiness
     if table is None or not len(table):
         return [row("q", statement, math.nan, math.nan, math.nan, 1.0,
                     "untested: no stickiness runs (the config's stickiness section)")]
     out = []
-    for _, r in table.iterrows():
-        predicted = r["number"] < 1.0
-        low, high = r["loading_slope_ci_low"], r["loading_slope_ci_high"]
-        if not r["range_ratio"] < STICKINESS_RANGE_LIMIT:
-            verdict = f"untested: dr/g0 = {r['range_ratio']:.2g} >= {STICKINESS_RANGE_LIMIT:g} (outside the criterion's range)"
+    for hurst, rows in table.groupby("hurst"):
+        first = rows.iloc[0]
+        sweep = (f"flat, periodic, n = {int(first['n'])}, {int(first['n_seeds'])} seeds, h' = {first['rms_slope']:g}, "
+                 f"dr/g0 = {first['range_ratio']:.3g}")
+        valid = bool(first["range_ratio"] < STICKINESS_RANGE_LIMIT)
+        outside = f"untested: dr/g0 = {first['range_ratio']:.2g} >= {STICKINESS_RANGE_LIMIT:g} (outside the criterion's range)"
+        for _, r in rows.iterrows():
+            low, high = r["loading_slope_ci_low"], r["loading_slope_ci_high"]
+            measured = (f"F/A = {r['loading_slope']:.3g} h'E* [{low:.3g}, {high:.3g}], {r['sticky_fraction']:.0%} of "
+                        "the seeds sticky")
+            if not valid:
+                verdict = outside
+            elif r["number"] == 1.0:
+                verdict = f"untested: N = 1 is the criterion's threshold itself ({measured})"
+            else:
+                predicted = r["number"] < 1.0
+                verdict = verdict_bound(0.0, low, high, side="below" if predicted else "above")
+                verdict = (f"{verdict.partition(':')[0]}: predicted {'sticky' if predicted else 'not sticky'}; "
+                           f"{measured}" + (f" ({verdict.partition(': ')[2]})" if verdict.startswith("untested") else ""))
+            out.append(row("q", statement, r["loading_slope"], low, high, 0.0, verdict, sweep=sweep,
+                           loads="F/A at A* in units of h'E*; the paper's value: its sign changes at N = 1",
+                           note=f"N = {r['number']:g}", hurst=hurst))
+        low, high = first["threshold_ci_low"], first["threshold_ci_high"]
+        if not valid:
+            verdict = outside
+        elif not math.isfinite(first["threshold"]):
+            verdict = "untested: the mean slope does not change sign from negative to positive across the sweep's N"
         else:
-            verdict = verdict_bound(0.0, low, high, side="below" if predicted else "above")
-            verdict = (f"{verdict.partition(':')[0]}: predicted {'sticky' if predicted else 'not sticky'}; "
-                       f"dF/dA = {r['loading_slope']:.3g} h'E* [{low:.3g}, {high:.3g}], "
-                       f"{r['sticky_fraction']:.0%} of the seeds sticky"
-                       + (f" ({verdict.partition(': ')[2]})" if verdict.startswith("untested") else ""))
-        out.append(row("q", statement, r["loading_slope"], low, high, 0.0, verdict,
-                       sweep=(f"flat, periodic, n = {int(r['n'])}, {int(r['n_seeds'])} seeds, h' = {r['rms_slope']:g}, "
-                              f"dr/g0 = {r['range_ratio']:.3g}"),
-                       loads="dF/dA in units of h'E*; paper value: the sign change at N = 1",
-                       note=f"N = {r['number']:g}", hurst=r["hurst"]))
+            crossing = f"the slope changes sign at N = {first['threshold']:.3g} [{low:.3g}, {high:.3g}]"
+            verdict = (f"{stat_verdict(1.0, low, high)}: {crossing}"
+                       + ("" if math.isfinite(low) else " (no interval: the replicates' slopes rarely change sign)"))
+        out.append(row("q", "Pastewka & Robbins: flat surfaces turn sticky at N = 1", first["threshold"], low, high,
+                       1.0, verdict, sweep=sweep, loads="the number N where the mean F/A at A* changes sign",
+                       note="threshold", hurst=hurst))
     return out
 
 

@@ -11,6 +11,11 @@ its contact passes ``stickiness.area`` and so has a length of its own, stays in 
 * ``pastewka_robbins_number``, ``range_ratio`` (``Δr/g₀``), ``interaction_range``, ``work_of_adhesion``,
   ``rms_curvature`` — means over seeds (the number is the sweep's own at every seed);
 * ``predicted_sticky`` — Pastewka & Robbins' prediction, ``N < 1``;
+* ``threshold`` — the measured number at which the surfaces of that H turn sticky: where the mean
+  slope changes sign from below (at the smallest N) to above 0, interpolated linearly in ``ln N``
+  between the two numbers around it (:func:`threshold`), with its interval from the same bootstrap
+  over seeds (the same surfaces at every N, so each replicate takes the same seeds at every N);
+  NaN where the sweep's slopes do not change sign (the same value on every row of that H);
 * ``n``, ``n_seeds`` — the grid and the number of seeds.
 """
 from __future__ import annotations
@@ -24,7 +29,7 @@ from .. import provenance, runfile
 from ..statistics import bootstrap_indices, interval
 from .settings import StickinessSettings
 
-__all__ = ["merge_stickiness", "stickiness_table", "run_stickiness_merge"]
+__all__ = ["merge_stickiness", "stickiness_table", "threshold", "run_stickiness_merge"]
 
 _COORDS = {"hurst": {"long_name": "Hurst exponent H", "units": "1"},
            "number": {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"},
@@ -63,6 +68,17 @@ def merge_stickiness(s: StickinessSettings, paths):
                       attrs={"grid_n": s.n, "area": s.area, "cutoff_cells": s.cutoff})
 
 
+def threshold(numbers, slopes) -> float:
+    """The number where the mean *slopes* (one per N of the increasing *numbers*) first change sign
+    from negative to positive, interpolated linearly in ``ln N``; NaN where they do not."""
+    numbers, slopes = np.asarray(numbers, float), np.asarray(slopes, float)
+    for k in range(1, numbers.size):
+        if slopes[k - 1] < 0.0 <= slopes[k]:
+            t = slopes[k - 1] / (slopes[k - 1] - slopes[k])
+            return float(math.exp((1.0 - t) * math.log(numbers[k - 1]) + t * math.log(numbers[k])))
+    return math.nan
+
+
 def stickiness_table(ds, s: StickinessSettings):
     """``stickiness.csv`` (module docstring) of the merged runs *ds*."""
     import pandas as pd
@@ -70,9 +86,14 @@ def stickiness_table(ds, s: StickinessSettings):
     indices = bootstrap_indices(s.seeds, s.bootstrap)
     rows = []
     for i, hurst in enumerate(s.hurst):
+        slopes = ds["loading_slope"].values[i]                          # (number, seed)
+        replicates = slopes[:, indices].mean(-1)                         # (number, resample)
+        measured = threshold(s.number, slopes.mean(-1))
+        low, high = interval(np.array([threshold(s.number, r) for r in replicates.T]), s.confidence)
+        crossing = {"threshold": measured, "threshold_ci_low": low, "threshold_ci_high": high}
         for j, number in enumerate(s.number):
-            slope = ds["loading_slope"].values[i, j]                   # (seed,)
-            low, high = interval(slope[indices].mean(1), s.confidence)
+            slope = slopes[j]                                            # (seed,)
+            low, high = interval(replicates[j], s.confidence)
             finite = slope[np.isfinite(slope)]
             rows.append({
                 "hurst": hurst, "number": number, "loading_slope": float(np.mean(slope)),
@@ -81,7 +102,8 @@ def stickiness_table(ds, s: StickinessSettings):
                 **{name: float(ds[name].values[i, j].mean())
                    for name in ("pastewka_robbins_number", "range_ratio", "interaction_range", "work_of_adhesion",
                                 "rms_curvature")},
-                "rms_slope": s.rms_slope, "predicted_sticky": bool(number < 1), "n": s.n, "n_seeds": s.seeds,
+                "rms_slope": s.rms_slope, "predicted_sticky": bool(number < 1), **crossing, "n": s.n,
+                "n_seeds": s.seeds,
             })
     return pd.DataFrame(rows)
 
