@@ -10,9 +10,10 @@ and ``Δr`` small against ``g₀ = (16/3)h′²/h″``.
 
 The study presses periodic self-affine surfaces with a short-wavelength cutoff into a half-space
 that sticks by a Maugis–Dugdale law (:mod:`roughcontact.bem.cohesive`), by displacement, up to a
-contact fraction, and measures the loading slope ``dF/dA`` (:mod:`.run`); the runs are merged
-into a table with intervals over seeds (:mod:`.merge`) that claim (q) reads. The sweep is
-:class:`.settings.StickinessSettings`.
+contact fraction, and measures the loading slope ``F/A`` there
+(:mod:`roughcontact.study.stickiness.run`); the runs are merged into a table with intervals over
+seeds (:mod:`roughcontact.study.stickiness.merge`) that claim (q) reads. The sweep is
+:class:`roughcontact.study.stickiness.settings.StickinessSettings`.
 
 Imports the core and numpy only; xarray and matplotlib where they are used.
 """
