@@ -5,7 +5,7 @@
 WORKDIR is the directory the preset ran in (``snakemake --directory WORKDIR --configfile
 presets/PRESET.yaml``); the page gives the command, the git commit, the date and the machine of
 the run (from the files' provenance attributes), the wall time if given, the ζ(H) and claims
-tables, and one figure, copied beside the page. Nothing is typed in by hand: rerun it after a
+tables, the stickiness table where the preset has one, and its figures, copied beside the page. Nothing is typed in by hand: rerun it after a
 new run of the preset.
 """
 from __future__ import annotations
@@ -28,7 +28,11 @@ SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_
                  "rms_rel_dev", "n_loads"]
 #: Fig. 3 at the paper's setting, the figure of a preset that has it
 PAPER_FIG3 = "fig3_H0.7_R0.5_h0.009.png"
-CLAIM_COLUMNS = ["claim", "statement", "measured", "ci_low", "ci_high", "paper_value", "verdict", "reason", "sweep"]
+CLAIM_COLUMNS = ["claim", "statement", "measured", "ci_low", "ci_high", "paper_value", "verdict", "reason", "note",
+                 "sweep"]
+STICKINESS_COLUMNS = ["hurst", "number", "loading_slope", "loading_slope_ci_low", "loading_slope_ci_high",
+                      "sticky_fraction", "range_ratio", "interaction_range", "work_of_adhesion", "threshold",
+                      "threshold_ci_low", "threshold_ci_high", "n", "n_seeds"]
 
 
 def _machine() -> str:
@@ -108,11 +112,20 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
                   "Largest relative deviation `|k_model/k_BEM - 1|` over the resolved loads of the ensemble "
                   "mean, with its 95 % bootstrap-over-seeds interval; rank 1 is the best model of its combination.",
                   "", _table(models[SCORE_COLUMNS]), ""]
-    figure = _figure(preset, results)
-    if figure is not None:
+    sticky = results / "stickiness" / "stickiness.csv"
+    if sticky.is_file():
+        lines += ["## Stickiness of flat surfaces (claim q)", "",
+                  "Per Pastewka & Robbins number N: the mean loading slope F/A (units of h'E*) where the contact "
+                  "covers `stickiness.area` of the grid, with its 95 % bootstrap-over-seeds interval (negative: "
+                  "sticky), and the measured threshold N where the mean slope changes sign.", "",
+                  _table(pd.read_csv(sticky)[STICKINESS_COLUMNS]), ""]
+    figures = [f for f in (_figure(preset, results), results / "stickiness_figures" / "loading.png")
+               if f is not None and f.is_file()]
+    for i, figure in enumerate(figures):
         target = out_dir / f"{preset}_{figure.name}"
         shutil.copyfile(figure, target)
-        lines += ["## Figure", "", f"![{figure.name}]({target.name})", ""]
+        lines += ["## Figure" if len(figures) == 1 else f"## Figure {i + 1}", "", f"![{figure.name}]({target.name})",
+                  ""]
     page = out_dir / f"{preset}.md"
     page.write_text("\n".join(lines), encoding="utf-8")
     return page
