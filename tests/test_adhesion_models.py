@@ -239,6 +239,24 @@ def test_pastewka_robbins_range_ratio():
     assert got.range_ratio == pytest.approx(0.0234375, rel=1e-14), f"dr/g0 = {got.range_ratio}"
 
 
+@pytest.mark.parametrize("number, w", [(0.5, 8.0), (2.0, 2.0)])
+def test_pastewka_robbins_work_of_adhesion_inverts_the_number(number, w):
+    """w = 4/N by hand (the number is 4/w for STICKY): 8 at N = 0.5, 2 at N = 2."""
+    got = rough_adhesion.pastewka_robbins_work_of_adhesion(number, **STICKY)
+    assert got == pytest.approx(w, rel=1e-13), f"w {got}"
+
+
+def test_pastewka_robbins_gap():
+    """g0 = (16/3) 0.04/0.5 = 0.42667 by hand."""
+    got = rough_adhesion.pastewka_robbins_gap(rms_slope=0.2, rms_curvature=0.5)
+    assert got == pytest.approx(16 / 3 * 0.08, rel=1e-14), f"g0 = {got}"
+
+
+def test_pastewka_robbins_bad_number_is_named():
+    with pytest.raises(ValueError, match="number"):
+        rough_adhesion.pastewka_robbins_work_of_adhesion(-1.0, **STICKY)
+
+
 def test_pastewka_robbins_long_range_is_outside_validity():
     """dr = 0.05: dr/g0 = 0.1171875 > 0.1, outside the criterion's range of validity."""
     got = rough_adhesion.pastewka_robbins_stickiness(**{**STICKY, "interaction_range": 0.05}, work_of_adhesion=8.0)

@@ -57,7 +57,8 @@ from .._validate import check_finite_positive
 
 __all__ = ["FullerTaborPullOff", "StickinessCriterion", "fuller_tabor_force", "fuller_tabor_parameter",
            "fuller_tabor_pull_off", "jkr_critical_approach", "johnson_rough_sphere_parameter",
-           "pastewka_robbins_stickiness", "STICKINESS_RANGE_LIMIT"]
+           "pastewka_robbins_gap", "pastewka_robbins_stickiness", "pastewka_robbins_work_of_adhesion",
+           "STICKINESS_RANGE_LIMIT"]
 
 _CBRT3 = 3.0 ** (1 / 3)
 #: ``â`` where JKR's displacement-controlled branch ends (``dδ/da = 0``): ``â³ = 1/9``
@@ -223,8 +224,34 @@ def pastewka_robbins_stickiness(*, rms_slope: float, rms_curvature: float, inter
     check_finite_positive("rms_curvature", rms_curvature)
     check_finite_positive("interaction_range", interaction_range)
     _check_material(e_star, work_of_adhesion)
-    slope, curvature, reach = rms_slope, rms_curvature, interaction_range
-    number = slope * e_star * reach / (2 * work_of_adhesion) * (slope**2 / (curvature * reach)) ** (2 / 3)
-    g0 = 16 / 3 * slope**2 / curvature
-    return StickinessCriterion(number=number, sticky=number < 1, g0=g0, range_ratio=reach / g0,
-                               valid=reach / g0 < STICKINESS_RANGE_LIMIT)
+    number = _stickiness_scale(rms_slope, rms_curvature, interaction_range, e_star) / work_of_adhesion
+    g0 = pastewka_robbins_gap(rms_slope=rms_slope, rms_curvature=rms_curvature)
+    return StickinessCriterion(number=number, sticky=number < 1, g0=g0, range_ratio=interaction_range / g0,
+                               valid=interaction_range / g0 < STICKINESS_RANGE_LIMIT)
+
+
+def _stickiness_scale(slope, curvature, reach, e_star) -> float:
+    """``N w = (h′E*Δr/2) (h′²/(h″Δr))^(2/3)``: Pastewka & Robbins' number times the work."""
+    return slope * e_star * reach / 2 * (slope**2 / (curvature * reach)) ** (2 / 3)
+
+
+def pastewka_robbins_gap(*, rms_slope: float, rms_curvature: float) -> float:
+    """``g₀ = (16/3) h′²/h″`` (length), the gap scale of Pastewka & Robbins (2014) against which
+    the interaction range is short (``Δr/g₀ <`` :data:`STICKINESS_RANGE_LIMIT`)."""
+    check_finite_positive("rms_slope", rms_slope)
+    check_finite_positive("rms_curvature", rms_curvature)
+    return 16 / 3 * rms_slope**2 / rms_curvature
+
+
+def pastewka_robbins_work_of_adhesion(number: float, *, rms_slope: float, rms_curvature: float,
+                                      interaction_range: float, e_star: float) -> float:
+    """The work of adhesion ``w`` (``E*`` times length) that gives a surface of rms gradient
+    ``h′``, rms curvature ``h″`` and an interaction of range ``Δr`` Pastewka & Robbins' *number*
+    ``N``: the inverse of :func:`pastewka_robbins_stickiness`,
+    ``w = (h′E*Δr/(2N)) (h′²/(h″Δr))^(2/3)``."""
+    check_finite_positive("number", number)
+    check_finite_positive("rms_slope", rms_slope)
+    check_finite_positive("rms_curvature", rms_curvature)
+    check_finite_positive("interaction_range", interaction_range)
+    check_finite_positive("e_star", e_star)
+    return _stickiness_scale(rms_slope, rms_curvature, interaction_range, e_star) / number

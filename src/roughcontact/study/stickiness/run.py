@@ -35,7 +35,8 @@ import numpy as np
 from ...bem import solve
 from ...bem.cohesive import cohesive_path
 from ...errors import ConvergenceError, IndentError
-from ...models.rough_adhesion import pastewka_robbins_stickiness
+from ...models.rough_adhesion import (pastewka_robbins_gap, pastewka_robbins_stickiness,
+                                      pastewka_robbins_work_of_adhesion)
 from ...surfaces.moments import spectral_moments
 from ...surfaces.roughness import self_affine
 
@@ -89,8 +90,9 @@ def stickiness_surface(s, job) -> StickinessSurface:
     z *= s.rms_slope / math.sqrt(2.0 * spectral_moments(z, length=s.length).m2)
     moments = spectral_moments(z, length=s.length)
     slope, curvature = math.sqrt(2.0 * moments.m2), 0.5 * math.sqrt(8.0 * moments.m4 / 3.0)
-    reach = s.range_ratio * 16.0 / 3.0 * slope**2 / curvature
-    work = slope * s.e_star * reach / (2.0 * job.number) * (slope**2 / (curvature * reach)) ** (2.0 / 3.0)
+    reach = s.range_ratio * pastewka_robbins_gap(rms_slope=slope, rms_curvature=curvature)
+    work = pastewka_robbins_work_of_adhesion(job.number, rms_slope=slope, rms_curvature=curvature,
+                                             interaction_range=reach, e_star=s.e_star)
     criterion = pastewka_robbins_stickiness(rms_slope=slope, rms_curvature=curvature, interaction_range=reach,
                                             e_star=s.e_star, work_of_adhesion=work)
     return StickinessSurface(z, curvature, reach, work, criterion)
@@ -142,7 +144,7 @@ def stickiness_run(s, job, *, progress=None) -> dict:
                              cohesive_stress=work / reach, periodic=True, tol=s.tol, on_state=on_state,
                              until=lambda i, force, contact: contact > s.area * cells)
     except ConvergenceError as exc:
-        raise IndentError(f"indent {name}: the cohesive solve did not converge at approach {count['i'] + 1}/{s.steps} "
+        raise IndentError(f"{name}: the cohesive solve did not converge at approach {count['i'] + 1}/{s.steps} "
                           f"({exc}); lower stickiness.area or use more cells (stickiness.n)") from exc
     area = path.contact_cells / cells
     slope = loading_slope(path.force / scale, area, at=s.area)
