@@ -61,9 +61,9 @@ TAMAAS_TOL = 1e-8
 def interaction(length: float = LENGTH, e_star: float = E_STAR, radius: float = RADIUS,
                 ell: float = ELL, lam: float = LAMBDA) -> tuple[float, float, float]:
     """``(w, σ₀, ℓ²/R)``: the work of adhesion and cohesive stress of Maugis' ``λ`` at ``ℓ``."""
-    from roughcontact.models.adhesion import maugis_cohesive_stress
+    from roughcontact.models.adhesion import maugis_cohesive_stress, maugis_work_of_adhesion
 
-    w = (4 * e_star / 3) * (ell * length) ** 3 / (math.pi * radius**2)
+    w = maugis_work_of_adhesion(ell * length, radius=radius, e_star=e_star)
     sigma = maugis_cohesive_stress(lam, radius=radius, e_star=e_star, work_of_adhesion=w)
     return w, sigma, (ell * length) ** 2 / radius
 

@@ -193,9 +193,8 @@ def _maugis_sphere(lam: float, ell_cells: float, n: int, *, periodic: bool = Fal
     """The sphere loaded from 1 to -1 ... +1 ell^2/R of approach (10 steps) and unloaded to -1 (*back*
     steps), w and sigma_0 such that Maugis' ell is *ell_cells* cells and his parameter *lam*:
     ``(path, pull-off / (pi w R), w, depth unit ell^2/R)``."""
-    k = 4 * e_star / 3
     ell = ell_cells * length / n
-    w = k * ell**3 / (math.pi * radius**2)
+    w = adhesion.maugis_work_of_adhesion(ell, radius=radius, e_star=e_star)
     sigma = adhesion.maugis_cohesive_stress(lam, radius=radius, e_star=e_star, work_of_adhesion=w)
     unit = ell**2 / radius
     depths = np.concatenate([np.linspace(-1, 1, 10), np.linspace(1, -1, back)]) * unit
@@ -262,7 +261,7 @@ def test_cohesive_unloading_retraces_loading_at_small_lambda():
     those of loading at the same approaches, -1 ... 1 ell^2/R, to 1e-6 pi w R (the solves' tolerance)."""
     n, length, e_star, radius = 64, UNITS["length"], UNITS["e_star"], UNITS["radius"]
     ell = 4 * length / n
-    w = 4 * e_star / 3 * ell**3 / (math.pi * radius**2)
+    w = adhesion.maugis_work_of_adhesion(ell, radius=radius, e_star=e_star)
     sigma = adhesion.maugis_cohesive_stress(0.1, radius=radius, e_star=e_star, work_of_adhesion=w)
     depths = np.linspace(-1, 1, 21) * ell**2 / radius
     path = cohesive_path(paraboloid(n, radius=radius, length=length), np.concatenate([depths, depths[::-1]]),
@@ -304,7 +303,7 @@ def test_cohesive_zone_update_on_a_window_is_the_whole_grids(periodic, monkeypat
 
     monkeypatch.setattr(cohesive._CohesiveSolver, "_in_range", in_range)
     n, radius, ell = 96, 0.5, 6 / 96
-    w = (4 / 3) * ell**3 / (math.pi * radius**2)
+    w = adhesion.maugis_work_of_adhesion(ell, radius=radius, e_star=1.0)
     sigma = adhesion.maugis_cohesive_stress(1.0, radius=radius, e_star=1.0, work_of_adhesion=w)
     unit = ell**2 / radius
     depths = np.concatenate([np.linspace(-0.5, 1.0, 4), np.linspace(1.0, -1.2, 9)[1:]]) * unit
@@ -317,7 +316,7 @@ def test_cohesive_zone_update_on_a_window_is_the_whole_grids(periodic, monkeypat
 def _small_maugis_path(**options):
     """A lambda = 1 sphere on 48^2 loaded over -1 ... 1.5 ell^2/R in 11 approaches."""
     n, radius, ell = 48, 0.5, 6 / 48
-    w = (4 / 3) * ell**3 / (math.pi * radius**2)
+    w = adhesion.maugis_work_of_adhesion(ell, radius=radius, e_star=1.0)
     sigma = adhesion.maugis_cohesive_stress(1.0, radius=radius, e_star=1.0, work_of_adhesion=w)
     depths = np.linspace(-1.0, 1.5, 11) * ell**2 / radius
     return cohesive_path(paraboloid(n, radius=radius, length=1.0), depths, length=1.0, e_star=1.0,

@@ -217,6 +217,13 @@ def test_fuller_tabor_bad_theta_is_named():
         rough_adhesion.fuller_tabor_pull_off(-1.0)
 
 
+def test_maugis_work_of_adhesion_gives_its_length_unit():
+    """l = (pi w R^2/K)^(1/3), K = 4E*/3: w = K l^3/(pi R^2) = (4 * 3/3) 0.008/(pi 0.25) = 0.04074 for
+    l = 0.2, R = 0.5, E* = 3, and back to l."""
+    w = adhesion.maugis_work_of_adhesion(0.2, radius=0.5, e_star=3.0)
+    assert (math.pi * w * 0.5**2 / (4 * 3.0 / 3)) ** (1 / 3) == pytest.approx(0.2, rel=1e-14), f"w = {w}"
+
+
 #: h' = 0.2, h'' = 0.5, dr = 0.01: h'^2/(h'' dr) = 8, whose 2/3 power is 4; g0 = (16/3) 0.08 = 0.42667
 STICKY = {"rms_slope": 0.2, "rms_curvature": 0.5, "interaction_range": 0.01, "e_star": 1000.0}
 

@@ -50,7 +50,7 @@ LAW_RESIDUAL = 1e-7
 def _problem(n: int, lam: float, ell: float, seed: int) -> dict:
     """The rough sphere of *seed* on ``n²`` and the Dugdale law of Maugis' *lam* at his length *ell*
     (``w`` from ``ℓ³ = πwR²/K``), the approaches DEPTHS in units of ``ℓ²/R``."""
-    w = (4 * E_STAR / 3) * ell**3 / (math.pi * RADIUS**2)
+    w = adhesion.maugis_work_of_adhesion(ell, radius=RADIUS, e_star=E_STAR)
     sigma = adhesion.maugis_cohesive_stress(lam, radius=RADIUS, e_star=E_STAR, work_of_adhesion=w)
     heights = surfaces.rough_sphere(n, radius=RADIUS, hurst=0.7, h_rms=1e-3, length=LENGTH, seed=seed)
     return dict(heights=heights, depths=DEPTHS * ell**2 / RADIUS, work_of_adhesion=w, cohesive_stress=sigma)

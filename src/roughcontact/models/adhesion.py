@@ -36,7 +36,8 @@ from scipy.optimize import brentq, minimize_scalar
 from .._validate import check_finite_positive
 
 __all__ = ["JKRState", "MaugisDugdaleState", "dmt_contact_radius", "dmt_pull_off", "jkr", "jkr_fixed_grips_pull_off",
-           "jkr_pull_off", "maugis_cohesive_stress", "maugis_dugdale", "maugis_dugdale_pull_off", "maugis_parameter"]
+           "jkr_pull_off", "maugis_cohesive_stress", "maugis_dugdale", "maugis_dugdale_pull_off", "maugis_parameter",
+           "maugis_work_of_adhesion"]
 
 
 def _check(radius, e_star, work):
@@ -130,6 +131,16 @@ def maugis_cohesive_stress(lam: float, *, radius: float, e_star: float, work_of_
     check_finite_positive("lam", lam)
     k = 4 * e_star / 3
     return lam / 2 * (math.pi * work_of_adhesion * k**2 / radius) ** (1 / 3)
+
+
+def maugis_work_of_adhesion(length_unit: float, *, radius: float, e_star: float) -> float:
+    """The work of adhesion ``w = Kℓ³/(πR²)``, ``K = 4E*/3``, whose Maugis length unit
+    ``ℓ = (πwR²/K)^(1/3)`` (the unit of ``ā``: ``a = ā ℓ``) is *length_unit*: a sweep in cells of
+    the contact radius."""
+    check_finite_positive("length_unit", length_unit)
+    check_finite_positive("radius", radius)
+    check_finite_positive("e_star", e_star)
+    return 4 * e_star / 3 * length_unit**3 / (math.pi * radius**2)
 
 
 @dataclasses.dataclass(frozen=True)
