@@ -10,10 +10,12 @@ import numpy as np
 import pandas as pd
 import pytest
 import xarray as xr
+import yaml
 
 from roughcontact.bem import solve
 from roughcontact.errors import ConfigError, MergeError
 from roughcontact.models.rough_adhesion import STICKINESS_RANGE_LIMIT
+from roughcontact import cli
 from roughcontact.study import claims, provenance, runfile
 from roughcontact.study.config import load_config, resolve_config, study_settings
 from roughcontact.study.stickiness import StickinessJob, StickinessSettings, loading_slope, stickiness_run
@@ -48,6 +50,21 @@ def test_a_bad_value_is_one_line_naming_the_key(section, key):
     with pytest.raises(ConfigError) as err:
         resolve_config({**TINY, "stickiness": section})
     assert key in str(err.value) and "\n" not in str(err.value), str(err.value)
+
+
+def test_check_config_counts_the_stickiness_runs(tmp_path, capsys):
+    path = tmp_path / "c.yaml"
+    path.write_text(yaml.safe_dump({**TINY, "stickiness": {"number": [0.5, 2.0, 4.0], "seeds": 3}}))
+    assert cli.main(["check-config", str(path)]) == 0, capsys.readouterr().err
+    assert "stickiness: 9 runs (1 H x 3 N x 3 seeds on 512²)" in capsys.readouterr().out, "the count"
+
+
+def test_check_config_names_a_bad_stickiness_key(tmp_path, capsys):
+    path = tmp_path / "c.yaml"
+    path.write_text(yaml.safe_dump({**TINY, "stickiness": {"range_ratio": -0.1}}))
+    assert cli.main(["check-config", str(path)]) == 2, "exit code"
+    err = capsys.readouterr().err
+    assert "stickiness.range_ratio" in err and err.count("\n") == 1, err
 
 
 def test_jobs_run_by_hurst_then_number_then_seed():

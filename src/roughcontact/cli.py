@@ -24,6 +24,7 @@ from .study.measured.config import (FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, p
                                     to_pascals)
 from .study.settings import JobSettings, job_settings
 from .study.config import study_settings
+from .study.stickiness import StickinessSettings
 from .study.study_settings import StudySettings
 
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
@@ -378,8 +379,12 @@ def main(argv=None) -> int:
                         f"{len(study.seeds) if study.spectrum else 0} seeds")
         coarse = (f", and as many on the coarse grid {study.grid.coarse}² (grid.coarse)"
                   if study.grid.coarse is not None and study.generated else "")
+        sticky = StickinessSettings.of(study)
+        sticky = ("" if sticky is None else
+                  f"; stickiness: {len(sticky.jobs())} runs ({len(sticky.hurst)} H x {len(sticky.number)} N x "
+                  f"{sticky.seeds} seeds on {sticky.n}²)")
         print(f"{args.config}: valid; {len(runs.runs(study))} indent jobs "
-              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds){coarse}{measured}")
+              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds){coarse}{measured}{sticky}")
         return 0
     if args.command == "measured":
         return _measured(args)
