@@ -2,8 +2,8 @@
 
 One panel per Hurst exponent: ``F/(h′E*L²)`` against ``A/L²`` along the loading of every seed, from
 the surfaces apart (0, 0), one colour per Pastewka–Robbins number ``N`` (labelled with the mean
-loading slope ``F/A`` at ``A* = stickiness.area``, dotted). A curve that reaches ``A*`` under tension
-is sticky.
+loading slope ``F/A`` at ``A* = stickiness.area``, dotted), and the line of no adhesion with
+:data:`KAPPA`. A curve that reaches ``A*`` under tension is sticky.
 """
 from __future__ import annotations
 
@@ -12,7 +12,10 @@ import numpy as np
 from ..plotting import pyplot, save_png
 from .settings import StickinessSettings
 
-__all__ = ["run_stickiness_figures"]
+__all__ = ["KAPPA", "run_stickiness_figures"]
+
+#: the reference line without adhesion, ``A = κF/(h′E*)``: Pastewka & Robbins' (and Hyun et al.'s) κ ≈ 2
+KAPPA = 2.0
 
 
 def run_stickiness_figures(cfg, run_files, out_loading) -> None:
@@ -39,6 +42,8 @@ def run_stickiness_figures(cfg, run_files, out_loading) -> None:
                 force = np.r_[0.0, run["force"].values / scale]
                 ax.plot(area, force, ".-", color=f"C{j}", lw=0.8, ms=2,
                         label=f"N = {number:g}: F/A = {slope:.3g} h'E* at A*" if k == 0 else None)
+        ax.plot([0.0, 1.2 * s.area], [0.0, 1.2 * s.area / KAPPA], "--", color="0.5", lw=0.8,
+                 label=f"no adhesion: F/A = 1/κ, κ = {KAPPA:g}")
         ax.axhline(0.0, color="0.6", lw=0.5)
         ax.axvline(s.area, color="k", lw=0.5, ls=":")
         ax.set(xlabel="contact area A / L²", ylabel="F / (h' E* L²)",
