@@ -31,9 +31,8 @@ from .settings import StickinessSettings
 
 __all__ = ["merge_stickiness", "stickiness_table", "threshold", "run_stickiness_merge"]
 
-_COORDS = {"hurst": {"long_name": "Hurst exponent H", "units": "1"},
-           "number": {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"},
-           "seed": {"long_name": "random seed of the surface", "units": "1"}}
+#: the number coordinate (hurst and seed: those of every merged file, runfile.AXIS_ATTRS)
+NUMBER_ATTRS = {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"}
 
 
 def merge_stickiness(s: StickinessSettings, paths):
@@ -62,9 +61,9 @@ def merge_stickiness(s: StickinessSettings, paths):
     meta = runfile.STICKINESS_SCALARS
     return xr.Dataset({name: (dims, values, {"long_name": meta[name].long_name, "units": meta[name].units})
                        for name, values in data.items()},
-                      coords={"hurst": ("hurst", np.array(s.hurst), _COORDS["hurst"]),
-                              "number": ("number", np.array(s.number), _COORDS["number"]),
-                              "seed": ("seed", np.arange(s.seeds), _COORDS["seed"])},
+                      coords={"hurst": ("hurst", np.array(s.hurst), runfile.AXIS_ATTRS["hurst"]),
+                              "number": ("number", np.array(s.number), NUMBER_ATTRS),
+                              "seed": ("seed", np.arange(s.seeds), runfile.AXIS_ATTRS["seed"])},
                       attrs={"grid_n": s.n, "area": s.area, "cutoff_cells": s.cutoff})
 
 
