@@ -20,7 +20,7 @@ from roughcontact.bem.adhesion import (
     critical_stress,
 )
 from roughcontact.bem.cohesive import cohesive_path
-from roughcontact.errors import DomainTooSmallError
+from roughcontact.errors import ConvergenceError, DomainTooSmallError
 from roughcontact.models import adhesion
 from roughcontact.surfaces import paraboloid
 
@@ -340,6 +340,16 @@ def test_cohesive_path_on_state_gets_the_contact_and_the_zone():
         (i, int(contact.sum()), int(zone.sum()), bool((contact & zone).any()))))
     expected = [(i, int(c), int(z), False) for i, (c, z) in enumerate(zip(path.contact_cells, path.zone_cells))]
     assert counts == expected, counts
+
+
+@pytest.mark.parametrize("roughness", [0.0, 1e-3])
+def test_cohesive_full_contact_on_the_periodic_grid_is_named(roughness):
+    """A periodic surface pressed 0.1 L beyond its highest point, flat or rough by 1e-3 L: every cell
+    touches, and the approach does not fix the mean pressure (no solution); the error says so."""
+    z = roughness * np.random.default_rng(0).normal(size=(16, 16))
+    with pytest.raises(ConvergenceError, match="covers the periodic grid"):
+        cohesive_path(z - z.max(), [0.1], length=1.0, e_star=1.0, work_of_adhesion=0.01, cohesive_stress=1.0,
+                      periodic=True)
 
 
 def test_cohesive_zone_at_the_grid_edge_is_named():

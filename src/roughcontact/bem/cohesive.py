@@ -122,6 +122,12 @@ def _box(mask: np.ndarray) -> tuple[slice, slice]:
     return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
 
 
+def _full_contact(d: float) -> str:
+    """Why a periodic displacement-controlled solve fails in full contact."""
+    return (f"the cohesive contact covers the periodic grid at d = {d:g}: in full contact the approach does not "
+            "fix the mean pressure")
+
+
 @dataclasses.dataclass(frozen=True)
 class _Lift:
     """The lifts ``q`` held on a box of the grid (zero outside it): the state's only floats, so that
@@ -250,8 +256,7 @@ class _CohesiveSolver:
             response = operator(direction)
             curvature = float((response * direction)[support].sum())
             if not curvature > 0.0:         # a uniform direction on the whole periodic grid
-                raise ConvergenceError(f"the cohesive contact covers the periodic grid at d = {d:g}: in full "
-                                       "contact the approach does not fix the mean pressure")
+                raise ConvergenceError(_full_contact(d))
             step = float((gap * direction)[support].sum()) / curvature
             trial = q - step * direction
             q = np.maximum(trial, 0.0)
@@ -265,6 +270,8 @@ class _CohesiveSolver:
                 exact, since_exact = False, since_exact + 1
             else:
                 displacement, exact, since_exact = operator(q), True, 0
+        if self.periodic and support.size == n * n and support.all():
+            raise ConvergenceError(_full_contact(d))
         raise ConvergenceError(f"the cohesive contact did not reach tol = {self.tol:g} in {self.maxiter} "
                                f"iterations at d = {d:g} (error {error / scale:.2e})")
 
