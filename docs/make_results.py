@@ -79,6 +79,11 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
     cfgfile = "config.yaml" if preset == "default" else f"presets/{preset}.yaml"
     runs = len(list((results / "runs").rglob("seed*.nc")))
     counts = claims["verdict"].value_counts().to_dict()
+    stickiness = {}
+    if (results / "stickiness" / "stickiness.nc").is_file():
+        with xr.open_dataset(results / "stickiness" / "stickiness.nc") as sticky_ds:
+            stickiness = dict(sticky_ds.attrs)
+        stickiness["runs"] = len(list((results / "stickiness_run").rglob("seed*.nc")))
     lines = [
         f"# Preset `{preset}`",
         "",
@@ -92,6 +97,9 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
           if later and later.get("git_commit") != attrs.get("git_commit") else []),
         f"| machine | {_machine()} |",
         f"| runs | {runs} indentation jobs on {config['grid']['n']}² |",
+        *([f"| stickiness runs | {stickiness['runs']} on {stickiness['grid_n']}², merged at "
+           f"`{stickiness.get('git_commit', 'unknown')}`, {stickiness.get('created_utc', 'unknown')} |"]
+          if stickiness else []),
         *([f"| wall time | {wall / 60:.1f} min (run, merge, analysis and report; other work on the machine) |"]
           if wall is not None else []),
         f"| verdicts | {', '.join(f'{n} {v}' for v, n in sorted(counts.items()))} |",
