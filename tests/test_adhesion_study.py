@@ -157,6 +157,14 @@ def test_claim_o_collapse_is_consistent_when_one_curve_holds_every_pair():
     assert _claim_rows("o", _table(rows))[0]["verdict"] == "consistent", _claim_rows("o", _table(rows))
 
 
+def test_claim_o_interval_of_the_difference_holds_zero_exactly_when_consistent():
+    """The pairs 1 % apart (intervals +-3 %): 0 inside; 30 % apart: 0 outside."""
+    near = _claim_rows("o", _table(_pair(1e-3) + _pair(3e-3, 1.01)))[0]
+    far = _claim_rows("o", _table(_pair(1e-3) + _pair(3e-3, 1.3)))[0]
+    assert near["ci_low"] <= 0.0 <= near["ci_high"], near
+    assert not far["ci_low"] <= 0.0 <= far["ci_high"], far
+
+
 def test_claim_o_differs_when_the_pairs_fall_apart():
     """The second work of adhesion's rough pull-offs 30 % above the first's (intervals ±3 %): no one curve."""
     rows = _pair(1e-3) + _pair(3e-3, 1.3)
@@ -180,6 +188,7 @@ def test_claim_p_agrees_with_li_et_al_when_the_hurst_exponents_fall_apart():
     """The second H 30 % above the first (intervals ±3 %): Johnson's parameter alone does not collapse them."""
     row = _claim_rows("p", _two_hurst(1.3))[0]
     assert row["verdict"] == "consistent", row
+    assert not row["ci_low"] <= 0.0 <= row["ci_high"], f"the interval of the difference excludes 0: {row}"
 
 
 def test_claim_p_differs_when_one_curve_holds_every_hurst_exponent():

@@ -14,9 +14,11 @@ Tabor's θ, Proc. R. Soc. A 345 (1975) 327): per H, the curves of the (R, w) pai
 ``h_rms/δ_c``, each pull-off ratio taken over that of the pair's own smooth sphere (which removes
 the detachment criterion's discretisation error, different at each w), without the combinations
 whose preload is below :data:`PRELOAD` JKR pull-off radii (as in (n)), compared where their
-ranges overlap with no form assumed (:func:`_collapse_residual`); measured: the largest distance
-in units of the sum of the two half-intervals; consistent when at most 1 (the intervals overlap
-everywhere). Needs two or more (R, w) pairs at one H.
+ranges overlap with no form assumed (:func:`_collapse_residual`); measured: the difference of two
+curves where they lie farthest apart in units of the sum of their half-intervals, its interval
+that difference plus and minus the sum (conservative: it holds 0 exactly where the intervals
+overlap); consistent when it holds 0 (one curve within the intervals everywhere). Needs two or
+more (R, w) pairs at one H.
 
 (p) Li, Pohrt & Popov (Front. Mech. Eng. 5:7 (2019), doi:10.3389/fmech.2019.00007) find that
 Johnson's parameter governs the adhesion of regular waviness, but that the adhesive strength of
@@ -24,8 +26,9 @@ random roughness needs a new parameter, which they identify numerically. Their p
 definition is not in any source this project has (only the abstract), so it is not implemented;
 what is tested is the half of their finding that needs none: Johnson's ``h_rms/δ_c`` alone does
 *not* collapse the random-roughness pull-off: the comparison of (o) between the curves of
-different H; consistent with Li et al. when the largest distance exceeds 1 (no one curve of
-``h_rms/δ_c`` for all H), differs when at most 1. Needs two or more H with four combinations each.
+different H; consistent with Li et al. when the interval of the difference excludes 0 (no one
+curve of ``h_rms/δ_c`` for all H), differs when it holds 0. Needs two or more H with four
+combinations each.
 
 (q) Pastewka & Robbins' stickiness (PNAS 111 (2014) 3298) on the stickiness runs
 (:mod:`roughcontact.study.stickiness`): nominally flat surfaces pressed by displacement into a
@@ -41,6 +44,7 @@ measured threshold, the ``N`` where the mean slope changes sign (``stickiness.cs
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -139,17 +143,38 @@ def _series(rows, by) -> list:
     return out
 
 
-def _collapse_residual(rows, by, *, across: str | None = None) -> tuple[float, int]:
+@dataclasses.dataclass(frozen=True)
+class Collapse:
+    """How far series of pull-off ratios lie from one curve of ``h_rms/δ_c`` (:func:`_collapse_residual`).
+
+    Attributes
+    ----------
+    worst : float
+        The largest distance between two series over the sum of their half-intervals there (at most
+        1: the intervals overlap everywhere).
+    difference, bound : float
+        At that point: the signed difference of the two pull-off ratios and the sum of their
+        half-intervals, so that ``difference ± bound`` is the (conservative) interval of the
+        difference; it holds 0 exactly when ``worst ≤ 1``.
+    compared : int
+        Points compared (0: the series' ranges do not overlap).
+    """
+
+    worst: float
+    difference: float
+    bound: float
+    compared: int
+
+
+def _collapse_residual(rows, by, *, across: str | None = None) -> Collapse:
     """Whether the series of *rows* (split by *by*, :func:`_series`) lie on one curve of
     ``h_rms/δ_c``, with no form assumed for it: each point of one series inside the parameter range
     of another is compared with that series interpolated linearly in ``ln(h_rms/δ_c)`` (ratio and
-    half-interval alike); the residual is the distance over the sum of the two half-intervals, so
-    at most 1 where the intervals overlap. *across*: compare only series that differ in that
-    column. Returns the largest residual and the number of points compared (0: the ranges do not
-    overlap)."""
+    half-interval alike); the residual is the distance over the sum of the two half-intervals.
+    *across*: compare only series that differ in that column."""
     series = _series(rows, by)
     position = list(by).index(across) if across is not None else None
-    worst, compared = 0.0, 0
+    out = Collapse(0.0, 0.0, math.nan, 0)
     for key_a, x_a, y_a, half_a in series:
         for key_b, x_b, y_b, half_b in series:
             if key_a == key_b or x_a.size < 2 or (position is not None and key_a[position] == key_b[position]):
@@ -157,10 +182,19 @@ def _collapse_residual(rows, by, *, across: str | None = None) -> tuple[float, i
             inside = (x_b >= x_a[0]) & (x_b <= x_a[-1])
             if not inside.any():
                 continue
-            gap = np.abs(y_b[inside] - np.interp(x_b[inside], x_a, y_a))
+            difference = y_b[inside] - np.interp(x_b[inside], x_a, y_a)
             bound = half_b[inside] + np.interp(x_b[inside], x_a, half_a)
-            worst, compared = max(worst, float(np.max(gap / bound))), compared + int(inside.sum())
-    return worst, compared
+            k = int(np.argmax(np.abs(difference) / bound))
+            worst = float(abs(difference[k]) / bound[k])
+            if not out.compared or worst > out.worst:
+                out = Collapse(worst, float(difference[k]), float(bound[k]), out.compared)
+            out = dataclasses.replace(out, compared=out.compared + int(inside.sum()))
+    return out
+
+
+#: the loads column of claims (o) and (p)
+_COLLAPSE_LOADS = ("the largest difference of two curves' pull-off ratios (each over its smooth sphere's), its "
+                   "interval the sum of their half-intervals (it holds 0 where the intervals overlap)")
 
 
 def _o(inputs):
@@ -179,18 +213,19 @@ def _o(inputs):
                            f"untested: {len(pairs)} (R, w) pair(s) and {len(rows)} combination(s) at H = {hurst:g} "
                            "(a collapse needs two pairs and four combinations)", hurst=hurst, sweep=sweep))
             continue
-        worst, compared = _collapse_residual(rows, ("radius", "work_of_adhesion"))
-        if not compared:
+        collapse = _collapse_residual(rows, ("radius", "work_of_adhesion"))
+        if not collapse.compared:
             out.append(row("o", statement, math.nan, math.nan, math.nan, 1.0,
                            "untested: the (R, w) pairs' ranges of h_rms/delta_c do not overlap", hurst=hurst,
                            sweep=sweep))
             continue
-        sweep += f", {compared} points compared"
-        verdict = "consistent" if worst <= 1.0 else "differs"
-        out.append(row("o", statement, worst, math.nan, math.nan, 1.0,
-                       f"{verdict}: the largest distance between the pairs' curves is {worst:.2f} times the sum of "
-                       "their half-intervals",
-                       hurst=hurst, sweep=sweep, loads="residual in units of the combination's half-interval"))
+        sweep += f", {collapse.compared} points compared"
+        verdict = "consistent" if collapse.worst <= 1.0 else "differs"
+        low, high = collapse.difference - collapse.bound, collapse.difference + collapse.bound
+        out.append(row("o", statement, collapse.difference, low, high, 0.0,
+                       f"{verdict}: the largest distance between the pairs' curves is {collapse.worst:.2f} times the "
+                       "sum of their half-intervals",
+                       hurst=hurst, sweep=sweep, loads=_COLLAPSE_LOADS))
     return out
 
 
@@ -206,17 +241,18 @@ def _p(inputs):
         return [row("p", statement, math.nan, math.nan, math.nan, 1.0,
                     f"untested: {len(enough)} H with four or more combinations (one curve across H needs two)")]
     rows = rows[rows["hurst"].isin(enough)]
-    worst, compared = _collapse_residual(rows, ("hurst", "radius", "work_of_adhesion"), across="hurst")
+    collapse = _collapse_residual(rows, ("hurst", "radius", "work_of_adhesion"), across="hurst")
     sweep = (f"H = {', '.join(f'{h:g}' for h in sorted(enough))}: {len(rows)} combinations ({capped} left out: "
-             f"preload below {PRELOAD:g} JKR radii), {compared} points compared")
-    if not compared:
+             f"preload below {PRELOAD:g} JKR radii), {collapse.compared} points compared")
+    if not collapse.compared:
         return [row("p", statement, math.nan, math.nan, math.nan, 1.0,
                     "untested: the H's ranges of h_rms/delta_c do not overlap", sweep=sweep)]
+    worst = collapse.worst
     verdict = (f"consistent: no one curve of h_rms/delta_c through every H (the H's curves {worst:.2f} times the "
                "sum of their half-intervals apart)" if worst > 1.0 else
                f"differs: the H's curves of h_rms/delta_c agree within their intervals ({worst:.2f})")
-    return [row("p", statement, worst, math.nan, math.nan, 1.0, verdict, sweep=sweep,
-                loads="residual in units of the combination's half-interval")]
+    return [row("p", statement, collapse.difference, collapse.difference - collapse.bound,
+                collapse.difference + collapse.bound, 0.0, verdict, sweep=sweep, loads=_COLLAPSE_LOADS)]
 
 
 def _q(inputs):
