@@ -169,6 +169,8 @@ class StudySettings:
         The measured inputs, :class:`TopographyInput` and :class:`SpectrumInput`.
     tile : int or None
         Tile side of a measured scan in cells (``None``: the whole square).
+    stickiness : roughcontact.study.stickiness.settings.StickinessSettings or None
+        The stickiness sweep (claim (q); ``None``: the config has no ``stickiness`` section).
     config : mapping
         The resolved configuration itself, read-only: provenance and run files record it.
     """
@@ -184,6 +186,7 @@ class StudySettings:
     topography: tuple = ()
     spectrum: tuple = ()
     tile: int | None = None
+    stickiness: object = None
     config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
                                         compare=False)
 
@@ -206,6 +209,8 @@ class StudySettings:
         read once."""
         if isinstance(cfg, cls):
             return cfg
+        from .stickiness.settings import StickinessSettings
+
         grid, solver, fit = cfg["grid"], cfg["solver"], cfg["fit"]
         zeta, slopes = fit["zeta"], fit["slopes"]
         band = (fit.get("spectrum") or {}).get("band")
@@ -240,6 +245,7 @@ class StudySettings:
             topography=tuple(TopographyInput(**entry) for entry in cfg.get("topography") or ()),
             spectrum=tuple(SpectrumInput(**entry) for entry in cfg.get("spectrum") or ()),
             tile=None if cfg.get("tile") is None else int(cfg["tile"]),
+            stickiness=StickinessSettings.of(cfg),
             config=types.MappingProxyType(dict(cfg)),
         )
 

@@ -114,7 +114,7 @@ def run_stickiness_merge(cfg, run_files, out_nc, out_csv) -> None:
     s = StickinessSettings.of(cfg)
     ds = merge_stickiness(s, list(run_files))
     ds.attrs.update(provenance.provenance_attrs(
-        config=s.config, title="roughcontact stickiness runs: loading slopes F/A at the area A*",
+        config=getattr(cfg, "config", cfg), title="roughcontact stickiness runs: loading slopes F/A at the area A*",
         forces="e_star * length**2 (stickiness.csv: dF/dA in units of h'E*)"))
     with provenance.atomic_path(out_nc) as tmp:
         ds.to_netcdf(tmp, engine="netcdf4")

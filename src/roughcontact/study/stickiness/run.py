@@ -169,7 +169,7 @@ def run_stickiness_job(cfg, job, output) -> dict:
     s = StickinessSettings.of(cfg)
     out = stickiness_run(s, job)
     runfile.write_stickiness_run(output, out, attrs=provenance.provenance_attrs(
-        config=s.config, hurst=job.hurst, number=job.number, seed=job.seed, grid_n=s.n, grid_length=s.length,
+        config=getattr(cfg, "config", cfg), hurst=job.hurst, number=job.number, seed=job.seed, grid_n=s.n, grid_length=s.length,
         e_star=s.e_star, periodic=1, cutoff_cells=s.cutoff, area=s.area, solver_tol=s.tol,
         interaction="Maugis-Dugdale (roughcontact.bem.cohesive)",
         reference="L. Pastewka and M. O. Robbins, PNAS 111 (2014) 3298 (doi:10.1073/pnas.1320846111)"))

@@ -2,8 +2,7 @@
 from __future__ import annotations
 
 import dataclasses
-import types
-from typing import Mapping
+from collections.abc import Mapping
 
 __all__ = ["StickinessJob", "StickinessSettings"]
 
@@ -49,8 +48,6 @@ class StickinessSettings:
     tol, confidence, bootstrap :
         The solver's tolerance (``solver.tol``, at most 1e-8) and the interval of the merged table
         (``fit.zeta.confidence``, ``fit.zeta.bootstrap``).
-    config : mapping
-        The resolved configuration (provenance).
     """
 
     n: int
@@ -67,15 +64,14 @@ class StickinessSettings:
     tol: float
     confidence: float
     bootstrap: int
-    config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
-                                        compare=False)
 
     @classmethod
     def of(cls, cfg) -> "StickinessSettings | None":
-        """The sweep of a resolved configuration (:func:`roughcontact.study.config.resolve_config`,
-        or a :class:`~roughcontact.study.study_settings.StudySettings`); ``None`` where it has no
-        ``stickiness`` section."""
-        cfg = getattr(cfg, "config", cfg)
+        """The sweep of a resolved configuration (:func:`roughcontact.study.config.resolve_config`;
+        a :class:`~roughcontact.study.study_settings.StudySettings` has it as ``stickiness``);
+        ``None`` where it has no ``stickiness`` section."""
+        if not isinstance(cfg, Mapping):
+            return cfg.stickiness
         section = cfg.get("stickiness")
         if section is None:
             return None
@@ -87,7 +83,7 @@ class StickinessSettings:
                    range_ratio=float(section["range_ratio"]), seeds=int(section["seeds"]),
                    area=float(section["area"]), steps=int(section["steps"]),
                    tol=min(float(cfg["solver"]["tol"]), 1e-8), confidence=float(zeta["confidence"]),
-                   bootstrap=int(zeta["bootstrap"]), config=types.MappingProxyType(dict(cfg)))
+                   bootstrap=int(zeta["bootstrap"]))
 
     def jobs(self) -> list[StickinessJob]:
         """Every run, by H, then N, then seed (the order the merge expects)."""
