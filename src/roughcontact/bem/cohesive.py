@@ -66,6 +66,7 @@ import numpy as np
 
 from .._validate import check_finite, check_finite_positive
 from ..errors import ConvergenceError, DomainTooSmallError
+from .active_sets import bounding_box
 from .adhesion import AdhesivePath
 from .operators import FreeSpaceOperator, PeriodicOperator, operator_for
 
@@ -114,12 +115,6 @@ class CohesivePath(AdhesivePath):
     fallback: np.ndarray
     cohesive_stress: float
     interaction_range: float
-
-
-def _box(mask: np.ndarray) -> tuple[slice, slice]:
-    """Rows and columns of the bounding box of the true cells of *mask* (not empty)."""
-    rows, cols = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
-    return slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)
 
 
 def _full_contact(d: float) -> str:
@@ -218,7 +213,7 @@ class _CohesiveSolver:
         more than half of it a side). Stops when ``max_(q>0) |g| ≤ tol·s`` and
         ``min_(S, q=0) g ≥ −tol·s``, ``s = max(δ_t, max_S |h − d|)``."""
         n = self.heights.shape[0]
-        box, operator = _box(reach), self.windows
+        box, operator = bounding_box(reach), self.windows
         if self.periodic and max(side.stop - side.start for side in box) > n // 2:
             box, operator = (slice(0, n), slice(0, n)), self.operator
         inside = reach[box]
@@ -312,7 +307,7 @@ class _CohesiveSolver:
         n = self.heights.shape[0]
         if not reach.any():
             return self.heights <= d + self.range + shift, 0.0
-        rows, cols = _box(reach)
+        rows, cols = bounding_box(reach)
         inside = reach[rows, cols]
         pressure = np.where(inside, lift.on((rows, cols)) - self.sigma, 0.0)
         force = float(pressure.sum() * self.spacing**2)
@@ -324,7 +319,7 @@ class _CohesiveSolver:
         if not whole:
             bound = float(np.abs(pressure).sum()) * self._tail(margin + 1)
             candidates = self.heights <= d + self.range + shift + bound
-            c_rows, c_cols = _box(candidates) if candidates.any() else (rows, cols)
+            c_rows, c_cols = bounding_box(candidates) if candidates.any() else (rows, cols)
             del candidates
             window = [min(window[0], c_rows.start), max(window[1], c_rows.stop),
                       min(window[2], c_cols.start), max(window[3], c_cols.stop)]
