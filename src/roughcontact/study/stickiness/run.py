@@ -111,12 +111,12 @@ def _area_approach(z, s) -> float:
     raise IndentError(f"stickiness: no load brings the contact to stickiness.area = {s.area:g} of the grid")
 
 
-def stickiness_run(s, job, *, progress=None) -> dict:
+def stickiness_run(s, job) -> dict:
     """The loading path of one stickiness run (module docstring): a dict of the arrays ``depth``,
     ``force``, ``contact_cells``, ``zone_cells`` (one per approach) and the scalars of
     :data:`roughcontact.study.runfile.STICKINESS_SCALARS`. Raises
-    :class:`~roughcontact.errors.IndentError` naming the run when a solve does not converge.
-    *progress*: ``progress(i, total, text)`` after each approach."""
+    :class:`~roughcontact.errors.IndentError` naming the run when a solve does not converge; each
+    approach is logged."""
     name = f"stickiness {job.combination} seed {job.seed}"
     surface = stickiness_surface(s, job)
     z, reach, work, criterion = (surface.heights, surface.interaction_range, surface.work_of_adhesion,
@@ -133,11 +133,8 @@ def stickiness_run(s, job, *, progress=None) -> dict:
 
     def on_state(i, contact, zone):
         count["i"] = i + 1
-        text = (f"approach {i + 1}/{s.steps}: contact {np.count_nonzero(contact) / cells:.4f}, "
-                f"zone {np.count_nonzero(zone) / cells:.4f} of the grid")
-        logger.info("%s: %s", name, text)
-        if progress is not None:
-            progress(i + 1, s.steps, text)
+        logger.info("%s: approach %d/%d: contact %.4f, zone %.4f of the grid", name, i + 1, s.steps,
+                    np.count_nonzero(contact) / cells, np.count_nonzero(zone) / cells)
 
     try:
         path = cohesive_path(z, depths, length=s.length, e_star=s.e_star, work_of_adhesion=work,
