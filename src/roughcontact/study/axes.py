@@ -24,7 +24,8 @@ from typing import Callable
 from ..errors import ConfigError
 from .units import ENERGY_PER_AREA_UNITS, to_joules_per_square_metre, to_metres, to_pascals
 
-__all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES", "kind_of"]
+__all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES", "kind_of",
+           "paper_coordinates", "off_paper", "paper_setting", "paper_mask"]
 
 #: where an axis acts on a run: the roughness of the surface (an argument of
 #: :func:`roughcontact.surfaces.self_affine` and :func:`~roughcontact.surfaces.rough_sphere`),
@@ -170,6 +171,44 @@ def optional_axes() -> tuple[Axis, ...]:
 def schema_properties() -> dict:
     """``{name: schema entry}`` of every axis, for :func:`roughcontact.study.schema.load_schema`."""
     return {a.name: a.schema() for a in AXES.values()}
+
+
+def paper_coordinates(length: float) -> dict:
+    """``{name: coordinate}`` of the paper's setting of every optional axis, as merged-file
+    coordinates (:meth:`Axis.coordinate`; a roll-off of ``None`` is ``length``)."""
+    return {a.name: a.coordinate(a.paper, length) for a in optional_axes()}
+
+
+def off_paper(combination, length: float) -> dict:
+    """``{name: coordinate}`` of the optional axes at which *combination* (a mapping of axis name to
+    merged-file coordinate, e.g. a row of a table) is off the paper's setting; an axis the mapping
+    lacks (a table made before the axis existed) counts as at the paper's setting."""
+    out = {}
+    for name, paper in paper_coordinates(length).items():
+        value = combination.get(name, paper) if hasattr(combination, "get") else paper
+        if value is None or (isinstance(value, float) and math.isnan(value)):
+            continue
+        if float(value) != paper:
+            out[name] = float(value)
+    return out
+
+
+def paper_setting(combination, length: float) -> bool:
+    """Whether *combination* (axis name -> merged-file coordinate) is at the paper's setting of every
+    optional axis: the one test the scorecard, every claim, the ζ fit and the exponents use."""
+    return not off_paper(combination, length)
+
+
+def paper_mask(frame, length: float):
+    """A boolean array: which rows of the table *frame* (a pandas DataFrame with the axes as
+    columns) are at the paper's setting of every optional axis it has a column of."""
+    import numpy as np
+
+    keep = np.ones(len(frame), dtype=bool)
+    for name, paper in paper_coordinates(length).items():
+        if name in frame:
+            keep &= frame[name].to_numpy(float) == paper
+    return keep
 
 
 def _number(**bounds) -> dict:
