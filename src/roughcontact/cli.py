@@ -7,7 +7,7 @@ NetCDF file.  ``roughcontact measured scan.nc --unit um --tile 256 --radius 20 -
 --e-star-unit GPa -o tile0.nc`` presses one tile of a measured scan in physical units (the same
 code as the Snakemake ``measured_surface`` and ``measured_indent`` rules) and writes the same
 NetCDF file.  ``roughcontact check-config config.yaml`` validates a sweep
-without running it.  Settings of ``indent`` not given on the command line come from ``--config``, else
+without running it; ``roughcontact list axes|models|claims`` prints what the registries hold.  Settings of ``indent`` not given on the command line come from ``--config``, else
 from the defaults of the configuration schema (the same defaults as a sweep's).
 """
 from __future__ import annotations
@@ -20,6 +20,7 @@ import sys
 from .errors import ConfigError, IndentError
 from .study import config, indent, runs, schema
 from .study.axes import AXES
+from .study.registries import REGISTRIES, listing
 from .study.measured.config import (FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_newtons,
                                     to_pascals)
 from .study.settings import JobSettings, job_settings
@@ -161,7 +162,33 @@ def build_parser() -> argparse.ArgumentParser:
 
     chk = sub.add_parser("check-config", help="validate a sweep config (exit 2 with one line if invalid)")
     chk.add_argument("config", help="YAML config file, e.g. config.yaml or presets/paper.yaml")
+
+    lst = sub.add_parser("list", help="the registered sweep axes, models or claims, one per line",
+                         description="Print what a registry holds, one per line: axes (name, unit, paper value), "
+                                     "models (name, the optional axes it models, summary) or claims (letter, "
+                                     "statement); --json: the same as a JSON list of objects.")
+    lst.add_argument("registry", choices=REGISTRIES, help="which registry")
+    lst.add_argument("--json", action="store_true", help="a JSON list of objects (name, and paper for axes)")
     return p
+
+
+def _list(args) -> int:
+    """``roughcontact list``: one line per registered item, or ``--json``."""
+    import json
+
+    items = listing(args.registry)
+    if args.json:
+        print(json.dumps(items, indent=1))
+        return 0
+    for item in items:
+        if args.registry == "axes":
+            paper = "(required)" if not item["optional"] else ("null" if item["paper"] is None else f"{item['paper']}")
+            print(f"{item['name']}\tunit {item['unit']}\tpaper {paper}\t{item['role']}")
+        elif args.registry == "models":
+            print(f"{item['name']}\taxes {','.join(item['axes']) or '-'}\t{item['summary']}")
+        else:
+            print(f"{item['name']}\t{item['statement']}")
+    return 0
 
 
 def _check_numbers(args) -> None:
@@ -388,6 +415,8 @@ def main(argv=None) -> int:
         return 0
     if args.command == "measured":
         return _measured(args)
+    if args.command == "list":
+        return _list(args)
     try:
         settings = settings_from_args(args)
     except ConfigError as err:

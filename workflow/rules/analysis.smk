@@ -1,4 +1,14 @@
 # Merge the runs, fit zeta(H) (eq. 11), measure the crossover (eqs. 16, 17), the claims table.
+from roughcontact.study.registries import (
+    ANALYSIS_CODE,
+    code_fingerprint,
+)  # noqa: E402  (standard library only)
+
+# The fingerprint of the code each analysis rule runs: a new or changed model or claim reruns
+# the models or claims rule (params trigger), and no run.
+CODE = {rule: code_fingerprint(rule) for rule in ANALYSIS_CODE}
+
+
 rule merge:
     input:
         runs=run_files,
@@ -151,6 +161,7 @@ rule claims:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["claims"],  # the registered claims and their code
     script:
         "../scripts/claims.py"
 
@@ -189,5 +200,6 @@ rule models:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["models"],  # the registered models and their code
     script:
         "../scripts/models.py"

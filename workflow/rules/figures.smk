@@ -27,5 +27,6 @@ rule figures:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["figures"],  # the figures' code
     script:
         "../scripts/figures.py"

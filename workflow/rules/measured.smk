@@ -120,6 +120,7 @@ rule measured_spectrum:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["models"],  # the registered models and their code
     script:
         "../scripts/measured_spectrum.py"
 
@@ -143,6 +144,7 @@ rule measured_scorecard:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["models"],  # the registered models and their code
     script:
         "../scripts/measured_scorecard.py"
 

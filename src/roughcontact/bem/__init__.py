@@ -20,5 +20,10 @@ from .contact import (
     stiffness,
 )
 
-__all__ = ["DEFAULT_MAXITER", "ContactState", "displacement", "iter_load_path", "load_path", "solve",
+#: the version of the solvers' results: bumped on purpose by a change that alters what a run computes
+#: (a run of the pipeline is computed again when it changes; a change that keeps every result does not
+#: bump it). History: 1, the solvers of roughcontact 0.1.
+SOLVER_VERSION = 1
+
+__all__ = ["SOLVER_VERSION", "DEFAULT_MAXITER", "ContactState", "displacement", "iter_load_path", "load_path", "solve",
            "stiffness"]

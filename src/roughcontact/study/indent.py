@@ -25,12 +25,21 @@ logger = logging.getLogger(__name__)
 
 def make_surface(s: JobSettings) -> np.ndarray:
     """Heights of one run: a rough body of revolution, or a nominally flat surface; the axes
-    act through their role (:meth:`JobSettings.arguments`)."""
+    act through their role (:meth:`JobSettings.arguments`), and an axis with a transform on the
+    roughness heights before the body is added (:meth:`JobSettings.transforms`; without one,
+    :func:`roughcontact.surfaces.rough_sphere` itself: the same bytes)."""
     roughness = {**s.arguments("roughness"), "realization_of": s.realization_of}
-    if s.kind == "flat":
-        return surfaces.self_affine(s.n, length=s.length, seed=s.seed, **roughness)
-    return surfaces.rough_sphere(s.n, radius=s.radius, length=s.length, seed=s.seed, **roughness,
-                                 **s.arguments("body"))
+    transforms = s.transforms()
+    if s.kind == "sphere" and not transforms:
+        return surfaces.rough_sphere(s.n, radius=s.radius, length=s.length, seed=s.seed, **roughness,
+                                     **s.arguments("body"))
+    heights = surfaces.self_affine(s.n, length=s.length, seed=s.seed, **roughness)
+    for transform, value in transforms:
+        heights = np.asarray(transform(heights, value, s), dtype=float)
+    if s.kind == "sphere":   # the body added as rough_sphere adds it (the sum is the same bytes)
+        heights = heights + surfaces.body_of_revolution(s.n, radius=s.radius, length=s.length,
+                                                        **{"exponent": 2.0, **s.arguments("body")})
+    return heights
 
 
 @dataclasses.dataclass(frozen=True)

@@ -93,14 +93,26 @@ class JobSettings:
         """Keyword arguments of the axes acting as *role* (:data:`roughcontact.study.axes.ROLES`):
         ``roughness`` for the surface generator, ``body`` for the body, ``solver`` for the
         contact solver (converted by :attr:`~roughcontact.study.axes.Axis.to_solver`, e.g. the
-        hardness to a pressure); an axis at a ``None`` paper setting is passed as ``None``."""
+        hardness to a pressure), each under its :attr:`~roughcontact.study.axes.Axis.keyword`.
+        An optional axis at its paper value is passed to nothing (the function's default is the
+        paper's setting), nor is an axis that acts by a :meth:`transforms` of the heights."""
         out = {}
         for spec in axes.AXES.values():
-            if spec.role != role or spec.name == "radius" or self.kind not in spec.kinds:
+            if spec.role != role or spec.name == "radius" or self.kind not in spec.kinds or spec.transform:
                 continue
             value = self.value(spec.name)
-            out[spec.name] = spec.to_solver(value, self.e_star) if spec.to_solver and value is not None else value
+            if spec.at_paper(value):
+                continue
+            out[spec.keyword] = spec.to_solver(value, self.e_star) if spec.to_solver and value is not None else value
         return out
+
+    def transforms(self) -> list:
+        """``[(transform, value)]`` of the roughness axes that act on the heights
+        (:attr:`~roughcontact.study.axes.Axis.transform`) off their paper value, in the
+        registry's order."""
+        return [(spec.transform, self.value(spec.name)) for spec in axes.AXES.values()
+                if spec.transform is not None and self.kind in spec.kinds
+                and not spec.at_paper(self.value(spec.name))]
 
     def forces_normalized(self) -> np.ndarray:
         """The load path ``F/(E* L²)``, log-spaced."""
