@@ -1,0 +1,224 @@
+"""The package guide's three walk-throughs, done: each example of ``docs/guide/extending/`` is
+copied as one new module into a scratch copy of the package (its first line says where), with
+no other edit, and a study runs end to end through the real ``snakemake``.
+
+Checked (about 3 minutes on 2 cores):
+
+- ``roughcontact list axes|models|claims`` names the example axis, model and claim;
+- an existing results directory, made before the examples were copied in, reruns its models and
+  claims rules and none of its runs (the dry run's jobs; the run files' bytes);
+- a study with the example axis at its paper value and one other, on two sphere combinations:
+  the example model's rows in ``models.csv`` (and in a measured scan's scorecard), the example
+  claim's rows in ``claims.csv``, the rows off the paper's value called paper settings nowhere,
+  scored by no model that does not model the axis, and judged ``untested`` by claims (a)-(f).
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = ROOT / "docs" / "guide" / "extending"
+AXIS, MODEL, CLAIM = "plateau", "smooth_body", "x"
+
+#: two sphere combinations (two radii), one H and h_rms, on a small grid
+BASE = {"grid": {"n": 65, "length": 1.0}, "e_star": 1.0, "hurst": [0.7], "radius": [0.5, 1.0],
+        "h_rms": [2.0e-2], "seeds": 2,
+        "forces": {"sphere": {"from": 1.0e-5, "to": 1.0e-2, "count": 8}},
+        "solver": {"tol": 1.0e-8, "stiffness": "punch"},
+        "fit": {"zeta": {"min_cells": 10, "bootstrap": 100}}}
+#: the same with the example axis at its paper value (null) and one other
+WITH_AXIS = {**BASE, AXIS: [None, 1.0]}
+
+
+def module_of(example: Path) -> str:
+    """The dotted module an example goes to: its first line, ``# module: roughcontact.<path>``."""
+    first = example.read_text().splitlines()[0]
+    match = re.fullmatch(r"# module: (roughcontact(?:\.\w+)+)", first.strip())
+    assert match, f"{example.name}: first line {first!r} is not '# module: roughcontact.<dotted.path>'"
+    return match.group(1)
+
+
+def _snakemake(where: Path, config: Path, *args: str) -> subprocess.CompletedProcess:
+    env = {**os.environ, "PYTHONPATH": str(where / "src")}
+    return subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "--configfile", str(config), *args],
+                          cwd=where, env=env, capture_output=True, text=True, timeout=900)
+
+
+def _ok(done: subprocess.CompletedProcess) -> subprocess.CompletedProcess:
+    assert done.returncode == 0, f"snakemake failed:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}"
+    return done
+
+
+def _planned_rules(done: subprocess.CompletedProcess) -> dict:
+    """``{rule: jobs}`` of a dry run's job stats."""
+    text = done.stdout + done.stderr
+    if "Nothing to be done" in text:
+        return {}
+    table = text.split("Job stats:", 1)[1]
+    return {m.group(1): int(m.group(2)) for m in re.finditer(r"^(\w+)\s+(\d+)\s*$", table, re.M)
+            if m.group(1) != "total"}
+
+
+def _runs(where: Path) -> dict:
+    """``{run file: bytes}`` of every run file of a results directory."""
+    return {str(p.relative_to(where)): p.read_bytes() for p in sorted((where / "results" / "runs").rglob("*.nc"))}
+
+
+def _copy_in(where: Path, example: Path) -> None:
+    """Copy *example* as the new module its first line names, into the scratch copy *where*."""
+    target = where / "src" / Path(*module_of(example).split(".")).with_suffix(".py")
+    assert target.parent.is_dir(), f"{example.name}: no package {target.parent} to put it in"
+    assert not target.exists(), f"{example.name}: {target} exists already (an example is a new module)"
+    shutil.copy(example, target)
+
+
+@pytest.fixture(scope="module")
+def scratch(tmp_path_factory):
+    """A scratch copy of the checkout (package, workflow) in which the study BASE ran; then the
+    model and the claim examples copied in and a dry run made, then the axis example and another.
+    Yields the directory, the run files before, and ``{"model and claim": jobs, "axis": jobs}``
+    of the two dry runs (``{rule: count}``)."""
+    where = tmp_path_factory.mktemp("extending")
+    shutil.copytree(ROOT / "src", where / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    shutil.copytree(ROOT / "workflow", where / "workflow", ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(ROOT / "envs", where / "envs")
+    shutil.copy(ROOT / "Snakefile", where / "Snakefile")
+    shutil.copy(ROOT / "config.yaml", where / "config.yaml")
+    base = where / "base.yaml"
+    base.write_text(yaml.safe_dump(BASE))
+    _ok(_snakemake(where, base, "-q"))
+    before = _runs(where)
+    planned = {}
+    for step, examples in (("model and claim", ("model_example.py", "claim_example.py")),
+                           ("axis", ("axis_example.py",))):
+        for name in examples:
+            _copy_in(where, EXAMPLES / name)
+        planned[step] = _planned_rules(_ok(_snakemake(where, base, "-n")))
+    return where, before, planned
+
+
+def _list(where: Path, registry: str) -> list:
+    env = {**os.environ, "PYTHONPATH": str(where / "src")}
+    done = subprocess.run([sys.executable, "-m", "roughcontact.cli", "list", registry, "--json"], cwd=where,
+                          env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def test_every_example_names_its_module():
+    names = sorted(p.name for p in EXAMPLES.glob("*_example.py"))
+    assert names == ["axis_example.py", "claim_example.py", "model_example.py"], f"examples: {names}"
+
+
+@pytest.mark.parametrize("registry, name", [("axes", AXIS), ("models", MODEL), ("claims", CLAIM)])
+def test_list_names_the_example(scratch, registry, name):
+    where, _, _ = scratch
+    assert name in [item["name"] for item in _list(where, registry)], f"roughcontact list {registry}"
+
+
+def test_list_gives_the_example_axis_paper_value(scratch):
+    where, _, _ = scratch
+    entry = next(item for item in _list(where, "axes") if item["name"] == AXIS)
+    assert entry["paper"] is None, f"paper value of {AXIS}: {entry['paper']!r} (expected null)"
+
+
+def test_a_new_model_and_claim_rerun_models_and_claims(scratch):
+    _, _, planned = scratch
+    assert {"models", "claims"} <= set(planned["model and claim"]), f"planned: {planned['model and claim']}"
+
+
+def test_a_new_model_and_claim_rerun_no_run(scratch):
+    _, _, planned = scratch
+    assert "indent" not in planned["model and claim"], f"planned: {planned['model and claim']}"
+
+
+def test_a_new_model_and_claim_rerun_no_merge(scratch):
+    _, _, planned = scratch
+    assert "merge" not in planned["model and claim"], f"planned: {planned['model and claim']}"
+
+
+def test_a_new_axis_reruns_no_run(scratch):
+    _, _, planned = scratch
+    assert "indent" not in planned["axis"], f"planned after adding the axis: {planned['axis']}"
+
+
+@pytest.fixture(scope="module")
+def with_axis(scratch):
+    """The study with the example axis at its paper value and 1.0, run in the same directory."""
+    where, before, _ = scratch
+    config = where / "with_axis.yaml"
+    config.write_text(yaml.safe_dump(WITH_AXIS))
+    planned = _planned_rules(_ok(_snakemake(where, config, "-n")))
+    _ok(_snakemake(where, config, "-q"))
+    return where, before, planned
+
+
+def test_axis_at_its_paper_value_keeps_the_runs(with_axis):
+    where, before, _ = with_axis
+    after = _runs(where)
+    kept = [name for name in before if after.get(name) == before[name]]
+    assert kept == list(before), f"run files changed by the example axis: {set(before) - set(kept)}"
+
+
+def test_axis_off_its_paper_value_adds_only_its_runs(with_axis):
+    _, before, planned = with_axis
+    assert planned.get("indent") == len(before), f"indent jobs planned: {planned.get('indent')} (new runs: {len(before)})"
+
+
+def test_example_model_scores_every_combination(with_axis):
+    where, _, _ = with_axis
+    models = pd.read_csv(where / "results" / "models.csv")
+    assert len(models[models["model"] == MODEL]) == 4, models[["model", "combination"]].to_string()
+
+
+def test_off_paper_rows_are_no_paper_setting(with_axis):
+    where, _, _ = with_axis
+    models = pd.read_csv(where / "results" / "models.csv")
+    off = models[np.isfinite(models[AXIS].to_numpy(float))]
+    assert len(off) and not off["paper_setting"].any(), off[["model", "combination", "paper_setting"]].to_string()
+
+
+def test_off_paper_rows_of_models_without_the_axis_are_not_ranked(with_axis):
+    where, _, _ = with_axis
+    models = pd.read_csv(where / "results" / "models.csv")
+    off = models[np.isfinite(models[AXIS].to_numpy(float))]
+    assert off["rank"].isna().all(), off[["model", "combination", "rank"]].to_string()
+
+
+def test_off_paper_rows_name_the_axis_they_do_not_model(with_axis):
+    where, _, _ = with_axis
+    models = pd.read_csv(where / "results" / "models.csv")
+    off = models[np.isfinite(models[AXIS].to_numpy(float))]
+    assert off["not_modelled"].astype(str).str.contains(AXIS).all(), off[["model", "not_modelled"]].to_string()
+
+
+def test_example_claim_has_a_row_per_sphere_combination(with_axis):
+    where, _, _ = with_axis
+    claims = pd.read_csv(where / "results" / "claims.csv")
+    assert len(claims[claims["claim"] == CLAIM]) == 4, claims[["claim", "verdict"]].to_string()
+
+
+def test_example_claim_gives_verdicts(with_axis):
+    where, _, _ = with_axis
+    claims = pd.read_csv(where / "results" / "claims.csv")
+    verdicts = set(claims[claims["claim"] == CLAIM]["verdict"])
+    assert verdicts <= {"consistent", "differs", "untested"}, f"verdicts of ({CLAIM}): {verdicts}"
+
+
+def test_paper_claims_are_untested_off_the_axis_paper_value(with_axis):
+    where, _, _ = with_axis
+    claims = pd.read_csv(where / "results" / "claims.csv")
+    off = claims[claims["claim"].isin(list("abdef")) & np.isfinite(claims[AXIS].to_numpy(float))]
+    assert len(off) and (off["verdict"] == "untested").all() and off["reason"].str.contains(AXIS).all(), \
+        off[["claim", "verdict", "reason"]].to_string()
