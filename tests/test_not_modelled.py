@@ -210,3 +210,56 @@ def test_measured_rank_skips_not_modelled_rows():
     table = pd.DataFrame({"kind": "sphere", "radius": 0.5, "model": ["a", "b", "c"],
                           "max_rel_dev": [0.3, 0.1, 0.2], "not_modelled": ["", "hardness = 0.5", ""]})
     np.testing.assert_array_equal(not_modelled.rank(table, ["kind", "radius"]), [2.0, np.nan, 1.0])
+
+
+def test_measured_surface_is_at_the_paper_setting():
+    """A measured scan's Surface (study.measured.models.surface_of) carries the paper's coordinates."""
+    from roughcontact.study.measured.models import surface_of
+    from roughcontact.surfaces import self_affine
+    from roughcontact.surfaces.spectrum_fit import fit_spectrum
+
+    fit = fit_spectrum(self_affine(64, hurst=0.8, h_rms=0.009, length=1.0, seed=1), length=1.0, window=None,
+                       detrend="mean", resamples=10)
+    surface = surface_of(fit, radius=0.5, e_star=1.0, length=1.0, n=64)
+    assert dict(surface.axes) == axes.paper_coordinates(1.0), dict(surface.axes)
+
+
+def _measured_groups(hardness=None):
+    """Merged runs of one scan (two radii, three tiles, four loads, every load resolved) with k = 1,
+    and the predictions of two models, eq16_paper (k = 1.2) and contact_scale (k = 1.1);
+    *hardness*: a scalar coordinate of the merged runs (none in today's measured runs)."""
+    force = np.geomspace(1e-6, 1e-3, 4)
+    shape = (2, 3, 4)
+    runs = xr.Dataset({"stiffness": (("radius", "tile", "force"), np.ones(shape)),
+                       "contact_cells": (("radius", "tile", "force"), np.full(shape, 100)),
+                       **{v: (("radius", "force"), np.ones((2, 4))) for v in ("k_mean", "k_ci_low", "k_ci_high")}},
+                      coords={"radius": [0.5, 1.0], "force": force, "force_normalized": ("force", force)})
+    if hardness is not None:
+        runs = runs.assign_coords(hardness=hardness)
+    models = xr.Dataset({"stiffness": (("model", "radius", "force"),
+                                       np.stack([np.full((2, 4), 1.2), np.full((2, 4), 1.1)]))},
+                        coords={"model": ["eq16_paper", "contact_scale"], "radius": [0.5, 1.0], "force": force,
+                                "force_normalized": ("force", force)})
+    spectrum = xr.Dataset(attrs={"tile_length": 1.0})
+    return {"sphere": runs}, {"sphere": models, "spectrum": spectrum}
+
+
+def test_measured_scorecard_at_the_paper_setting_ranks_every_model():
+    from roughcontact.study.measured.scorecard import measured_scorecard
+
+    table = measured_scorecard(*_measured_groups(), name="scan", min_cells=10)
+    assert table["rank"].tolist() == [2.0, 1.0, 2.0, 1.0], table[["radius", "model", "rank"]].to_string()
+
+
+def test_measured_scorecard_names_an_undeclared_axis():
+    from roughcontact.study.measured.scorecard import measured_scorecard
+
+    table = measured_scorecard(*_measured_groups(hardness=0.5), name="scan", min_cells=10)
+    assert table["not_modelled"].tolist() == ["hardness = 0.5"] * 4, table[["model", "not_modelled"]].to_string()
+
+
+def test_measured_scorecard_does_not_rank_not_modelled_rows():
+    from roughcontact.study.measured.scorecard import measured_scorecard
+
+    table = measured_scorecard(*_measured_groups(hardness=0.5), name="scan", min_cells=10)
+    assert table["rank"].isna().all(), table[["model", "rank"]].to_string()
