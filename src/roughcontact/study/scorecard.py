@@ -279,9 +279,11 @@ def _figure(path, label: str, curve, table) -> None:
         if name in curve:
             mark = table[(table["combination"] == label) & (table["model"] == name)]
             text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
-            if len(mark) and mark[unmodelled.COLUMN].iloc[0]:
-                text += ", not modelled: " + mark[unmodelled.COLUMN].iloc[0]
-            ax.semilogx(force[shown], curve[name].values[shown], "o-", ms=3, label=name + text)
+            missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
+            if missing:                      # not scored: dashed, the axes it ignores named
+                text += ", not modelled: " + missing
+            ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
+                        label=name + text)
     ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1", title=label)
     ax.legend(fontsize=7)
     fig.tight_layout()
