@@ -28,10 +28,23 @@ COLUMN = "not_modelled"
 
 
 def not_modelled(model: str | registry.Model, combination: Mapping, length: float) -> str:
-    """The optional axes at which *combination* (axis name -> merged-file coordinate) is off the
-    paper's setting and which *model* (a registered model or its name) does not declare, as
-    ``"name = value; ..."`` in the registry's order of the axes; ``""`` if none. A name that is not
-    registered declares no axis."""
+    """The optional axes at which a combination is off the paper's setting and a model does not declare.
+
+    Parameters
+    ----------
+    model : str or roughcontact.models.scorecard.Model
+        A registered model or its name (a name that is not registered declares no axis).
+    combination : Mapping
+        Axis name -> merged-file coordinate (a missing optional axis is at the paper's setting,
+        :func:`roughcontact.study.axes.off_paper`).
+    length : float
+        The system size ``L`` (the paper's roll-off coordinate).
+
+    Returns
+    -------
+    str
+        ``"name = value; ..."`` in the registry's order of the axes; ``""`` if none.
+    """
     if isinstance(model, str):
         model = registry.models().get(model)
     off = axes.off_paper(combination, length)
@@ -40,8 +53,19 @@ def not_modelled(model: str | registry.Model, combination: Mapping, length: floa
 
 
 def unscored(row: dict) -> dict:
-    """*row* (a scorecard row with its :data:`COLUMN`) with every verdict column (``*_verdict``)
-    ``untested: not modelled: <axes>`` where the column names axes; unchanged otherwise."""
+    """A scorecard row with its verdicts untested where the model does not model the combination.
+
+    Parameters
+    ----------
+    row : dict
+        One row of a scorecard, with its :data:`COLUMN`.
+
+    Returns
+    -------
+    dict
+        *row* with every verdict column (``*_verdict``) ``untested: not modelled: <axes>`` where
+        :data:`COLUMN` names axes; *row* itself otherwise.
+    """
     missing = row.get(COLUMN, "")
     if not missing:
         return row
@@ -50,8 +74,21 @@ def unscored(row: dict) -> dict:
 
 
 def rank(table, by):
-    """``rank`` of each row of *table* (a pandas DataFrame) by ``max_rel_dev`` within the groups
-    *by* (1: the best), among the scored rows only (empty :data:`COLUMN`); NaN for the others."""
+    """The rank of each row by ``max_rel_dev`` among the scored rows of its group.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A scorecard with ``max_rel_dev`` and, if any row is not scored, :data:`COLUMN`.
+    by : str or list of str
+        The columns whose values form a group (one combination).
+
+    Returns
+    -------
+    pandas.Series
+        Float ranks (1: the best, ties the lowest rank) among the rows whose :data:`COLUMN` is
+        empty; NaN for the others.
+    """
     scored = (table[COLUMN].fillna("") == "").to_numpy() if COLUMN in table else np.ones(len(table), dtype=bool)
     keys = [table[b] for b in ([by] if isinstance(by, str) else by)]
     ranks = table["max_rel_dev"].where(scored).groupby(keys, dropna=False).rank(method="min")

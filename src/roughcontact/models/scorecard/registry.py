@@ -133,9 +133,19 @@ class Model:
         object.__setattr__(self, "axes", tuple(self.axes))
 
     def undeclared(self, off_paper: Mapping[str, float]) -> dict[str, float]:
-        """The entries of *off_paper* (optional axes off the paper's value, name -> coordinate,
-        e.g. :func:`roughcontact.study.axes.off_paper`) whose axis the model does not declare,
-        in the order given."""
+        """The optional axes off the paper's value that the model does not declare.
+
+        Parameters
+        ----------
+        off_paper : Mapping[str, float]
+            Optional axes off the paper's value, name -> coordinate (e.g.
+            :func:`roughcontact.study.axes.off_paper`).
+
+        Returns
+        -------
+        dict of str to float
+            The entries of *off_paper* whose axis is not in :attr:`axes`, in the order given.
+        """
         return {name: value for name, value in off_paper.items() if name not in self.axes}
 
 
