@@ -13,7 +13,8 @@ By role, bottom up (modules of ``roughcontact.study``):
   ``verdicts`` (eq. 16 fits, crossover), ``exponents``, ``convergence``, ``calibration``,
   ``grid_error`` (the grid error of an ensemble mean);
 * results: ``claims`` (the claim registry and the claims table), ``scorecard`` (every model of
-  :mod:`roughcontact.models.scorecard` against the ensembles), ``figures``, ``plotting`` and
+  :mod:`roughcontact.models.scorecard` against the ensembles; ``not_modelled`` the rows it does
+  not score: a model off the paper value of an axis it does not declare), ``figures``, ``plotting`` and
   ``tables``;
 * ``measured``: scans and spectra pressed in physical units.
 

@@ -13,6 +13,14 @@ A model that does not apply to a combination (Greenwood–Tripp off the parabolo
 roll-off or cutoff) has no row for it; an adhesive combination (``work_of_adhesion`` > 0) has
 none (the models are elastic; its pull-off is ``results/adhesion/pull_off.csv``). Forces are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
 
+``paper_setting`` is :func:`roughcontact.study.axes.paper_setting`: every optional axis at the
+paper's value. Each model declares the optional axes it models
+(:attr:`roughcontact.models.scorecard.Model.axes`) and reads every optional axis of the
+combination in :attr:`~roughcontact.models.scorecard.Surface.axes`; on a combination off the
+paper's value of an axis the model does not declare, ``not_modelled`` names those axes and the
+row keeps its deviations but is not scored (no ``rank``, every verdict
+``untested: not modelled: <axes>``; :mod:`roughcontact.study.not_modelled`).
+
 Grid error (``grid.coarse``, :mod:`roughcontact.study.grid_error`): with the same surfaces pressed
 on a coarser grid, ``g = k̄_coarse/k̄ − 1`` at each load bounds the grid error of the study's own
 ensemble mean (for a sequence converging at an order ``p ≥ 1`` under a refinement ratio ``r ≥ 2``
@@ -38,7 +46,8 @@ import numpy as np
 
 from ..models import paper
 from ..models import scorecard as registry
-from . import provenance, runs
+from . import axes, provenance, runs
+from . import not_modelled as unmodelled
 from .ensemble import resolved
 from .plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval, verdict
@@ -56,30 +65,31 @@ class Combination(dict):
 
     @property
     def paper_setting(self) -> bool:
-        """No roll-off, no cutoff and elastic (the axes eqs. 11–17 are written for)."""
-        return (self["rolloff"] == self["length"] and self["cutoff"] == 0.0
-                and math.isinf(self["hardness"]) and self.get("work_of_adhesion", 0.0) == 0.0)
+        """Every optional axis at the paper's value (:func:`roughcontact.study.axes.paper_setting`)."""
+        return axes.paper_setting(self, self["length"])
 
     def surface(self) -> registry.Surface:
-        """What the models read (:class:`roughcontact.models.scorecard.Surface`)."""
+        """What the models read (:class:`roughcontact.models.scorecard.Surface`), with every
+        optional axis of the combination in its ``axes`` (merged-file coordinates)."""
         length = self["length"]
         return registry.Surface(
             hurst=self["hurst"], h_rms=self["h_rms"], radius=self["radius"], length=length, n=int(self["n"]),
             e_star=self["e_star"], exponent=self["exponent"], zeta_fit=self["zeta_fit"],
             rolloff=runs.axis_value("rolloff", self["rolloff"], length),
-            cutoff=runs.axis_value("cutoff", self["cutoff"], length))
+            cutoff=runs.axis_value("cutoff", self["cutoff"], length),
+            axes={a.name: self[a.name] for a in axes.optional_axes() if a.name in self})
 
 
 def _combinations(ds, study: StudySettings, zeta_of: dict):
-    axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
-    for position in itertools.product(*(range(ds.sizes[a]) for a in axes)):
-        combo = Combination({a: float(ds[a].values[i]) for a, i in zip(axes, position)})
+    dims = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
+    for position in itertools.product(*(range(ds.sizes[a]) for a in dims)):
+        combo = Combination({a: float(ds[a].values[i]) for a, i in zip(dims, position)})
         for axis, setting in runs.DEFAULTS.items():   # an axis a file made before it existed lacks
             if axis in runs.AXES["sphere"]:
                 combo.setdefault(axis, runs.coordinate(axis, setting, study.grid.length))
         combo.update(n=study.grid.n, length=study.grid.length, e_star=study.e_star,
                      zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)))
-        yield combo, ds.isel(dict(zip(axes, position))).transpose("seed", "force")
+        yield combo, ds.isel(dict(zip(dims, position))).transpose("seed", "force")
 
 
 def combo_label(c: Combination) -> str:
@@ -205,14 +215,15 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
             systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level),
                           **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level)}
             grid = {} if g is None else _with_grid(dev, band, g, use, branches, k_boot, k_mean, systematic)
-            rows.append({
+            rows.append(unmodelled.unscored({
                 "model": name, **{a: combo[a] for a in runs.AXES["sphere"]}, "combination": label,
                 "max_rel_dev": float(np.abs(dev[use]).max()), "max_rel_dev_ci_low": low,
                 "max_rel_dev_ci_high": high, "rms_rel_dev": float(np.sqrt(np.mean(dev[use] ** 2))),
                 "n_loads": int(use.sum()), "force_min": float(force_norm[use].min()),
                 "force_max": float(force_norm[use].max()), "paper_setting": combo.paper_setting,
+                unmodelled.COLUMN: unmodelled.not_modelled(name, combo, L),
                 "inside_band": float(inside.mean()), "crossover_force": f_tr, **systematic, **grid,
-            })
+            }))
         curves[label] = xr.Dataset(
             {**{name: ("force", dev, {"long_name": f"k_{name}/k_BEM - 1", "units": "1"})
                 for name, dev in dev_of.items()},
@@ -225,19 +236,25 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
             attrs={k: v for k, v in combo.items()})
     table = pd.DataFrame(rows)
     if len(table):
-        table["rank"] = table.groupby("combination")["max_rel_dev"].rank(method="min").astype(int)
+        table["rank"] = unmodelled.rank(table, "combination")
     return table, curves
 
 
 def scorecard_lead() -> str:
     """The lead paragraph of the scorecard page of the report (the registered models' summaries)."""
-    summaries = "; ".join(model.summary for model in registry.models().values())
+    summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
+                          for model in registry.models().values())
+    optional = ", ".join(a.name for a in axes.optional_axes())
     return ("Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
             "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
             "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
-            "deviations; rank 1 is the best model of its combination; inside_band the fraction of those loads "
-            "where the model lies inside the ensemble's band; systematic_low and systematic_high the mean "
-            "deviation below and above the crossover force (eq. 17), weighted by the inverse variance of the "
+            "deviations; rank 1 is the best model of its combination; paper_setting says whether every "
+            f"optional axis ({optional}) is at the paper's value; not_modelled names the optional axes, with "
+            "their values, at which the combination is off the paper's value and which the model does not "
+            "model (its prediction ignores them; each model's modelled axes follow its summary at the end): such a "
+            "row keeps its deviations but is not scored (no rank, every verdict untested: not modelled); "
+            "inside_band the fraction of those loads where the model lies inside the ensemble's band; "
+            "systematic_low and systematic_high the mean deviation below and above the crossover force (eq. 17), weighted by the inverse variance of the "
             "ensemble mean, with its interval and verdict on 0 (differs: a significant systematic deviation). "
             "With grid.coarse (the same surfaces on a coarser grid): grid_error_max the largest grid error "
             "bound |k_coarse/k_BEM - 1| over those loads, grid_resolved the fraction of loads where it is at "
@@ -262,7 +279,11 @@ def _figure(path, label: str, curve, table) -> None:
         if name in curve:
             mark = table[(table["combination"] == label) & (table["model"] == name)]
             text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
-            ax.semilogx(force[shown], curve[name].values[shown], "o-", ms=3, label=name + text)
+            missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
+            if missing:                      # not scored: dashed, the axes it ignores named
+                text += ", not modelled: " + missing
+            ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
+                        label=name + text)
     ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1", title=label)
     ax.legend(fontsize=7)
     fig.tight_layout()
@@ -288,7 +309,7 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
     write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
                                       "systematic_low_total_verdict", "systematic_high_total_verdict"),
-                     first=("combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low",
+                     first=("combination", "model", "rank", unmodelled.COLUMN, "max_rel_dev", "max_rel_dev_ci_low",
                             "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "inside_band_total",
                             "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
                             "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",

@@ -22,4 +22,6 @@ def contact_scale(force, s: Surface):
 register(Model(
     "contact_scale",
     "contact_scale: this package's model, eqs. 10 and 12 joined by a p-norm with the roughness seen at the "
-    "contact's scale, constants calibrated on named presets", contact_scale, "roughcontact.models.superposition"))
+    "contact's scale, constants calibrated on named presets", contact_scale, "roughcontact.models.superposition",
+    # reads the exponent, and the roll-off and cutoff through the grid's spectrum; elastic only
+    axes=("exponent", "rolloff", "cutoff")))

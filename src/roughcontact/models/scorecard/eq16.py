@@ -8,6 +8,10 @@ from ..zeta_law import zeta_law
 from .registry import Model, Surface, register
 
 REFERENCE = "R. Pohrt, V. L. Popov, Adv. Tribol. 2013, 974178, doi:10.1155/2013/974178"
+#: the optional axes eq. 16 models: the body exponent m (eq. 7's κ and eq. 16's profile); it is
+#: written for the pure self-affine spectrum and an elastic half-space, so roll-off, cutoff and
+#: hardness are not read (ζ, fitted or from a law, is the paper setting's)
+AXES = ("exponent",)
 
 
 def _eq16(force, s: Surface, zeta: float):
@@ -33,7 +37,7 @@ def eq16_law(force, s: Surface):
     return _eq16(force, s, float(zeta_law(s.hurst)))
 
 
-register(Model("eq16_paper", "eq16_paper: eq. 16 with zeta = 1.7/(H+1)", eq16_paper, REFERENCE))
-register(Model("eq16_fitted", "eq16_fitted: with the zeta fitted on this study", eq16_fitted, REFERENCE))
+register(Model("eq16_paper", "eq16_paper: eq. 16 with zeta = 1.7/(H+1)", eq16_paper, REFERENCE, axes=AXES))
+register(Model("eq16_fitted", "eq16_fitted: with the zeta fitted on this study", eq16_fitted, REFERENCE, axes=AXES))
 register(Model("eq16_law", "eq16_law: with the zeta(H) law calibrated on presets/zeta-law.yaml", eq16_law,
-               "roughcontact.models.zeta_law (claim c')"))
+               "roughcontact.models.zeta_law (claim c')", axes=AXES))

@@ -23,4 +23,7 @@ def mdr(force, s: Surface):
 
 
 register(Model("mdr", "mdr: the method of dimensionality reduction, 1000 seeded 1D profiles on a Winkler "
-                      "foundation", mdr, "doi:10.1103/PhysRevE.76.036710"))
+                      "foundation", mdr, "doi:10.1103/PhysRevE.76.036710",
+               # declines (None) off the paraboloid; the profiles' spectrum has the roll-off and
+               # cutoff; an elastic Winkler foundation
+               axes=("exponent", "rolloff", "cutoff")))

@@ -21,4 +21,7 @@ def persson(force, s: Surface):
 
 
 register(Model("persson", "persson: Persson's interfacial law from the grid's spectrum as a compliant layer under "
-                          "the paraboloid", persson, "doi:10.1063/1.1388626"))
+                          "the paraboloid", persson, "doi:10.1063/1.1388626",
+               # declines (None) off the paraboloid; the grid's spectrum has the roll-off and
+               # cutoff; elastic only
+               axes=("exponent", "rolloff", "cutoff")))

@@ -1,10 +1,16 @@
 """The registry of the scorecard's models: what a model reads (:class:`Surface`), what it is
-(:class:`Model`) and :func:`register`."""
+(:class:`Model`, with the optional sweep axes it models) and :func:`register`.
+
+The optional sweep axes (:mod:`roughcontact.study.axes`: ``exponent``, ``rolloff``, ``cutoff``,
+``hardness``, ``work_of_adhesion`` and any registered later) are named here by string only: the
+models sit below the study and do not import it.
+"""
 from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Callable
+import types
+from typing import Callable, Mapping
 
 __all__ = ["Surface", "Model", "MODELS", "register", "PERSSON_BINS_PER_DECADE"]
 
@@ -42,6 +48,12 @@ class Surface:
         grid's own self-affine one.
     moments : roughcontact.surfaces.moments.SpectralMoments or None
         The measured spectrum's moments (asperity statistics) instead of the self-affine ones.
+    axes : Mapping[str, float]
+        Every optional sweep axis of the combination by name, as its merged-file coordinate
+        (:meth:`roughcontact.study.axes.Axis.coordinate`: a roll-off at the paper's setting is
+        ``length``, a cutoff 0, a hardness ``inf``), read-only; the scorecards fill it, so a
+        model that declares an axis registered after this class was written reads its value
+        here. An axis the mapping lacks is at the paper's setting.
     """
 
     hurst: float
@@ -56,6 +68,10 @@ class Surface:
     zeta_fit: float = math.nan
     spectrum: object = None
     moments: object = None
+    axes: Mapping[str, float] = dataclasses.field(default_factory=dict, hash=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "axes", types.MappingProxyType({str(k): float(v) for k, v in self.axes.items()}))
 
     @property
     def flat(self) -> bool:
@@ -95,12 +111,42 @@ class Model:
         solution), or ``None`` where the model does not apply to *surface*.
     reference : str
         Where the model comes from (a DOI or the module that derives it).
+    axes : tuple of str
+        The optional sweep axes the model declares, by name (``hurst``, ``radius`` and
+        ``h_rms`` are always read and not listed). An axis is declared when the model's
+        prediction takes its value into account (reads it from the :class:`Surface`: a field,
+        :meth:`Surface.grid_spectrum` or :attr:`Surface.axes`) or explicitly declines it
+        (returns ``None`` off its paper value). On a combination off the paper value of an
+        axis the model does not declare, the scorecards keep its deviations but do not score
+        it (:meth:`undeclared`; column ``not_modelled``).
     """
 
     name: str
     summary: str
     predict: Callable
     reference: str = ""
+    axes: tuple[str, ...] = ()
+
+    def __post_init__(self):
+        if isinstance(self.axes, str) or not all(isinstance(a, str) for a in self.axes):
+            raise TypeError(f"model {self.name!r}: axes must be a tuple of axis names, got {self.axes!r}")
+        object.__setattr__(self, "axes", tuple(self.axes))
+
+    def undeclared(self, off_paper: Mapping[str, float]) -> dict[str, float]:
+        """The optional axes off the paper's value that the model does not declare.
+
+        Parameters
+        ----------
+        off_paper : Mapping[str, float]
+            Optional axes off the paper's value, name -> coordinate (e.g.
+            :func:`roughcontact.study.axes.off_paper`).
+
+        Returns
+        -------
+        dict of str to float
+            The entries of *off_paper* whose axis is not in :attr:`axes`, in the order given.
+        """
+        return {name: value for name, value in off_paper.items() if name not in self.axes}
 
 
 #: every registered model, in registration order

@@ -33,17 +33,20 @@ from ..._validate import check_finite_positive, check_grid_size, check_radius
 from ...models import paper
 from ...models import scorecard as registry
 from ...surfaces.spectrum_fit import SpectrumFit
+from .. import axes
 
 __all__ = ["crossover_force", "predict", "surface_of"]
 
 
 def surface_of(fit: SpectrumFit, *, radius, e_star, length, n, zeta=None, h_rms=None) -> registry.Surface:
     """The :class:`~roughcontact.models.scorecard.Surface` the models read for the fitted surface
-    (paraboloid, no roll-off, no cutoff, the measured spectrum and its moments)."""
+    (paraboloid, no roll-off, no cutoff, the measured spectrum and its moments): a measured run
+    is at the paper's setting of every optional axis, so its ``axes`` are the paper's coordinates
+    (:func:`roughcontact.study.axes.paper_coordinates` of *length*)."""
     return registry.Surface(
         radius=float(radius), hurst=fit.hurst, h_rms=fit.h_rms_for(length, n) if h_rms is None else float(h_rms),
         length=float(length), e_star=float(e_star), n=int(n), zeta_fit=math.nan if zeta is None else float(zeta),
-        spectrum=fit.spectrum, moments=fit.moments)
+        spectrum=fit.spectrum, moments=fit.moments, axes=axes.paper_coordinates(float(length)))
 
 
 def crossover_force(fit: SpectrumFit, *, radius: float, e_star: float, length: float, n: int,

@@ -9,6 +9,11 @@ rule :func:`roughcontact.study.ensemble.resolved`) where the model has a value:
 * ``inside_band``: the fraction of those loads where the model lies inside the bootstrap
   interval of the mean over tiles (``k_ci_low ≤ k_model ≤ k_ci_high``; NaN with one tile).
 
+``not_modelled`` (:mod:`roughcontact.study.not_modelled`): the optional axes at which the
+merged runs are off the paper's setting (a coordinate of the merged group; a measured run is a
+paraboloid without roll-off, cutoff or hardness, so today none) and which the model does not
+declare; such a row keeps its deviations but has no ``rank``.
+
 Stiffnesses are compared in N/m at the same forces (N).
 """
 from __future__ import annotations
@@ -17,6 +22,8 @@ import math
 
 import numpy as np
 
+from .. import axes
+from .. import not_modelled as unmodelled
 from ..ensemble import resolved
 from ..study_settings import StudySettings
 
@@ -28,7 +35,9 @@ MEASURED_SCORECARD_LEAD = (
     "fitted; Greenwood-Tripp and Persson read the measured spectrum itself); max_rel_dev is the largest "
     "|k_model/k_mean - 1| over the resolved loads against the mean over the tiles, rms_rel_dev the rms of "
     "the same deviations, inside_band the fraction of those loads where the model lies inside the bootstrap "
-    "interval of the mean over the tiles. The CSV beside this page holds every digit.")
+    "interval of the mean over the tiles; not_modelled names the optional axes off the paper's value that "
+    "the model does not model (a measured run is at the paper's value of every optional axis, so it is "
+    "empty): such a row has no rank. The CSV beside this page holds every digit.")
 
 
 def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: int):
@@ -38,6 +47,8 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
     import pandas as pd
 
     rows = []
+    spectrum = predicted.get("spectrum")
+    length = float(spectrum.attrs.get("tile_length", math.nan)) if spectrum is not None else math.nan
     for kind in ("sphere", "flat"):
         if kind not in merged or kind not in predicted:
             continue
@@ -49,6 +60,8 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
         for radius in radii:
             pick = {"radius": radius} if kind == "sphere" else {}
             sub, pred = runs.sel(pick), models.sel(pick)
+            setting = {a.name: float(sub[a.name]) for a in axes.optional_axes()     # none in today's runs
+                       if a.name in sub.coords and sub[a.name].size == 1}
             use = resolved(sub["contact_cells"].mean(ensemble).values, min_cells)
             k_mean, low, high = (sub[v].values for v in ("k_mean", "k_ci_low", "k_ci_high"))
             force = sub["force"].values
@@ -64,10 +77,11 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
                              "max_rel_dev": float(np.abs(dev).max()), "rms_rel_dev": float(np.sqrt(np.mean(dev**2))),
                              "inside_band": float(inside.mean()) if banded.any() else math.nan,
                              "n_loads": int(ok.sum()), "force_min_N": float(force[ok].min()),
-                             "force_max_N": float(force[ok].max()), "tiles": int(runs.sizes[ensemble])})
+                             "force_max_N": float(force[ok].max()), "tiles": int(runs.sizes[ensemble]),
+                             unmodelled.COLUMN: unmodelled.not_modelled(model, setting, length) if setting else ""})
     table = pd.DataFrame(rows)
     if len(table):
-        table["rank"] = table.groupby(["kind", "radius"])["max_rel_dev"].rank(method="min").astype(int)
+        table["rank"] = unmodelled.rank(table, ["kind", "radius"])
     return table
 
 
@@ -80,5 +94,5 @@ def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv
                                min_cells=StudySettings.of(study).fit.zeta.min_cells)
     write_csv(table, out_csv)
     write_html_table(table, out_html, title=f"Model scorecard of the scan {name}", lead=MEASURED_SCORECARD_LEAD,
-                     verdict_columns=(), first=("kind", "radius", "model", "rank", "max_rel_dev", "rms_rel_dev",
-                                                "inside_band", "n_loads"))
+                     verdict_columns=(), first=("kind", "radius", "model", "rank", unmodelled.COLUMN, "max_rel_dev",
+                                                "rms_rel_dev", "inside_band", "n_loads"))
