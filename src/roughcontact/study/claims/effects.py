@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-from .. import runs
+from .. import axes
 from ..ensemble import resolved
 from ..statistics import bootstrap_indices, interval, verdict, verdict_bound
 from .registry import Claim, register, row
@@ -60,7 +60,7 @@ def effect_rows(ds, cross, study, axis: str) -> list[dict]:
     force = ds["force"].values / (E * L**2)
     rows = []
     paper = 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
-    baseline = runs.coordinate(axis, None, L)
+    baseline = axes.paper_coordinates(L)[axis]   # the run without it: the paper's setting
     values = ds[axis].values.tolist()
     if baseline not in values or len(values) < 2:
         return [_untested(axis, f"no {axis} swept" if values == [baseline]
