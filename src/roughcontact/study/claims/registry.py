@@ -232,7 +232,7 @@ def combinations(inputs: ClaimInputs, kinds=("sphere", "flat")):
     """Every :class:`Combination` of ``inputs.groups`` of the surface *kinds*, in the order of the
     merged files' dimensions (that of ``crossover.csv``), each with its ``(seed, force)`` slice
     and its row of ``inputs.cross`` (matched on the axes' coordinates)."""
-    import itertools
+    from ..ensemble import combinations as dataset_combinations
 
     cross = inputs.cross if inputs.cross is not None else ()
     for kind in kinds:
@@ -244,10 +244,8 @@ def combinations(inputs: ClaimInputs, kinds=("sphere", "flat")):
         if kind == "sphere" and len(cross):
             for _, r in cross.iterrows():
                 matched.setdefault(tuple(float(r[d]) if d in r else math.nan for d in dims), r)
-        for position in itertools.product(*(range(ds.sizes[d]) for d in dims)):
-            where = {d: float(ds[d].values[i]) for d, i in zip(dims, position)}
-            yield Combination(kind, where, ds.isel(dict(zip(dims, position))).transpose("seed", "force"),
-                              _match(matched, tuple(where.values())), inputs.study)
+        for where, data in dataset_combinations(ds):
+            yield Combination(kind, where, data, _match(matched, tuple(where.values())), inputs.study)
 
 
 def _match(matched: dict, key: tuple):

@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 from ...models import paper
-from .. import provenance, runs
+from .. import axes, provenance
 from ..ensemble import resolved
 from ..io import read_groups, write_csv, write_netcdf
 from ..statistics import bootstrap_indices
@@ -26,15 +26,14 @@ log = logging.getLogger(__name__)
 # ζ(H)
 # --------------------------------------------------------------------------
 def paper_setting(ds, length: float):
-    """*ds* at the paper's setting of the optional axes (paraboloid, no roll-off,
-    no cutoff, elastic: :data:`runs.DEFAULTS`), those dimensions dropped; where the
-    sweep lacks the paper's value, its first value is taken. Returns the selection
-    and a note naming such substitutions ("" if none)."""
+    """*ds* at the paper's setting of the optional axes (paraboloid, no roll-off, no cutoff,
+    elastic, no adhesion: :func:`roughcontact.study.axes.paper_coordinates`), those dimensions
+    dropped; where the sweep lacks the paper's value, its first value is taken. Returns the
+    selection and a note naming such substitutions ("" if none)."""
     pick, notes = {}, []
-    for axis, default in runs.DEFAULTS.items():
+    for axis, value in axes.paper_coordinates(length).items():
         if axis not in ds.dims:
             continue
-        value = runs.coordinate(axis, default, length)
         if value not in ds[axis].values:
             value = float(ds[axis].values[0])
             notes.append(f"{axis} = {value:g}")
