@@ -1,10 +1,12 @@
 """The paper's claims as a table (``claims.csv``): one row per quantitative claim
 and per combination it is tested on, with the measured value, its 95 %
 interval, the paper's value, the verdict (:mod:`roughcontact.study.claims.verdicts`) and the sweep and
-loads it rests on. Rows (a)–(f) of a combination with a cutoff, a roll-off or a
-hardness keep their measured values but say ``untested``: the paper's
-equations are for an elastic, purely self-affine surface, and claims (i)–(k)
-test those axes against the same seeds without them.
+loads it rests on. Rows (a)–(f) of a combination off the paper's setting of an
+optional axis (:func:`roughcontact.study.axes.off_paper`; the body's exponent
+aside) keep their measured values but say ``untested`` and name the axis: the
+paper's equations are for an elastic, purely self-affine surface, and claims
+(i)–(k) test those axes against the same seeds without them; (g), (h) and (l)
+leave such combinations out.
 
 Claims (Pohrt & Popov 2013): (a) eq. 16 describes the BEM ensemble; (b) the
 crossover force of eq. 17; (c) ζ(H) ≈ 1.7/(H+1) (eq. 13); (d) the low-force
