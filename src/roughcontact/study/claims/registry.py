@@ -86,6 +86,14 @@ class Combination:
     data: object
     crossover: object
     study: object
+    _lookup: Callable | None = dataclasses.field(default=None, repr=False, compare=False)
+
+    def with_axes(self, **changes):
+        """The combination of the same kind with the axes *changes* set (e.g. the paired run
+        without a hardness, for a claim on the hardness's effect); ``None`` where the sweep has
+        no such combination."""
+        where = {**self.axes, **{k: float(v) for k, v in changes.items()}}
+        return self._lookup(where) if self._lookup is not None else None
 
 
 def sphere(combination: Combination):
@@ -244,8 +252,16 @@ def combinations(inputs: ClaimInputs, kinds=("sphere", "flat")):
         if kind == "sphere" and len(cross):
             for _, r in cross.iterrows():
                 matched.setdefault(tuple(float(r[d]) if d in r else math.nan for d in dims), r)
+
+        def lookup(where, ds=ds, kind=kind, matched=matched):
+            try:
+                data = ds.sel(where).transpose("seed", "force")
+            except KeyError:
+                return None
+            return Combination(kind, where, data, _match(matched, tuple(where.values())), inputs.study, lookup)
+
         for where, data in dataset_combinations(ds):
-            yield Combination(kind, where, data, _match(matched, tuple(where.values())), inputs.study)
+            yield Combination(kind, where, data, _match(matched, tuple(where.values())), inputs.study, lookup)
 
 
 def _match(matched: dict, key: tuple):
