@@ -193,3 +193,17 @@ def test_claim_l_does_not_pool_the_new_axis(toy_axis):
                               "ci_low": [0.45, 0.45, 0.95, 0.95], "ci_high": [0.55, 0.55, 1.05, 1.05]})
     rows = [r for r in exponent_rows(exponents, _ZETA.iloc[:0], study) if r["claim"] == "l"]
     assert [r["verdict"] for r in rows] == ["differs"], rows
+
+
+def test_claim_c_is_untested_where_the_zeta_fit_lacks_the_paper_setting(toy_axis):
+    """Every run has the new axis off its paper value: the zeta fit takes it (zeta.csv's source says
+    'with rolloff_power = 1.5'), and (c)'s row of zeta.csv names the axis instead of a verdict."""
+    table = _table(_groups(("rolloff_power", [1.5])), _study(rolloff_power=[1.5]))
+    rows = table[(table["claim"] == "c") & table["radius"].isna()]
+    assert rows["reason"].tolist() == ["eqs. 11-17 are for an elastic, purely self-affine surface; here "
+                                       "rolloff_power = 1.5"], rows[["verdict", "reason"]].to_dict("records")
+
+
+def test_claim_c_is_judged_where_the_zeta_fit_has_the_paper_setting(toy_table):
+    rows = toy_table[(toy_table["claim"] == "c") & toy_table["radius"].isna()]
+    assert rows["verdict"].tolist() == ["consistent"], rows[["verdict", "reason"]].to_dict("records")
