@@ -323,8 +323,9 @@ def paper_rows(frame, length: float):
 
 
 def flat_zeta_rows(zeta_df):
-    """Rows of zeta.csv fitted on flat runs at the paper's setting (not on a substituted roll-off,
-    cutoff or hardness: :func:`roughcontact.study.zeta.fit.paper_setting` says so in the source)."""
+    """Rows of zeta.csv fitted on flat runs at the paper's setting (not on the sweep's first value of
+    an optional axis whose paper value it lacks: :func:`roughcontact.study.zeta.fit.paper_setting`
+    says so in the source)."""
     if not len(zeta_df):
         return zeta_df
     return zeta_df[zeta_df["source"].astype(str) == "flat"]
