@@ -207,3 +207,43 @@ def test_claim_c_is_untested_where_the_zeta_fit_lacks_the_paper_setting(toy_axis
 def test_claim_c_is_judged_where_the_zeta_fit_has_the_paper_setting(toy_table):
     rows = toy_table[(toy_table["claim"] == "c") & toy_table["radius"].isna()]
     assert rows["verdict"].tolist() == ["consistent"], rows[["verdict", "reason"]].to_dict("records")
+
+
+# ---------------------------------------------------------------------------------------------
+# the rules of Claim.applies and the combinations the registry passes
+# ---------------------------------------------------------------------------------------------
+def _combinations(groups, study):
+    from roughcontact.study.claims.registry import ClaimInputs, combinations
+
+    cross, reps = crossover_table(groups, _ZETA, study)
+    return list(combinations(ClaimInputs(cross=cross, replicates=reps, zeta=_ZETA, study=study, groups=groups)))
+
+
+def test_paper_setting_rule_skips_a_combination_off_the_paper_setting(toy_axis):
+    from roughcontact.study.claims.registry import paper_setting
+
+    combos = _combinations(_groups(("rolloff_power", [0.0, 1.5])), _study(rolloff_power=[0.0, 1.5]))
+    assert [paper_setting(c) for c in combos] == ["", None, "", None], [c.axes for c in combos]
+
+
+def test_all_of_gives_the_untested_reason_of_its_rules(toy_axis):
+    from roughcontact.study.claims.registry import all_of, at_theory, with_crossover
+
+    combos = _combinations(_groups(("rolloff_power", [1.5])), _study(rolloff_power=[1.5]))
+    reason = all_of(with_crossover, at_theory)(combos[0])
+    assert reason == "untested: eqs. 11-17 are for an elastic, purely self-affine surface; here rolloff_power = 1.5"
+
+
+def test_combination_carries_its_crossover_row():
+    combos = _combinations(_groups(), _study())
+    assert [float(c.crossover["radius"]) for c in combos] == list(RADII)
+
+
+def test_with_axes_gives_the_paired_combination(toy_axis):
+    combos = _combinations(_groups(("rolloff_power", [0.0, 1.5])), _study(rolloff_power=[0.0, 1.5]))
+    paired = combos[1].with_axes(rolloff_power=0.0)
+    assert paired.axes == combos[0].axes, (paired.axes, combos[0].axes)
+
+
+def test_with_axes_of_a_value_not_swept_is_none():
+    assert _combinations(_groups(), _study())[0].with_axes(radius=7.0) is None
