@@ -10,28 +10,28 @@ from test_scorecard import CFG, _groups
 
 from roughcontact.study import claims
 from roughcontact.study.claims import Claim, register, row
+from roughcontact.study.claims.registry import sphere
 from roughcontact.study.statistics import bootstrap_indices, interval, verdict_bound
 
 
-def stiffening(inputs):
+def stiffening(combination):
     """Claim (x): the ensemble-mean stiffness rises with the load (dk/dF > 0) on every sphere
     combination; measured: the smallest relative rise of k between neighbouring loads, with its
     bootstrap-over-seeds interval; consistent when the whole interval lies above 0."""
-    ds = inputs.groups["sphere"]
-    k = ds["stiffness"].squeeze().transpose("seed", "force").values
-    fit = inputs.study.fit.zeta
+    k = combination.data["stiffness"].values                       # (seed, force)
+    fit = combination.study.fit.zeta
     rise = lambda mean: (np.diff(mean, axis=-1) / mean[..., :-1]).min(-1)  # noqa: E731
     samples = rise(k[bootstrap_indices(k.shape[0], fit.bootstrap)].mean(1))
     low, high = interval(samples, fit.confidence)
-    return [row("x", "k rises with F at every load", float(rise(k.mean(0))), low, high, 0.0,
-                verdict_bound(0.0, low, high, side="above"), hurst=float(ds["hurst"][0]))]
+    return row("x", "k rises with F at every load", float(rise(k.mean(0))), low, high, 0.0,
+               verdict_bound(0.0, low, high, side="above"), **combination.axes)
 
 
 @pytest.fixture
 def stiffening_claim():
     """The package guide's worked example: one claim object, removed afterwards."""
     claims.claims()   # the built-in claims first
-    claim = register(Claim("x", "the ensemble-mean stiffness rises with the load", stiffening, needs=("groups",)))
+    claim = register(Claim("x", "the ensemble-mean stiffness rises with the load", estimate=stiffening, applies=sphere))
     yield claim
     del claims.CLAIMS["x"]
 
@@ -69,6 +69,14 @@ def test_registered_claim_value_is_its_estimate(stiffening_claim):
     assert got == pytest.approx(expected, rel=1e-12), f"measured {got}, expected {expected}"
 
 
+def test_registered_claim_has_one_row_per_combination(stiffening_claim):
+    """The guide's claim on a study of two radii (two sphere combinations): a row for each."""
+    from test_claim_isolation import RADII, _groups as two_radii
+
+    rows = _table(two_radii()).query("claim == 'x' and verdict != 'error'")
+    assert rows["radius"].tolist() == list(RADII), rows[["radius", "verdict", "reason"]].to_dict("records")
+
+
 def test_claim_without_its_inputs_has_no_row(stiffening_claim):
     table = _table(None)
     assert "x" not in set(table["claim"]), "a claim ran without the inputs it needs"
@@ -77,7 +85,7 @@ def test_claim_without_its_inputs_has_no_row(stiffening_claim):
 def test_second_claim_of_a_letter_is_an_error():
     claims.claims()
     with pytest.raises(ValueError, match="'a'"):
-        register(Claim("a", "again", stiffening))
+        register(Claim("a", "again", estimate=stiffening))
 
 
 def test_rows_are_ordered_by_letter(stiffening_claim):

@@ -30,10 +30,10 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..models import superposition
-from .ensemble import resolved
+from . import axes
+from .ensemble import combinations, resolved
 from .study_settings import StudySettings
 from .io import read_groups
-from .zeta.fit import paper_setting
 
 __all__ = ["Calibration", "ensemble_points", "calibrate", "main"]
 
@@ -43,7 +43,7 @@ MIN_RELATIVE_ERROR = 0.01
 
 def ensemble_points(study) -> list[dict]:
     """Per sphere combination at the paper's setting of *study* (a directory a preset ran
-    in): ``hurst``, ``radius``, ``h_rms``, ``length``, ``e_star``, the resolved forces, the
+    in; :func:`roughcontact.study.axes.paper_setting`, none where the sweep lacks it): ``hurst``, ``radius``, ``h_rms``, ``length``, ``e_star``, the resolved forces, the
     ensemble-mean stiffness and its relative standard error."""
     import xarray as xr
 
@@ -54,20 +54,19 @@ def ensemble_points(study) -> list[dict]:
     if "sphere" not in groups:
         return []
     length, e_star = study_of_file.grid.length, study_of_file.e_star
-    ds, _ = paper_setting(groups["sphere"], length)
+    ds = groups["sphere"]
     out = []
-    for hurst in ds["hurst"].values:
-        for radius in ds["radius"].values:
-            for h_rms in ds["h_rms"].values:
-                sub = ds.sel(hurst=hurst, radius=radius, h_rms=h_rms).transpose("seed", "force")
-                k = sub["stiffness"].values
-                use = resolved(sub["contact_cells"].values.mean(0), study_of_file.fit.zeta.min_cells)
-                mean = k.mean(0)
-                error = k.std(0, ddof=1) / math.sqrt(k.shape[0]) / mean
-                out.append({"study": Path(study).name, "hurst": float(hurst), "radius": float(radius),
-                            "h_rms": float(h_rms), "length": length, "e_star": e_star, "n": study_of_file.grid.n,
-                            "force": sub["force"].values[use], "stiffness": mean[use],
-                            "relative_error": np.maximum(error[use], MIN_RELATIVE_ERROR)})
+    for combo, sub in combinations(ds):
+        if not axes.paper_setting(combo, length):
+            continue
+        k = sub["stiffness"].values
+        use = resolved(sub["contact_cells"].values.mean(0), study_of_file.fit.zeta.min_cells)
+        mean = k.mean(0)
+        error = k.std(0, ddof=1) / math.sqrt(k.shape[0]) / mean
+        out.append({"study": Path(study).name, "hurst": combo["hurst"], "radius": combo["radius"],
+                    "h_rms": combo["h_rms"], "length": length, "e_star": e_star, "n": study_of_file.grid.n,
+                    "force": sub["force"].values[use], "stiffness": mean[use],
+                    "relative_error": np.maximum(error[use], MIN_RELATIVE_ERROR)})
     return out
 
 

@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-__all__ = ["ensemble", "resolved"]
+__all__ = ["ensemble", "resolved", "combinations"]
 
 
 def resolved(contact_cells, min_cells: int):
@@ -17,6 +17,19 @@ def resolved(contact_cells, min_cells: int):
     ``fit.zeta.min_cells`` (*min_cells*). The one rule every fit, verdict, figure and score
     applies before trusting a load; *contact_cells* an array or DataArray of mean cells."""
     return contact_cells >= min_cells
+
+
+def combinations(ds):
+    """Every combination of the sweep axes of one kind's merged Dataset *ds*, in the order of its
+    dimensions (C order: the last axis fastest, as ``crossover.csv``): ``(where, sub)``, *where*
+    ``{axis: coordinate}`` (floats) and *sub* its slice with the dimensions ``(seed, force)`` in
+    that order, whatever the number of combinations."""
+    import itertools
+
+    dims = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
+    for position in itertools.product(*(range(ds.sizes[d]) for d in dims)):
+        yield ({d: float(ds[d].values[i]) for d, i in zip(dims, position)},
+               ds.isel(dict(zip(dims, position))).transpose("seed", "force"))
 
 
 def ensemble(ds):

@@ -12,13 +12,12 @@ Forces are ``F/(E* L²)``.
 """
 from __future__ import annotations
 
-import itertools
 import logging
 
 import numpy as np
 
 from .plotting import pyplot, save_png
-from .ensemble import resolved
+from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval
 from .study_settings import StudySettings
 
@@ -67,13 +66,6 @@ def local_exponents(force, stiffness, contact_cells, *, window: int, min_cells: 
     return out[0], out[1], out[2]
 
 
-def _combinations(ds):
-    axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
-    for position in itertools.product(*(range(ds.sizes[a]) for a in axes)):
-        yield ({a: float(ds[a].values[i]) for a, i in zip(axes, position)},
-               ds.isel(dict(zip(axes, position))).transpose("seed", "force"))
-
-
 def exponent_table(groups: dict, study):
     """One row per (kind, combination, resolved load): ``local_exponent`` and its interval
     (``exponent`` is the body's exponent m, a sweep axis)."""
@@ -86,7 +78,7 @@ def exponent_table(groups: dict, study):
     for kind, ds in groups.items():
         indices = bootstrap_indices(ds.sizes["seed"], fit.zeta.bootstrap)
         force = ds["force"].values / (E * L**2)
-        for combo, sub in _combinations(ds):
+        for combo, sub in combinations(ds):
             beta, low, high = local_exponents(
                 force, sub["stiffness"].values, sub["contact_cells"].values, window=fit.slopes.window,
                 min_cells=fit.zeta.min_cells, indices=indices, level=fit.zeta.confidence)

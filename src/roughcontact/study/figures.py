@@ -13,7 +13,7 @@ import math
 
 from .. import surfaces
 from ..models import paper
-from . import runs
+from . import axes, runs
 from .ensemble import resolved
 from .study_settings import StudySettings
 
@@ -159,7 +159,7 @@ def fig3(plt, inputs: Inputs, key):
             label=f"{body} (slope {1 / (m + 1):.3g})")
     ax.plot(Fg, paper.fractal_stiffness(Fg * E * L**2, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf) / (E * L), "--", color="C2",
             label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
-    if not combo["variant"]:  # the paper's setting: Greenwood-Tripp on the same spectrum
+    if axes.paper_setting(combo, L):  # Greenwood-Tripp on the same spectrum (paraboloid, elastic, no cut)
         from ..models.greenwood_tripp import self_affine_sphere_curve
 
         gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)

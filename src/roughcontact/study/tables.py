@@ -15,8 +15,8 @@ from . import provenance
 
 __all__ = ["VERDICT_COLOURS", "html_table", "write_html_table"]
 
-#: background colour of a verdict cell, by the verdict's first word
-VERDICT_COLOURS = {"consistent": "#d6f5d6", "differs": "#f8d0d0", "untested": "#e6e6e6"}
+#: background colour of a verdict cell, by the verdict's first word (``error``: the claim's estimate raised)
+VERDICT_COLOURS = {"consistent": "#d6f5d6", "differs": "#f8d0d0", "untested": "#e6e6e6", "error": "#f5d76e"}
 
 _STYLE = """
 body { font-family: system-ui, sans-serif; font-size: 13px; margin: 12px; }

@@ -345,8 +345,6 @@ def crossover_table(groups: dict, zeta_df, study):
     """``crossover.csv`` (one row per sphere combination of every sweep axis,
     :func:`sphere_verdicts`) and a Dataset of the bootstrap replicates of the
     measured F_tr over those axes and ``replicate``."""
-    import itertools
-
     import pandas as pd
     import xarray as xr
 
@@ -363,16 +361,14 @@ def crossover_table(groups: dict, zeta_df, study):
     replicates = np.full([ds.sizes[a] for a in axes] + [resamples], np.nan)
     force = ds["force"].values / (E * L**2)
     rows = []
-    for position in itertools.product(*(range(ds.sizes[a]) for a in axes)):
-        combo = {a: float(ds[a].values[i]) for a, i in zip(axes, position)}
-        sub = ds.isel(dict(zip(axes, position))).transpose("seed", "force")
+    for number, (combo, sub) in enumerate(ensemble.combinations(ds)):
         result = sphere_verdicts(
             force, sub["stiffness"].values / (E * L), sub["contact_cells"].values,
             case=SphereCase(hurst=combo["hurst"], radius=combo["radius"], h_rms=combo["h_rms"], length=L,
                             exponent=combo.get("exponent", 2.0)),
             zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)), indices=indices, windows=windows)
         rows.append({**combo, **result.row})
-        replicates[position] = result.crossover_replicates
+        replicates[np.unravel_index(number, replicates.shape[:-1])] = result.crossover_replicates
     reps = xr.Dataset(
         {"Ftr_replicates": ((*axes, "replicate"), replicates,
                             {"long_name": "bootstrap replicates of the measured crossover force F_tr/(E* L^2)",

@@ -1,10 +1,12 @@
 """The paper's claims as a table (``claims.csv``): one row per quantitative claim
 and per combination it is tested on, with the measured value, its 95 %
 interval, the paper's value, the verdict (:mod:`roughcontact.study.claims.verdicts`) and the sweep and
-loads it rests on. Rows (a)–(f) of a combination with a cutoff, a roll-off or a
-hardness keep their measured values but say ``untested``: the paper's
-equations are for an elastic, purely self-affine surface, and claims (i)–(k)
-test those axes against the same seeds without them.
+loads it rests on. Rows (a)–(f) of a combination off the paper's setting of an
+optional axis (:func:`roughcontact.study.axes.off_paper`; the body's exponent
+aside) keep their measured values but say ``untested`` and name the axis: the
+paper's equations are for an elastic, purely self-affine surface, and claims
+(i)–(k) test those axes against the same seeds without them; (g), (h) and (l)
+leave such combinations out.
 
 Claims (Pohrt & Popov 2013): (a) eq. 16 describes the BEM ensemble; (b) the
 crossover force of eq. 17; (c) ζ(H) ≈ 1.7/(H+1) (eq. 13); (d) the low-force
@@ -18,11 +20,15 @@ low-force slope; (k) elasticity on all scales is not crucial (a hardness cap
 leaves the unloading and the loading stiffness unchanged); (l), (m) the local
 exponents of flat surfaces against Pastewka et al. (2013) and Pohrt & Popov (2012).
 
-Each claim is one :class:`Claim` (its letter, statement, the inputs it needs and the function
-that gives its rows with value, interval, paper value and verdict), registered by a module of
+Each claim is one :class:`Claim` (its letter, statement, the inputs it needs and its estimator:
+``rows(inputs)`` over the whole study, or ``estimate(combination)`` over one sweep combination
+with ``applies``, the rule of the combinations it is tested on; the registry loops over the
+combinations), registered by a module of
 this package: :mod:`roughcontact.study.claims.paper` (a)-(h), :mod:`roughcontact.study.claims.zeta_law` (c'), :mod:`roughcontact.study.claims.effects` (i)-(k),
 :mod:`roughcontact.study.claims.exponents` (l), (m). :func:`claims_table` loops over the registry; a new claim is one
-object in one module (worked example in the package guide, ``docs/guide/package.md``).
+object in one module (worked example in the package guide, ``docs/guide/package.md``). A claim
+that raises gives rows with the verdict ``error`` and the exception as the reason; the others'
+rows are kept.
 """
 from __future__ import annotations
 
@@ -33,9 +39,10 @@ from pathlib import Path
 
 from ..study_settings import StudySettings
 from ..tables import write_html_table
-from .registry import CLAIMS, Claim, ClaimInputs, register, row
+from .registry import CLAIMS, Claim, ClaimInputs, Combination, register, row, table_rows
 
-__all__ = ["Claim", "ClaimInputs", "CLAIMS", "register", "row", "claims", "claims_table", "run_claims", "CLAIMS_LEAD",
+__all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "claims", "claims_table", "failed",
+           "run_claims", "CLAIMS_LEAD",
            "EQ16_TOLERANCE", "prl2012_exponent"]
 
 log = logging.getLogger(__name__)
@@ -78,7 +85,9 @@ def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, expone
     """``claims.csv``: one row per quantitative claim (every registered :class:`Claim` whose
     inputs are given) and per combination it is tested on, with the measured value, its 95 %
     interval, the paper's value, the verdict and the sweep and loads it rests on; ordered by
-    the claim's letter, then as each claim gives its rows."""
+    the claim's letter, then as each claim gives its rows. Each claim runs in isolation
+    (:func:`~roughcontact.study.claims.registry.table_rows`): one that raises has ``error`` rows
+    with the exception as the reason, and every other row is kept."""
     import pandas as pd
 
     inputs = ClaimInputs(cross=cross, replicates=reps, zeta=zeta_df, study=StudySettings.of(study), groups=groups,
@@ -86,17 +95,25 @@ def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, expone
                          stickiness=stickiness)
     rows = []
     for claim in claims().values():
-        if all(getattr(inputs, need) is not None for need in claim.needs):
-            rows += claim.rows(inputs)
+        if all(getattr(inputs, need) is not None for need in claim.needed):
+            rows += table_rows(claim, inputs)
     return pd.DataFrame(rows).sort_values("claim", kind="stable", ignore_index=True)
+
+
+def failed(table) -> list:
+    """The letters of the claims with an ``error`` row in *table* (:func:`claims_table`), in order."""
+    if not len(table):
+        return []
+    return sorted(set(table.loc[table["verdict"] == "error", "claim"]))
 
 
 #: the lead paragraph of the claims page of the report
 CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
                "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
                "paper's value and the verdict: consistent (the paper's value lies inside the interval, or for a "
-               "bound the interval lies on the claimed side), differs (it is excluded) or untested (the sweep "
-               "cannot decide it; the reason says why). claims.csv holds every digit.")
+               "bound the interval lies on the claimed side), differs (it is excluded), untested (the sweep "
+               "cannot decide it; the reason says why) or error (the claim's estimate failed; the reason is the "
+               "exception, the workflow's log names the claim). claims.csv holds every digit.")
 
 
 def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
@@ -122,3 +139,5 @@ def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
                      first=("claim", "statement", "verdict", "measured", "ci_low", "ci_high", "paper_value", "reason"))
     log.info("claims:\n%s", table.to_string())
+    if failed(table):
+        log.warning("claims that failed (verdict error, the reason is the exception): %s", ", ".join(failed(table)))

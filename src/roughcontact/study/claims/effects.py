@@ -20,17 +20,16 @@ Forces F/(E* L²), stiffnesses k/(E* L).
 """
 from __future__ import annotations
 
-import itertools
 import math
 
 import numpy as np
 
-from .. import runs
+from .. import axes
 from ..ensemble import resolved
 from ..statistics import bootstrap_indices, interval, verdict, verdict_bound
 from .registry import Claim, register, row
 
-__all__ = ["effect_rows", "INSENSITIVE_TOLERANCE"]
+__all__ = ["INSENSITIVE_TOLERANCE"]
 
 #: k is "unchanged" by a cutoff or a hardness if no resolved load moves by more than this (relative)
 INSENSITIVE_TOLERANCE = 0.10
@@ -50,41 +49,37 @@ def _untested(axis, why, paper):
             "paper": paper, "verdict_text": f"untested: {why}"}
 
 
-def effect_rows(ds, cross, study, axis: str) -> list[dict]:
-    """Rows of the claim of one optional *axis* (cutoff: (i), rolloff: (j), hardness: (k)) from
-    the sphere Dataset *ds* (merged runs) and the crossover table *cross* (for the low-force
-    window); keyword dicts of :func:`roughcontact.study.claims.registry.row`."""
-    L, E = study.grid.length, study.e_star
-    level = study.fit.zeta.confidence
-    indices = bootstrap_indices(ds.sizes["seed"], study.fit.zeta.bootstrap)
-    force = ds["force"].values / (E * L**2)
-    rows = []
-    paper = 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
-    baseline = runs.coordinate(axis, None, L)
+def _not_paired(ds, axis: str, length: float, paper):
+    """The untested row of the claim of *axis* where the sphere Dataset *ds* cannot pair runs (the
+    axis not swept, or no run at its paper setting), else ``None``."""
+    baseline = axes.paper_coordinates(length)[axis]   # the run without it: the paper's setting
     values = ds[axis].values.tolist()
     if baseline not in values or len(values) < 2:
-        return [_untested(axis, f"no {axis} swept" if values == [baseline]
-                          else f"no run without a {axis} to compare with", paper)]
-    others = [d for d in ds["stiffness"].dims if d not in ("seed", "force", axis)]
-    for value in values:
-        if value == baseline:
-            continue
-        for position in itertools.product(*(ds[d].values.tolist() for d in others)):
-            pick = dict(zip(others, position))
-            rows += _pair(axis, value, baseline, ds.sel(pick), pick, force, cross, study, indices, level, paper)
-    return rows
+        return _untested(axis, f"no {axis} swept" if values == [baseline]
+                         else f"no run without a {axis} to compare with", paper)
+    return None
 
 
-def _pair(axis, value, baseline, ds, pick, force, cross, study, indices, level, paper):
-    """The rows of one (axis value, combination) against the baseline."""
+def _paper_value(axis: str) -> float:
+    """The paper value column of the claim of *axis*: no change of the slope (roll-off), else the
+    tolerance on the change of k."""
+    return 0.0 if axis == "rolloff" else INSENSITIVE_TOLERANCE
+
+
+def _pair(axis, where, baseline, with_, without, crossover, study):
+    """The rows of one combination *where* (the axis off its paper value) against the run of the
+    same seeds at *baseline*: *with_*, *without* their ``(seed, force)`` slices, *crossover* the
+    baseline's row of ``crossover.csv`` (or ``None``)."""
     claim, statement = _STATEMENTS[axis]
-    with_, without = ds.sel({axis: value}), ds.sel({axis: baseline})
+    L, E = study.grid.length, study.e_star
+    level, paper, value = study.fit.zeta.confidence, _paper_value(axis), where[axis]
+    indices = bootstrap_indices(with_.sizes["seed"], study.fit.zeta.bootstrap)
+    force = with_["force"].values / (E * L**2)
     min_cells = study.fit.zeta.min_cells
     both = (resolved(with_["contact_cells"].mean("seed"), min_cells)
             & resolved(without["contact_cells"].mean("seed"), min_cells)).values
-    where = {**pick, axis: value}
-    sweep = (f"sphere H = {pick['hurst']:g}, R = {pick['radius']:g}, h_rms = {pick['h_rms']:g}, {axis} = {value:g} "
-             f"against {axis} = {baseline:g}, {ds.sizes['seed']} paired seeds, n = {study.grid.n}")
+    sweep = (f"sphere H = {where['hurst']:g}, R = {where['radius']:g}, h_rms = {where['h_rms']:g}, {axis} = {value:g} "
+             f"against {axis} = {baseline:g}, {with_.sizes['seed']} paired seeds, n = {study.grid.n}")
     if axis == "cutoff":
         # the apparent contact radius of the run without the cutoff, from k = 2 E* a (flat punch)
         radius = without["stiffness"].mean("seed").values / (2 * study.e_star)
@@ -96,12 +91,9 @@ def _pair(axis, value, baseline, ds, pick, force, cross, study, indices, level, 
         names = [("stiffness", " (unloading stiffness)"), ("loading_stiffness", " (loading tangent)")]
         loads = f"{int(mask.sum())} resolved loads"
     else:
-        match = cross
-        for name, coordinate in {**pick, axis: baseline}.items():
-            match = match[match[name] == coordinate]
-        f_tr = match["Ftr_pred_fit"].iloc[0] if len(match) else math.nan
-        if not math.isfinite(f_tr) and len(match):
-            f_tr = match["Ftr_pred_estimate"].iloc[0]
+        f_tr = crossover["Ftr_pred_fit"] if crossover is not None else math.nan
+        if not math.isfinite(f_tr) and crossover is not None:
+            f_tr = crossover["Ftr_pred_estimate"]
         mask = both & (force <= study.fit.slopes.low_max_ratio * f_tr)
         names = [("stiffness", "")]
         loads = f"{int(mask.sum())} resolved loads with F <= {study.fit.slopes.low_max_ratio:g} F_tr"
@@ -133,14 +125,31 @@ def _pair(axis, value, baseline, ds, pick, force, cross, study, indices, level, 
     return rows
 
 
-def _claim_of(axis: str):
-    """The claim of one optional axis: its rows as rows of the table (:func:`effect_rows`)."""
+def _claim_of(axis: str) -> Claim:
+    """The claim of one optional axis: per sphere combination with the axis off its paper value,
+    the rows of the pair with the same combination at the paper value (:func:`_pair`); one
+    untested row where the sweep cannot pair runs (:func:`_not_paired`)."""
     def rows(inputs):
         if "sphere" not in inputs.groups:
             return []
-        return [row(**r) for r in effect_rows(inputs.groups["sphere"], inputs.cross, inputs.study, axis)]
-    return rows
+        untested = _not_paired(inputs.groups["sphere"], axis, inputs.study.grid.length, _paper_value(axis))
+        return [row(**untested)] if untested is not None else []
+
+    def applies(combination):
+        if combination.kind != "sphere":
+            return None
+        baseline = axes.paper_coordinates(combination.study.grid.length)[axis]
+        paired = combination.axes[axis] != baseline and combination.with_axes(**{axis: baseline}) is not None
+        return "" if paired else None
+
+    def estimate(combination):
+        without = combination.with_axes(**{axis: axes.paper_coordinates(combination.study.grid.length)[axis]})
+        return [row(**r) for r in _pair(axis, combination.axes, without.axes[axis], combination.data, without.data,
+                                         without.crossover, combination.study)]
+
+    claim, statement = _STATEMENTS[axis]
+    return Claim(claim, statement, rows, needs=("groups",), estimate=estimate, applies=applies)
 
 
 for _axis in ("cutoff", "rolloff", "hardness"):
-    register(Claim(_STATEMENTS[_axis][0], _STATEMENTS[_axis][1], _claim_of(_axis), needs=("groups",)))
+    register(_claim_of(_axis))

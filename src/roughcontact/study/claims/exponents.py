@@ -7,9 +7,8 @@ from __future__ import annotations
 import itertools
 import math
 
-from .. import runs
 from ..statistics import verdict
-from .registry import Claim, flat_zeta_rows, register, row
+from .registry import Claim, flat_zeta_rows, paper_rows, register, row
 
 __all__ = ["prl2012_exponent", "exponent_rows"]
 
@@ -26,7 +25,8 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
 
     (l) With a roll-off below the system size, ``K ∝ p`` over a range of pressures (Pastewka et
     al., Phys. Rev. E 87, 062809 (2013)): per H and roll-off ``λ_r < L``, the largest local
-    exponent of the flat runs with its interval; consistent when the interval of some load
+    exponent of the flat runs at the paper's setting of every other optional axis
+    (:func:`~roughcontact.study.claims.registry.paper_rows`) with its interval; consistent when the interval of some load
     contains 1 (the number of such loads is the reason). (m) The free exponent of the flat runs
     at the paper's setting (``zeta.csv``) against :func:`prl2012_exponent`.
     """
@@ -42,9 +42,8 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
     for hurst, rolloff in itertools.product(study.hurst, rolled if flat_swept else []):
         sub = exponents[(exponents["kind"] == "flat") & (exponents["hurst"] == hurst)
                         & (exponents["rolloff"] == rolloff)] if len(exponents) else exponents
-        for axis in ("cutoff", "hardness"):  # the other optional axes at the paper's setting
-            if len(sub) and axis in sub:
-                sub = sub[sub[axis].to_numpy(float) == runs.coordinate(axis, runs.DEFAULTS[axis], L)]
+        # every other optional axis at the paper's setting: the claim is about the roll-off alone
+        sub = sub.loc[paper_rows(sub.drop(columns="rolloff"), L).index] if len(sub) else sub
         sweep = f"flat H = {hurst:g}, rolloff = {rolloff:g} (length unit), {seeds} seeds, n = {n}"
         if not len(sub):
             rows.append(row("l", statement, math.nan, math.nan, math.nan, 1.0,

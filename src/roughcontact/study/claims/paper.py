@@ -6,7 +6,10 @@ prefactor; (f) below F_tr roughness lowers k against the smooth sphere (Conclusi
 scaling of F_tr with R and h_rms implied by eq. 17; (h) eq. 18's λ for H → 0. Beyond the
 paraboloid (Conclusions): (a), (b), (d)-(f) per body of revolution and for 1 < H < 2. Rows
 (a)-(f) of a combination off the paper's setting keep their measured values but say
-``untested`` (:func:`~roughcontact.study.claims.registry.off_theory`).
+``untested`` (:func:`~roughcontact.study.claims.registry.off_theory`); claims (g) and (h) leave
+those combinations out. Claims (a)-(f) are estimated per sphere combination
+(:class:`~roughcontact.study.claims.registry.Combination`, the registry loops), (c) also from
+``zeta.csv`` and (g), (h) from the whole study.
 """
 from __future__ import annotations
 
@@ -15,7 +18,8 @@ import math
 import numpy as np
 
 from ..statistics import interval, verdict, verdict_bound
-from .registry import Claim, describe, is_paper_setting, off_theory, register, row
+from .. import axes
+from .registry import Claim, all_of, at_theory, describe, off_theory, register, row, with_crossover
 
 __all__ = ["EQ16_TOLERANCE", "LAMBDA_EQ17", "LAMBDA_GT"]
 
@@ -25,73 +29,73 @@ EQ16_TOLERANCE = 0.10
 LAMBDA_EQ17, LAMBDA_GT = math.sqrt(6.0) * 1.7**-1.5, 1.41
 
 
-def _spheres(inputs):
-    """``(r, context)`` of every sphere combination of ``crossover.csv``: the row and what every
-    claim (a)-(f) states about it (its axes, sweep, body, resolved loads, the off-theory reason)."""
-    study = inputs.study
-    n, seeds, length = study.grid.n, len(study.seeds), study.grid.length
-    from .registry import AXIS_COLUMNS
-
-    for _, r in inputs.cross.iterrows():
-        body = f" (body m = {r['exponent']:g})" if r.get("exponent", 2.0) != 2.0 else ""
-        body += " (1 < H < 2)" if r["hurst"] > 1 else ""
-        yield r, {
-            "where": {k: r[k] for k in AXIS_COLUMNS if k in r},
-            "sweep": describe(r, length, n, seeds),
-            "body": body,
-            "loads": (f"{int(r['n_loads_resolved'])} resolved loads, F/(E*L^2) = "
-                      f"{r['force_min_resolved']:.2g}...{r['force_max']:.2g}"),
-            "off": off_theory(r, length),   # '' at the paper's setting: then the verdict stands
-        }
+def _context(c):
+    """What every claim (a)-(f) states about the sphere combination *c*: its axes, sweep, body and
+    resolved loads; its crossover row ``r``."""
+    study, r = c.study, c.crossover
+    body = f" (body m = {c.axes['exponent']:g})" if c.axes.get("exponent", 2.0) != 2.0 else ""
+    body += " (1 < H < 2)" if c.axes["hurst"] > 1 else ""
+    return r, {
+        "where": c.axes,
+        "sweep": describe(c.axes, study.grid.length, study.grid.n, len(study.seeds)),
+        "body": body,
+        "loads": (f"{int(r['n_loads_resolved'])} resolved loads, F/(E*L^2) = "
+                  f"{r['force_min_resolved']:.2g}...{r['force_max']:.2g}"),
+    }
 
 
-def _a(inputs):
-    out = []
-    for r, c in _spheres(inputs):
-        get = r.get
-        out.append(row(
-            "a", f"eq. 16 (fitted zeta) within {EQ16_TOLERANCE:.0%} of the BEM ensemble at every resolved load"
-                 f"{c['body']}",
-            get("eq16_max_rel_dev", math.nan), get("eq16_max_rel_dev_ci_low", math.nan),
-            get("eq16_max_rel_dev_ci_high", math.nan), EQ16_TOLERANCE,
-            c["off"] or verdict_bound(EQ16_TOLERANCE, get("eq16_max_rel_dev_ci_low", math.nan),
-                                      get("eq16_max_rel_dev_ci_high", math.nan), side="below"),
-            sweep=c["sweep"], loads=c["loads"], note="measured: max |k/k_eq16 - 1|", **c["where"]))
-    return out
+def _a(combination):
+    r, c = _context(combination)
+    get = r.get
+    return row(
+        "a", f"eq. 16 (fitted zeta) within {EQ16_TOLERANCE:.0%} of the BEM ensemble at every resolved load"
+             f"{c['body']}",
+        get("eq16_max_rel_dev", math.nan), get("eq16_max_rel_dev_ci_low", math.nan),
+        get("eq16_max_rel_dev_ci_high", math.nan), EQ16_TOLERANCE,
+        verdict_bound(EQ16_TOLERANCE, get("eq16_max_rel_dev_ci_low", math.nan),
+                      get("eq16_max_rel_dev_ci_high", math.nan), side="below"),
+        sweep=c["sweep"], loads=c["loads"], note="measured: max |k/k_eq16 - 1|", **c["where"])
 
 
-def _b(inputs):
-    out = []
-    for r, c in _spheres(inputs):
-        cross_verdict = r["verdict_estimate"]
-        if cross_verdict == "unresolved":
-            cross_verdict = "untested: " + r["note"].split("unresolved: ")[-1].split(";")[0]
-        out.append(row(
-            "b", f"crossover force F_tr of eq. 17 (zeta = 1.7/(H+1); Fig. 3: 8e-5 E* L^2){c['body']}",
-            r["Ftr_measured"], r["Ftr_ci_low"], r["Ftr_ci_high"], r["Ftr_pred_estimate"], c["off"] or cross_verdict,
-            sweep=c["sweep"], loads=c["loads"], note=(f"measured: eq. 16 with free prefactors, F/(E*L^2); eq. 17 "
-                                                      f"with the fitted zeta = {r['Ftr_pred_fit']:.3g}: "
-                                                      f"{r['verdict_fit']}"), **c["where"]))
-    return out
+def _b(combination):
+    r, c = _context(combination)
+    cross_verdict = r["verdict_estimate"]
+    if cross_verdict == "unresolved":
+        cross_verdict = "untested: " + r["note"].split("unresolved: ")[-1].split(";")[0]
+    return row(
+        "b", f"crossover force F_tr of eq. 17 (zeta = 1.7/(H+1); Fig. 3: 8e-5 E* L^2){c['body']}",
+        r["Ftr_measured"], r["Ftr_ci_low"], r["Ftr_ci_high"], r["Ftr_pred_estimate"], cross_verdict,
+        sweep=c["sweep"], loads=c["loads"], note=(f"measured: eq. 16 with free prefactors, F/(E*L^2); eq. 17 "
+                                                  f"with the fitted zeta = {r['Ftr_pred_fit']:.3g}: "
+                                                  f"{r['verdict_fit']}"), **c["where"])
 
 
 def _c(inputs):
-    n = inputs.study.grid.n
+    """ζ(H) of ``zeta.csv`` against eq. 13; untested where the ζ fit's runs lack the paper's setting
+    of an optional axis (:func:`roughcontact.study.zeta.fit.off_paper`), as (a)-(f) there."""
+    from ..zeta.fit import off_paper
+
+    n, length = inputs.study.grid.n, inputs.study.grid.length
+    off = off_theory(off_paper(inputs.groups, length), length) if inputs.groups else ""
     out = []
     for _, z in inputs.zeta.iterrows():
         out.append(row(
             "c", "zeta(H) ~ 1.7/(H+1) (eq. 13)", z["zeta"], z["zeta_ci_low"], z["zeta_ci_high"], z["zeta_estimate"],
-            verdict(z["zeta_estimate"], z["zeta_ci_low"], z["zeta_ci_high"]), hurst=z["hurst"],
+            off or verdict(z["zeta_estimate"], z["zeta_ci_low"], z["zeta_ci_high"]), hurst=z["hurst"],
             sweep=f"{z['source'].split(' (')[0]}, {int(z['n_seeds'])} seeds, n = {n}",
             loads=f"{int(z['n_points'])} loads, F/(E*L^2) = {z['force_min']:.2g}...{z['force_max']:.2g}"))
-    for r, c in _spheres(inputs):
-        if "zeta_sphere" in r and math.isfinite(r["zeta_sphere"]):
-            out.append(row(
-                "c", "zeta(H) ~ 1.7/(H+1) from the sphere's fractal branch (eq. 16's B)", r["zeta_sphere"],
-                r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"], r["zeta_estimate"],
-                c["off"] or verdict(r["zeta_estimate"], r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"]),
-                sweep=c["sweep"], loads=c["loads"], **c["where"]))
     return out
+
+
+def _c_sphere(combination):
+    r, c = _context(combination)
+    if not ("zeta_sphere" in r and math.isfinite(r["zeta_sphere"])):
+        return []
+    return row(
+        "c", "zeta(H) ~ 1.7/(H+1) from the sphere's fractal branch (eq. 16's B)", r["zeta_sphere"],
+        r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"], r["zeta_estimate"],
+        verdict(r["zeta_estimate"], r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"]),
+        sweep=c["sweep"], loads=c["loads"], **c["where"])
 
 
 def _slope_row(r, c, slopes, claim, name, text):
@@ -99,52 +103,52 @@ def _slope_row(r, c, slopes, claim, name, text):
     ratio = slopes.low_max_ratio if window == "low" else slopes.high_min_ratio
     return row(
         claim, text, r[name], r[f"{name}_ci_low"], r[f"{name}_ci_high"], r[f"{name}_theory"],
-        c["off"] or r[f"{name}_verdict"], sweep=c["sweep"],
+        r[f"{name}_verdict"], sweep=c["sweep"],
         loads=(f"{int(r[f'n_loads_{window}'])} resolved loads with F {'<=' if window == 'low' else '>='} "
                f"{ratio:g} F_tr"),
         note=(f"eq. 16 itself gives {r[f'{name}_eq16']:.3f} over the same loads: "
               f"{verdict(r[f'{name}_eq16'], r[f'{name}_ci_low'], r[f'{name}_ci_high'])}"), **c["where"])
 
 
-def _d(inputs):
-    return [_slope_row(r, c, inputs.study.fit.slopes, "d", "slope_low", "low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)")
-            for r, c in _spheres(inputs)]
+def _d(combination):
+    r, c = _context(combination)
+    return _slope_row(r, c, combination.study.fit.slopes, "d", "slope_low",
+                      "low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)")
 
 
-def _e(inputs):
-    out = []
-    for r, c in _spheres(inputs):
-        out.append(_slope_row(r, c, inputs.study.fit.slopes, "e", "slope_high", "high-force slope = 1/(m+1) (1/3: Hertz, eq. 9)"))
-        if "hertz_coefficient" in r and math.isfinite(r["hertz_coefficient"]):
-            out.append(row(
-                "e", f"body prefactor A of F = A k^(m+1) + B k^(H+1) equals eq. 7 (L/(6R): Hertz, eq. 10){c['body']}",
-                r["hertz_coefficient"], r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"],
-                r["hertz_coefficient_theory"],
-                c["off"] or verdict(r["hertz_coefficient_theory"], r["hertz_coefficient_ci_low"],
-                                    r["hertz_coefficient_ci_high"]),
-                sweep=c["sweep"], loads=c["loads"], note="normalised units F/(E*L^2), k/(E*L)", **c["where"]))
-    return out
-
-
-def _f(inputs):
-    out = []
-    for r, c in _spheres(inputs):
-        get = r.get
-        softer = (verdict_bound(1.0, get("k_over_hertz_below_Ftr_ci_low", math.nan),
-                                get("k_over_hertz_below_Ftr_ci_high", math.nan), side="below")
-                  if r["n_loads_below_Ftr"] else "untested: no resolved load below F_tr")
+def _e(combination):
+    r, c = _context(combination)
+    out = [_slope_row(r, c, combination.study.fit.slopes, "e", "slope_high",
+                      "high-force slope = 1/(m+1) (1/3: Hertz, eq. 9)")]
+    if "hertz_coefficient" in r and math.isfinite(r["hertz_coefficient"]):
         out.append(row(
-            "f", f"below F_tr roughness lowers k against the smooth body (Conclusions){c['body']}",
-            get("k_over_hertz_below_Ftr", math.nan), get("k_over_hertz_below_Ftr_ci_low", math.nan),
-            get("k_over_hertz_below_Ftr_ci_high", math.nan), 1.0, c["off"] or softer,
-            sweep=c["sweep"], loads=f"{int(r['n_loads_below_Ftr'])} resolved loads below F_tr",
-            note="measured: max over those loads of k/k_body(F) (eq. 9 for m = 2)", **c["where"]))
+            "e", f"body prefactor A of F = A k^(m+1) + B k^(H+1) equals eq. 7 (L/(6R): Hertz, eq. 10){c['body']}",
+            r["hertz_coefficient"], r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"],
+            r["hertz_coefficient_theory"],
+            verdict(r["hertz_coefficient_theory"], r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"]),
+            sweep=c["sweep"], loads=c["loads"], note="normalised units F/(E*L^2), k/(E*L)", **c["where"]))
     return out
+
+
+def _f(combination):
+    r, c = _context(combination)
+    get = r.get
+    softer = (verdict_bound(1.0, get("k_over_hertz_below_Ftr_ci_low", math.nan),
+                            get("k_over_hertz_below_Ftr_ci_high", math.nan), side="below")
+              if r["n_loads_below_Ftr"] else "untested: no resolved load below F_tr")
+    return row(
+        "f", f"below F_tr roughness lowers k against the smooth body (Conclusions){c['body']}",
+        get("k_over_hertz_below_Ftr", math.nan), get("k_over_hertz_below_Ftr_ci_low", math.nan),
+        get("k_over_hertz_below_Ftr_ci_high", math.nan), 1.0, softer,
+        sweep=c["sweep"], loads=f"{int(r['n_loads_below_Ftr'])} resolved loads below F_tr",
+        note="measured: max over those loads of k/k_body(F) (eq. 9 for m = 2)", **c["where"])
 
 
 def _paper_spheres(inputs):
+    """The rows of ``crossover.csv`` at the paper's setting (:func:`roughcontact.study.axes.paper_mask`);
+    claims (g) and (h) leave the others out."""
     cross = inputs.cross
-    return is_paper_setting(cross, inputs.study.grid.length) if len(cross) else cross
+    return cross[axes.paper_mask(cross, inputs.study.grid.length)] if len(cross) else cross
 
 
 def _g(inputs):
@@ -217,11 +221,19 @@ def _h(inputs):
     return out
 
 
-register(Claim("a", "eq. 16 (fitted zeta) describes the BEM ensemble within 10 % at every resolved load", _a))
-register(Claim("b", "the crossover force F_tr of eq. 17", _b))
-register(Claim("c", "zeta(H) ~ 1.7/(H+1) (eq. 13), from flat runs and from the sphere's fractal branch", _c))
-register(Claim("d", "the low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)", _d))
-register(Claim("e", "the high-force slope 1/(m+1) and the body prefactor of eq. 7 (Hertz: eqs. 9-10)", _e))
-register(Claim("f", "below F_tr roughness lowers k against the smooth body (Conclusions)", _f))
+#: claims (a)-(f) are tested on every sphere combination with a crossover row; off the paper's setting
+#: (:func:`~roughcontact.study.claims.registry.off_theory`) their rows say untested
+_PER_SPHERE = all_of(with_crossover, at_theory)
+
+register(Claim("a", "eq. 16 (fitted zeta) describes the BEM ensemble within 10 % at every resolved load",
+               estimate=_a, applies=_PER_SPHERE))
+register(Claim("b", "the crossover force F_tr of eq. 17", estimate=_b, applies=_PER_SPHERE))
+register(Claim("c", "zeta(H) ~ 1.7/(H+1) (eq. 13), from flat runs and from the sphere's fractal branch", _c,
+               estimate=_c_sphere, applies=_PER_SPHERE))
+register(Claim("d", "the low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)", estimate=_d, applies=_PER_SPHERE))
+register(Claim("e", "the high-force slope 1/(m+1) and the body prefactor of eq. 7 (Hertz: eqs. 9-10)", estimate=_e,
+               applies=_PER_SPHERE))
+register(Claim("f", "below F_tr roughness lowers k against the smooth body (Conclusions)", estimate=_f,
+               applies=_PER_SPHERE))
 register(Claim("g", "F_tr ~ R^((H+1)/(2-H)) h_rms^(3/(2-H)) (eq. 17)", _g))
 register(Claim("h", "eq. 18: F_tr = lambda E* h^1.5 R^0.5 as H -> 0", _h))

@@ -11,13 +11,13 @@ import math
 import numpy as np
 
 from ...models import paper
-from .. import provenance, runs
+from .. import axes, provenance
 from ..ensemble import resolved
 from ..io import read_groups, write_csv, write_netcdf
 from ..statistics import bootstrap_indices
 from ..study_settings import StudySettings
 
-__all__ = ["paper_setting", "fit_zeta", "run_fit_zeta"]
+__all__ = ["paper_setting", "off_paper", "fit_zeta", "run_fit_zeta"]
 
 log = logging.getLogger(__name__)
 
@@ -25,21 +25,36 @@ log = logging.getLogger(__name__)
 # --------------------------------------------------------------------------
 # ζ(H)
 # --------------------------------------------------------------------------
-def paper_setting(ds, length: float):
-    """*ds* at the paper's setting of the optional axes (paraboloid, no roll-off,
-    no cutoff, elastic: :data:`runs.DEFAULTS`), those dimensions dropped; where the
-    sweep lacks the paper's value, its first value is taken. Returns the selection
-    and a note naming such substitutions ("" if none)."""
-    pick, notes = {}, []
-    for axis, default in runs.DEFAULTS.items():
+def _selection(ds, length: float) -> tuple[dict, dict]:
+    """``(pick, substituted)``: the coordinate of every optional axis of *ds* at the paper's setting
+    (:func:`roughcontact.study.axes.paper_coordinates`), and those the sweep lacks, replaced by
+    its first value."""
+    pick, substituted = {}, {}
+    for axis, value in axes.paper_coordinates(length).items():
         if axis not in ds.dims:
             continue
-        value = runs.coordinate(axis, default, length)
         if value not in ds[axis].values:
-            value = float(ds[axis].values[0])
-            notes.append(f"{axis} = {value:g}")
+            value = substituted[axis] = float(ds[axis].values[0])
         pick[axis] = value
+    return pick, substituted
+
+
+def paper_setting(ds, length: float):
+    """*ds* at the paper's setting of the optional axes (paraboloid, no roll-off, no cutoff,
+    elastic, no adhesion: :func:`roughcontact.study.axes.paper_coordinates`), those dimensions
+    dropped; where the sweep lacks the paper's value, its first value is taken. Returns the
+    selection and a note naming such substitutions ("" if none)."""
+    pick, substituted = _selection(ds, length)
+    notes = [f"{axis} = {value:g}" for axis, value in substituted.items()]
     return ds.sel(pick), ("with " + ", ".join(notes)) if notes else ""
+
+
+def off_paper(groups: dict, length: float) -> dict:
+    """``{axis: coordinate}`` of the optional axes at which :func:`fit_zeta` fits ζ(H) off the
+    paper's setting (the runs it reads, flat ones if there are, lack the paper's value); ``{}``
+    where it fits at the paper's setting."""
+    kind = "flat" if "flat" in groups else "sphere"
+    return _selection(groups[kind], length)[1] if kind in groups else {}
 
 
 def _zeta_points(groups, study: StudySettings, hurst):
