@@ -8,32 +8,19 @@ import pytest
 import xarray as xr
 from test_scorecard import CFG, _groups
 
+from examples import loaded
+
 from roughcontact.study import claims
-from roughcontact.study.claims import Claim, register, row
-from roughcontact.study.claims.registry import sphere
-from roughcontact.study.statistics import bootstrap_indices, interval, verdict_bound
-
-
-def stiffening(combination):
-    """Claim (x): the ensemble-mean stiffness rises with the load (dk/dF > 0) on every sphere
-    combination; measured: the smallest relative rise of k between neighbouring loads, with its
-    bootstrap-over-seeds interval; consistent when the whole interval lies above 0."""
-    k = combination.data["stiffness"].values                       # (seed, force)
-    fit = combination.study.fit.zeta
-    rise = lambda mean: (np.diff(mean, axis=-1) / mean[..., :-1]).min(-1)  # noqa: E731
-    samples = rise(k[bootstrap_indices(k.shape[0], fit.bootstrap)].mean(1))
-    low, high = interval(samples, fit.confidence)
-    return row("x", "k rises with F at every load", float(rise(k.mean(0))), low, high, 0.0,
-               verdict_bound(0.0, low, high, side="above"), **combination.axes)
+from roughcontact.study.claims import Claim, register
 
 
 @pytest.fixture
 def stiffening_claim():
-    """The package guide's worked example: one claim object, removed afterwards."""
+    """The package guide's worked example (``docs/guide/extending/claim_example.py``), claim (x):
+    loaded as its module, removed afterwards."""
     claims.claims()   # the built-in claims first
-    claim = register(Claim("x", "the ensemble-mean stiffness rises with the load", estimate=stiffening, applies=sphere))
-    yield claim
-    del claims.CLAIMS["x"]
+    with loaded("claim_example.py", claims.CLAIMS, "x"):
+        yield claims.CLAIMS["x"]
 
 
 def _table(groups):
@@ -85,7 +72,7 @@ def test_claim_without_its_inputs_has_no_row(stiffening_claim):
 def test_second_claim_of_a_letter_is_an_error():
     claims.claims()
     with pytest.raises(ValueError, match="'a'"):
-        register(Claim("a", "again", estimate=stiffening))
+        register(Claim("a", "again", estimate=lambda combination: []))
 
 
 def test_rows_are_ordered_by_letter(stiffening_claim):

@@ -26,9 +26,9 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
+from examples import EXAMPLES, module_of
 
 ROOT = Path(__file__).resolve().parents[1]
-EXAMPLES = ROOT / "docs" / "guide" / "extending"
 AXIS, MODEL, CLAIM = "plateau", "smooth_body", "x"
 
 #: two sphere combinations (two radii), one H and h_rms, on a small grid
@@ -39,14 +39,6 @@ BASE = {"grid": {"n": 65, "length": 1.0}, "e_star": 1.0, "hurst": [0.7], "radius
         "fit": {"zeta": {"min_cells": 10, "bootstrap": 100}}}
 #: the same with the example axis at its paper value (null) and one other
 WITH_AXIS = {**BASE, AXIS: [None, 1.0]}
-
-
-def module_of(example: Path) -> str:
-    """The dotted module an example goes to: its first line, ``# module: roughcontact.<path>``."""
-    first = example.read_text().splitlines()[0]
-    match = re.fullmatch(r"# module: (roughcontact(?:\.\w+)+)", first.strip())
-    assert match, f"{example.name}: first line {first!r} is not '# module: roughcontact.<dotted.path>'"
-    return match.group(1)
 
 
 def _snakemake(where: Path, config: Path, *args: str) -> subprocess.CompletedProcess:
@@ -222,3 +214,25 @@ def test_paper_claims_are_untested_off_the_axis_paper_value(with_axis):
     off = claims[claims["claim"].isin(list("abdef")) & np.isfinite(claims[AXIS].to_numpy(float))]
     assert len(off) and (off["verdict"] == "untested").all() and off["reason"].str.contains(AXIS).all(), \
         off[["claim", "verdict", "reason"]].to_string()
+
+
+@pytest.fixture(scope="module")
+def measured(scratch):
+    """A measured scan (64² µm heights of ``test_measured_pipeline``) pressed in the scratch copy
+    with the examples in it: its scorecard."""
+    pytest.importorskip("SurfaceTopography")
+    from test_measured_pipeline import _cfg, _scan
+
+    where, _, _ = scratch
+    work = where / "measured"
+    work.mkdir()
+    _scan(work / "scan.nc")
+    config = work / "measured.yaml"
+    config.write_text(yaml.safe_dump(_cfg(topography=[{"file": "scan.nc", "detrend": "none"}], hurst=[], h_rms=[],
+                                          radius=[20.0])))
+    _ok(_snakemake(where, config, "-q", "--directory", str(work)))
+    return pd.read_csv(work / "results" / "measured_scorecard" / "scan.csv")
+
+
+def test_example_model_scores_a_measured_scan(measured):
+    assert MODEL in set(measured["model"]), f"models of the measured scorecard: {sorted(set(measured['model']))}"

@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from examples import loaded
 from test_scorecard import CFG, FORCE, HURST, ZETA, _groups
 
 from roughcontact.models import paper
@@ -17,20 +18,18 @@ from roughcontact.surfaces import self_affine
 from roughcontact.surfaces.spectrum_fit import fit_spectrum
 
 
-def hertz(force, s: registry.Surface):
-    """The smooth sphere, eq. 9: k = (6 R E*² F)^(1/3); no answer for a flat surface."""
-    if s.flat:
-        return None
-    return paper.hertz_stiffness(force, radius=s.radius, e_star=s.e_star)
-
-
 @pytest.fixture
 def hertz_model():
-    """The package guide's worked example: the smooth sphere as a model, removed afterwards."""
+    """The package guide's worked example (``docs/guide/extending/model_example.py``), the smooth
+    body (eq. 9 for the paraboloid): loaded as its module, removed afterwards."""
     registry.models()   # the built-in models first
-    model = registry.register(registry.Model("hertz", "hertz: the smooth sphere, eq. 9", hertz, "eq. 9"))
-    yield model
-    del registry.MODELS["hertz"]
+    with loaded("model_example.py", registry.MODELS, "smooth_body"):
+        yield registry.MODELS["smooth_body"]
+
+
+def hertz(force, s: registry.Surface):
+    """eq. 9, a model function for the registry's own checks."""
+    return paper.hertz_stiffness(force, radius=s.radius, e_star=s.e_star)
 
 
 def test_registry_order():
@@ -45,7 +44,7 @@ def test_second_registration_of_a_name_is_an_error():
 
 def test_generated_scorecard_scores_a_registered_model(hertz_model):
     table, _ = scorecard.scorecard(_groups(np.ones(4)), pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
-    row = table[table["model"] == "hertz"]
+    row = table[table["model"] == "smooth_body"]
     assert len(row) == 1, f"models scored: {sorted(set(table['model']))}"
 
 
@@ -55,19 +54,19 @@ def test_registered_model_deviation_is_its_closed_form(hertz_model):
     k16 = paper.stiffness_from_force(FORCE, radius=0.5, hurst=HURST, h_rms=9e-3, length=1.0, e_star=1.0, zeta=ZETA)
     resolved = FORCE >= 1e-5
     expected = np.abs(paper.hertz_stiffness(FORCE, radius=0.5, e_star=1.0)[resolved] / k16[resolved] - 1).max()
-    got = float(table[table["model"] == "hertz"]["max_rel_dev"].iloc[0])
+    got = float(table[table["model"] == "smooth_body"]["max_rel_dev"].iloc[0])
     assert got == pytest.approx(expected, rel=1e-12), f"max_rel_dev {got} against {expected}"
 
 
 def test_lead_paragraph_names_a_registered_model(hertz_model):
-    assert "hertz: the smooth sphere, eq. 9" in scorecard.scorecard_lead(), "lead paragraph"
+    assert "smooth_body: the smooth body of revolution, eq. 7 (eq. 9 for the paraboloid)" in scorecard.scorecard_lead(), "lead paragraph"
 
 
 def test_measured_scorecard_predicts_a_registered_model(hertz_model):
     h = self_affine(64, hurst=0.8, h_rms=0.009, length=1.0, seed=1)
     fit = fit_spectrum(h, length=1.0, window=None, detrend="mean", resamples=10)
     out = predict(FORCE, fit, radius=0.5, e_star=1.0, length=1.0, n=64)
-    np.testing.assert_allclose(out["hertz"], paper.hertz_stiffness(FORCE, radius=0.5, e_star=1.0), rtol=1e-14,
+    np.testing.assert_allclose(out["smooth_body"], paper.hertz_stiffness(FORCE, radius=0.5, e_star=1.0), rtol=1e-14,
                                err_msg="measured prediction of the registered model")
 
 
@@ -75,4 +74,4 @@ def test_model_that_does_not_apply_is_left_out(hertz_model):
     h = self_affine(64, hurst=0.8, h_rms=0.009, length=1.0, seed=1)
     fit = fit_spectrum(h, length=1.0, window=None, detrend="mean", resamples=10)
     out = predict(FORCE, fit, radius=math.inf, e_star=1.0, length=1.0, n=64)
-    assert "hertz" not in out, f"a flat surface got {sorted(out)}"
+    assert "smooth_body" not in out, f"a flat surface got {sorted(out)}"
