@@ -1,0 +1,67 @@
+"""``roughcontact list axes|models|claims``: one line per registered item, or ``--json``."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from roughcontact.cli import main
+from roughcontact.models import scorecard
+from roughcontact.study import axes
+from roughcontact.study.claims import claims
+
+
+def _lines(capsys, *argv) -> list[str]:
+    assert main(["list", *argv]) == 0
+    return capsys.readouterr().out.splitlines()
+
+
+def _json(capsys, registry) -> list:
+    assert main(["list", registry, "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_axes_one_line_each(capsys):
+    names = [line.split("\t")[0] for line in _lines(capsys, "axes")]
+    assert names == list(axes.AXES), f"axes listed: {names}"
+
+
+def test_axis_line_has_unit_and_paper_value(capsys):
+    line = next(x for x in _lines(capsys, "axes") if x.startswith("exponent\t"))
+    assert line.split("\t")[1:3] == ["unit 1", "paper 2.0"], f"line: {line!r}"
+
+
+def test_required_axis_has_no_paper_value(capsys):
+    line = next(x for x in _lines(capsys, "axes") if x.startswith("hurst\t"))
+    assert line.split("\t")[2] == "paper (required)", f"line: {line!r}"
+
+
+def test_axes_json_has_name_and_paper(capsys):
+    entry = next(item for item in _json(capsys, "axes") if item["name"] == "exponent")
+    assert entry["paper"] == 2.0, f"entry: {entry}"
+
+
+def test_nullable_axis_json_paper_is_null(capsys):
+    entry = next(item for item in _json(capsys, "axes") if item["name"] == "hardness")
+    assert entry["paper"] is None, f"entry: {entry}"
+
+
+def test_models_one_line_each(capsys):
+    names = [line.split("\t")[0] for line in _lines(capsys, "models")]
+    assert names == list(scorecard.models()), f"models listed: {names}"
+
+
+def test_models_json_has_declared_axes(capsys):
+    entry = next(item for item in _json(capsys, "models") if item["name"] == "greenwood_tripp")
+    assert entry["axes"] == list(scorecard.models()["greenwood_tripp"].axes), f"entry: {entry}"
+
+
+def test_claims_one_line_each(capsys):
+    names = [line.split("\t")[0] for line in _lines(capsys, "claims")]
+    assert names == list(claims()), f"claims listed: {names}"
+
+
+def test_unknown_registry_is_a_usage_error(capsys):
+    with pytest.raises(SystemExit) as info:
+        main(["list", "presets"])
+    assert info.value.code == 2, f"exit code {info.value.code}"
