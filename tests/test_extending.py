@@ -156,6 +156,16 @@ def with_axis(scratch):
     return where, before, planned
 
 
+def _table(with_axis, name: str) -> pd.DataFrame:
+    """``results/<name>.csv`` of the study with the example axis."""
+    return pd.read_csv(with_axis[0] / "results" / f"{name}.csv")
+
+
+def _off_paper(table: pd.DataFrame) -> pd.DataFrame:
+    """The rows of *table* off the example axis's paper value (its coordinate ``inf``)."""
+    return table[np.isfinite(table[AXIS].to_numpy(float))]
+
+
 def test_axis_at_its_paper_value_keeps_the_runs(with_axis):
     where, before, _ = with_axis
     after = _runs(where)
@@ -169,49 +179,39 @@ def test_axis_off_its_paper_value_adds_only_its_runs(with_axis):
 
 
 def test_example_model_scores_every_combination(with_axis):
-    where, _, _ = with_axis
-    models = pd.read_csv(where / "results" / "models.csv")
+    models = _table(with_axis, "models")
     assert len(models[models["model"] == MODEL]) == 4, models[["model", "combination"]].to_string()
 
 
 def test_off_paper_rows_are_no_paper_setting(with_axis):
-    where, _, _ = with_axis
-    models = pd.read_csv(where / "results" / "models.csv")
-    off = models[np.isfinite(models[AXIS].to_numpy(float))]
+    off = _off_paper(_table(with_axis, "models"))
     assert len(off) and not off["paper_setting"].any(), off[["model", "combination", "paper_setting"]].to_string()
 
 
 def test_off_paper_rows_of_models_without_the_axis_are_not_ranked(with_axis):
-    where, _, _ = with_axis
-    models = pd.read_csv(where / "results" / "models.csv")
-    off = models[np.isfinite(models[AXIS].to_numpy(float))]
+    off = _off_paper(_table(with_axis, "models"))
     assert off["rank"].isna().all(), off[["model", "combination", "rank"]].to_string()
 
 
 def test_off_paper_rows_name_the_axis_they_do_not_model(with_axis):
-    where, _, _ = with_axis
-    models = pd.read_csv(where / "results" / "models.csv")
-    off = models[np.isfinite(models[AXIS].to_numpy(float))]
+    off = _off_paper(_table(with_axis, "models"))
     assert off["not_modelled"].astype(str).str.contains(AXIS).all(), off[["model", "not_modelled"]].to_string()
 
 
 def test_example_claim_has_a_row_per_sphere_combination(with_axis):
-    where, _, _ = with_axis
-    claims = pd.read_csv(where / "results" / "claims.csv")
+    claims = _table(with_axis, "claims")
     assert len(claims[claims["claim"] == CLAIM]) == 4, claims[["claim", "verdict"]].to_string()
 
 
 def test_example_claim_gives_verdicts(with_axis):
-    where, _, _ = with_axis
-    claims = pd.read_csv(where / "results" / "claims.csv")
+    claims = _table(with_axis, "claims")
     verdicts = set(claims[claims["claim"] == CLAIM]["verdict"])
     assert verdicts <= {"consistent", "differs", "untested"}, f"verdicts of ({CLAIM}): {verdicts}"
 
 
 def test_paper_claims_are_untested_off_the_axis_paper_value(with_axis):
-    where, _, _ = with_axis
-    claims = pd.read_csv(where / "results" / "claims.csv")
-    off = claims[claims["claim"].isin(list("abdef")) & np.isfinite(claims[AXIS].to_numpy(float))]
+    claims = _table(with_axis, "claims")
+    off = _off_paper(claims[claims["claim"].isin(list("abdef"))])
     assert len(off) and (off["verdict"] == "untested").all() and off["reason"].str.contains(AXIS).all(), \
         off[["claim", "verdict", "reason"]].to_string()
 
