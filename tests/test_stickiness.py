@@ -3,6 +3,7 @@ surface and interaction of a run against the closed-form criterion, the loading 
 with known answers, the sign of the slope far from N = 1, the merged table and claim (q)."""
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -78,12 +79,57 @@ def test_an_unknown_job_names_the_sweep():
         _settings().job("H0.8_N7", 0)
 
 
+# --- a run's identity: its own settings, not the configuration -----------------------------------
+
+def test_more_seeds_or_numbers_leave_a_runs_settings_and_hash_unchanged():
+    """A run shared by two sweeps that differ by one more seed, number or H (or by the merge's
+    interval, fit.zeta) has equal settings and config_hash: Snakemake reruns nothing."""
+    base = _settings(hurst=[0.8], number=[0.5], seeds=2)
+    run = base.run_of("H0.8_N0.5", 1)
+    for other in (_settings(hurst=[0.8], number=[0.5], seeds=3), _settings(hurst=[0.8], number=[0.5, 3.0], seeds=2),
+                  _settings(hurst=[0.5, 0.8], number=[0.5], seeds=2)):
+        assert other.run_of("H0.8_N0.5", 1) == run, other
+        assert provenance.config_hash(other.run_of("H0.8_N0.5", 1).record()) == provenance.config_hash(run.record())
+    bootstrap = StickinessSettings.of(resolve_config({**TINY, "stickiness": {"hurst": [0.8], "number": [0.5]},
+                                                      "fit": {"zeta": {"bootstrap": 17}}}))
+    assert bootstrap.run_of("H0.8_N0.5", 1) == run, "the merge's bootstrap is no setting of a run"
+
+
+def test_another_grid_or_tolerance_is_another_run():
+    run = _settings(hurst=[0.8], number=[0.5]).run_of("H0.8_N0.5", 0)
+    for other in (_settings(hurst=[0.8], number=[0.5], n=256), _settings(hurst=[0.8], number=[0.5], steps=9)):
+        assert provenance.config_hash(other.run_of("H0.8_N0.5", 0).record()) != provenance.config_hash(run.record())
+
+
+def test_the_tolerance_is_the_solvers_capped_at_1e_8():
+    """solver.tol 1e-6 gives 1e-8 exactly, 1e-10 stays 1e-10."""
+    loose = resolve_config({**TINY, "solver": {**TINY["solver"], "tol": 1e-6}, "stickiness": {}})
+    tight = resolve_config({**TINY, "solver": {**TINY["solver"], "tol": 1e-10}, "stickiness": {}})
+    assert StickinessSettings.of(loose).tol == 1e-8 and StickinessSettings.of(tight).tol == 1e-10
+
+
+def test_the_run_file_records_the_runs_settings_and_their_hash(tmp_path, monkeypatch):
+    """config and config_hash of a stickiness run file are those of its StickinessRun (the
+    loading path itself replaced by a stub: what is written, not what is solved)."""
+    import roughcontact.study.stickiness.run as run_module
+
+    s = _settings(hurst=[0.8], number=[0.5], steps=8)
+    run = s.run_of("H0.8_N0.5", 0)
+    stub = {"depth": np.zeros(2), "force": np.zeros(2), "contact_cells": np.zeros(2, int), "zone_cells": np.zeros(2, int),
+            **{name: 0.5 for name in runfile.STICKINESS_SCALARS}}
+    monkeypatch.setattr(run_module, "stickiness_run", lambda r: stub)
+    run_module.run_stickiness_job(run, tmp_path / "r.nc")
+    with xr.open_dataset(tmp_path / "r.nc") as ds:
+        assert json.loads(ds.attrs["config"]) == run.record()
+        assert ds.attrs["config_hash"] == provenance.config_hash(run.record())
+
+
 # --- the surface and its interaction: the closed-form criterion ---------------------------------
 
 @pytest.mark.parametrize("n", [64, 65])
 def test_the_surface_has_the_sweeps_rms_gradient(n):
     s = _settings(n=n, cutoff=4)
-    surface = stickiness_surface(s, StickinessJob(0.8, 0.5, 3))
+    surface = stickiness_surface(s.run(StickinessJob(0.8, 0.5, 3)))
     slope = math.sqrt(2.0 * spectral_moments(surface.heights, length=s.length).m2)
     assert slope == pytest.approx(s.rms_slope, rel=1e-12), f"h' on {n}^2"
 
@@ -94,7 +140,7 @@ def test_the_interaction_has_the_jobs_number_and_range(n, number):
     """w and dr invert Pastewka & Robbins' number N = (h'E* dr/(2w))(h'^2/(h'' dr))^(2/3) and
     dr/g0 exactly (rounding only)."""
     s = _settings(n=n, cutoff=4)
-    criterion = stickiness_surface(s, StickinessJob(0.8, number, 1)).criterion
+    criterion = stickiness_surface(s.run(StickinessJob(0.8, number, 1))).criterion
     assert criterion.number == pytest.approx(number, rel=1e-12), "N"
     assert criterion.range_ratio == pytest.approx(s.range_ratio, rel=1e-12), "dr/g0"
 
@@ -120,7 +166,7 @@ def test_loading_slope_is_nan_short_of_the_area():
 def extremes():
     """128^2, cutoff 4 cells, one surface at N = 0.3 and N = 1000 (about 8 s)."""
     s = _settings(n=128, cutoff=4, number=[0.3, 1000.0], seeds=2, steps=16)
-    return s, {number: stickiness_run(s, StickinessJob(0.8, number, 0)) for number in s.number}
+    return s, {number: stickiness_run(s.run(StickinessJob(0.8, number, 0))) for number in s.number}
 
 
 def test_far_below_one_the_surface_is_sticky(extremes):
@@ -147,7 +193,7 @@ def test_far_above_one_the_slope_is_that_without_adhesion(extremes):
     at N = 1e5, that last the chord's own error (F interpolated between loading states); -20 % at
     N = 30."""
     s, runs = extremes
-    expected = _repulsive_slope(s, stickiness_surface(s, StickinessJob(0.8, 1000.0, 0)).heights)
+    expected = _repulsive_slope(s, stickiness_surface(s.run(StickinessJob(0.8, 1000.0, 0))).heights)
     assert runs[1000.0]["loading_slope"] == pytest.approx(expected, rel=0.03), "N = 1000 against no adhesion"
 
 

@@ -17,8 +17,7 @@ rule stickiness_run:
         "../../envs/roughcontact.yaml"
     threads: 1
     params:
-        job=stickiness_job,
-        cfg=config,
+        run=stickiness_run_settings,
     script:
         "../scripts/stickiness_run.py"
 

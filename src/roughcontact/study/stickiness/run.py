@@ -83,15 +83,15 @@ class StickinessSurface:
     criterion: object
 
 
-def stickiness_surface(s, job) -> StickinessSurface:
-    """The surface of *job* (:class:`~.settings.StickinessJob`) in the sweep *s*
-    (:class:`~.settings.StickinessSettings`) and the interaction that gives it the job's number."""
-    z = self_affine(s.n, hurst=job.hurst, h_rms=1.0, length=s.length, seed=job.seed, cutoff=s.cutoff * s.length / s.n)
+def stickiness_surface(s) -> StickinessSurface:
+    """The surface of the run *s* (:class:`~.settings.StickinessRun`) and the interaction that
+    gives it the run's number."""
+    z = self_affine(s.n, hurst=s.hurst, h_rms=1.0, length=s.length, seed=s.seed, cutoff=s.cutoff * s.length / s.n)
     z *= s.rms_slope / math.sqrt(2.0 * spectral_moments(z, length=s.length).m2)
     moments = spectral_moments(z, length=s.length)
     slope, curvature = math.sqrt(2.0 * moments.m2), 0.5 * math.sqrt(8.0 * moments.m4 / 3.0)
     reach = s.range_ratio * pastewka_robbins_gap(rms_slope=slope, rms_curvature=curvature)
-    work = pastewka_robbins_work_of_adhesion(job.number, rms_slope=slope, rms_curvature=curvature,
+    work = pastewka_robbins_work_of_adhesion(s.number, rms_slope=slope, rms_curvature=curvature,
                                              interaction_range=reach, e_star=s.e_star)
     criterion = pastewka_robbins_stickiness(rms_slope=slope, rms_curvature=curvature, interaction_range=reach,
                                             e_star=s.e_star, work_of_adhesion=work)
@@ -111,14 +111,15 @@ def _area_approach(z, s) -> float:
     raise IndentError(f"stickiness: no load brings the contact to stickiness.area = {s.area:g} of the grid")
 
 
-def stickiness_run(s, job) -> dict:
-    """The loading path of one stickiness run (module docstring): a dict of the arrays ``depth``,
+def stickiness_run(s) -> dict:
+    """The loading path of the stickiness run *s* (:class:`~.settings.StickinessRun`; module
+    docstring): a dict of the arrays ``depth``,
     ``force``, ``contact_cells``, ``zone_cells`` (one per approach) and the scalars of
     :data:`roughcontact.study.runfile.STICKINESS_SCALARS`. Raises
     :class:`~roughcontact.errors.IndentError` naming the run when a solve does not converge; each
     approach is logged."""
-    name = f"stickiness {job.combination} seed {job.seed}"
-    surface = stickiness_surface(s, job)
+    name = s.describe()
+    surface = stickiness_surface(s)
     z, reach, work, criterion = (surface.heights, surface.interaction_range, surface.work_of_adhesion,
                                  surface.criterion)
     top = _area_approach(z, s) + reach
@@ -156,17 +157,16 @@ def stickiness_run(s, job) -> dict:
     }
 
 
-def run_stickiness_job(cfg, job, output) -> dict:
-    """``stickiness_run`` rule: the run of *job* in the sweep of the resolved configuration *cfg*
-    (:class:`~.settings.StickinessSettings`) -> its run file *output* (NetCDF, atomic, with
-    provenance; :func:`roughcontact.study.runfile.write_stickiness_run`)."""
+def run_stickiness_job(s, output) -> dict:
+    """``stickiness_run`` rule: the run *s* (:class:`~.settings.StickinessRun`, the rule's
+    ``params``) -> its run file *output* (NetCDF, atomic; its provenance records *s*:
+    ``config`` is :meth:`~.settings.StickinessRun.record`, ``config_hash`` its hash;
+    :func:`roughcontact.study.runfile.write_stickiness_run`)."""
     from .. import provenance, runfile
-    from .settings import StickinessSettings
 
-    s = StickinessSettings.of(cfg)
-    out = stickiness_run(s, job)
+    out = stickiness_run(s)
     runfile.write_stickiness_run(output, out, attrs=provenance.provenance_attrs(
-        config=getattr(cfg, "config", cfg), hurst=job.hurst, number=job.number, seed=job.seed, grid_n=s.n, grid_length=s.length,
+        config=s.record(), hurst=s.hurst, number=s.number, seed=s.seed, grid_n=s.n, grid_length=s.length,
         e_star=s.e_star, periodic=1, cutoff_cells=s.cutoff, area=s.area, solver_tol=s.tol,
         interaction="Maugis-Dugdale (roughcontact.bem.cohesive)",
         reference="L. Pastewka and M. O. Robbins, PNAS 111 (2014) 3298 (doi:10.1073/pnas.1320846111)"))

@@ -4,7 +4,9 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 
-__all__ = ["StickinessJob", "StickinessSettings"]
+from ..study_settings import capped_tol
+
+__all__ = ["StickinessJob", "StickinessRun", "StickinessSettings"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -19,6 +21,65 @@ class StickinessJob:
     def combination(self) -> str:
         """The name of its (H, N) combination in paths, e.g. ``H0.8_N0.5``."""
         return f"H{self.hurst:g}_N{self.number:g}"
+
+
+@dataclasses.dataclass(frozen=True)
+class StickinessRun:
+    """The resolved settings of one stickiness run: everything it depends on and nothing else.
+
+    The ``stickiness_run`` rule's ``params`` and the ``config`` (and ``config_hash``) its run file
+    records, so that another seed, number or Hurst exponent in the sweep, or a change of the
+    merge's interval (``fit.zeta``), reruns no finished run. Built by
+    :meth:`StickinessSettings.run`.
+
+    Attributes
+    ----------
+    hurst, number, seed :
+        The run (:class:`StickinessJob`): Hurst exponent, Pastewka–Robbins number, seed.
+    n : int
+        Grid points per side (periodic).
+    length, e_star : float
+        Side ``L`` of the surface (length) and ``E*`` (the study's modulus unit).
+    rms_slope : float
+        ``h′`` of the surface (dimensionless).
+    cutoff : float
+        Short-wavelength cutoff in cells.
+    range_ratio : float
+        ``Δr/g₀`` (dimensionless).
+    area : float
+        Contact fraction up to which the surface is loaded.
+    steps : int
+        Approaches of the loading path.
+    tol : float
+        Relative tolerance of every solve (:func:`roughcontact.study.study_settings.capped_tol`).
+    """
+
+    hurst: float
+    number: float
+    seed: int
+    n: int
+    length: float
+    e_star: float
+    rms_slope: float
+    cutoff: float
+    range_ratio: float
+    area: float
+    steps: int
+    tol: float
+
+    @property
+    def combination(self) -> str:
+        """The name of its (H, N) combination in paths, e.g. ``H0.8_N0.5``."""
+        return f"H{self.hurst:g}_N{self.number:g}"
+
+    def record(self) -> dict:
+        """The settings as a flat mapping of plain values: the run file's ``config`` and what its
+        ``config_hash`` is made of."""
+        return dataclasses.asdict(self)
+
+    def describe(self) -> str:
+        """The run as logs and error messages name it."""
+        return f"stickiness {self.combination} seed {self.seed}"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -46,7 +107,8 @@ class StickinessSettings:
     steps : int
         Approaches of a loading path.
     tol, confidence, bootstrap :
-        The solver's tolerance (``solver.tol``, at most 1e-8) and the interval of the merged table
+        The solver's tolerance (``solver.tol``, capped by
+        :func:`~roughcontact.study.study_settings.capped_tol`) and the interval of the merged table
         (``fit.zeta.confidence``, ``fit.zeta.bootstrap``).
     """
 
@@ -82,7 +144,7 @@ class StickinessSettings:
                    rms_slope=float(section["rms_slope"]), cutoff=float(section["cutoff"]),
                    range_ratio=float(section["range_ratio"]), seeds=int(section["seeds"]),
                    area=float(section["area"]), steps=int(section["steps"]),
-                   tol=min(float(cfg["solver"]["tol"]), 1e-8), confidence=float(zeta["confidence"]),
+                   tol=capped_tol(float(cfg["solver"]["tol"])), confidence=float(zeta["confidence"]),
                    bootstrap=int(zeta["bootstrap"]))
 
     def jobs(self) -> list[StickinessJob]:
@@ -97,3 +159,14 @@ class StickinessSettings:
                 return job
         raise KeyError(f"no stickiness run {combination} seed {seed}; the sweep has "
                        f"{sorted({j.combination for j in self.jobs()})} with seeds 0..{self.seeds - 1}")
+
+    def run(self, job: StickinessJob) -> StickinessRun:
+        """The :class:`StickinessRun` of *job*: the sweep's settings that one run depends on."""
+        return StickinessRun(hurst=job.hurst, number=job.number, seed=job.seed, n=self.n, length=self.length,
+                             e_star=self.e_star, rms_slope=self.rms_slope, cutoff=self.cutoff,
+                             range_ratio=self.range_ratio, area=self.area, steps=self.steps, tol=self.tol)
+
+    def run_of(self, combination: str, seed) -> StickinessRun:
+        """The :class:`StickinessRun` of a path's *combination* and *seed* (:meth:`job`): the
+        ``stickiness_run`` rule's ``params``."""
+        return self.run(self.job(combination, seed))
