@@ -51,7 +51,7 @@ PLASTIC_VARIABLES = ("loading_stiffness", "plastic_cells")
 FORCE_ATTRS = {"long_name": "normal force F", "units": "e_star * length**2"}
 
 #: per-step variables of an adhesive run's retract path (dimension ``retract``,
-#: :mod:`roughcontact.study.adhesive`)
+#: :mod:`roughcontact.study.adhesion.run`)
 RETRACT_VARIABLES = {
     "retract_depth": Variable("f8", "approach from first touch along the retract path (displacement control)",
                               "length"),

@@ -16,7 +16,7 @@ from ..bem import DEFAULT_MAXITER
 from . import axes
 from .runs import parse_combo
 from .axes import kind_of
-from .study_settings import StudySettings, force_grid
+from .study_settings import StudySettings, force_grid, solver_maxiter
 
 __all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
 
@@ -154,7 +154,7 @@ def job_settings(study, run: dict) -> JobSettings:
         n=study.grid.n, length=study.grid.length, e_star=study.e_star,
         force_from=rng.start, force_to=rng.stop, force_count=rng.count,
         tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
-        maxiter=DEFAULT_MAXITER if solver.maxiter is None else solver.maxiter, options=options_of(run),
+        maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
         realization_of=study.grid.realization_of)
 
 

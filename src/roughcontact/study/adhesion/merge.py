@@ -25,6 +25,7 @@ import math
 import numpy as np
 
 from ...errors import MergeError
+from ...models.adhesion import jkr_pull_off
 from ...models.rough_adhesion import johnson_rough_sphere_parameter
 from .. import provenance, runfile, runs
 from ..io import read_run
@@ -98,8 +99,8 @@ def pull_off_table(groups: dict, study):
             row = {"kind": kind, **combo, "pull_off": mean, "pull_off_ci_low": low, "pull_off_ci_high": high,
                    "sticky_fraction": float(np.mean(force < 0)), "n_seeds": int(force.size)}
             if math.isfinite(radius):
-                jkr = -1.5 * math.pi * w * radius / (E * L**2)
-                a_jkr = (9 * math.pi * w * radius**2 / (8 * E)) ** (1 / 3)
+                jkr, a_jkr = jkr_pull_off(radius=radius, e_star=E, work_of_adhesion=w)
+                jkr /= E * L**2
                 cells = ds["retract_contact_cells"].isel({**dict(zip(axes, position)), "retract": 0}).values
                 preload = float(np.mean(np.sqrt(cells / math.pi))) * (L / n)
                 row.update(pull_off_jkr=jkr, pull_off_ratio=mean / jkr, pull_off_ratio_ci_low=high / jkr,

@@ -10,7 +10,7 @@ largest load's contact is wider than JKR's pull-off radius ``a³ = 9πwR²/(8E*)
 largest load above ``(9/4)πwR``); ``pull_off.csv`` reports the ratio of the two
 (``preload_radius_ratio``).
 
-1. **Loading**, force-controlled, to the study's loads (:func:`roughcontact.bem.adhesive_force_path`,
+1. **Loading**, force-controlled, to the study's loads (:func:`roughcontact.bem.adhesion.adhesive_force_path`,
    approach steps of :data:`LOAD_STEPS` per ``d_ref``, the smooth body's approach at the largest
    load plus ``3 h_rms``): per load the approach, the contact cells and area and the stiffness
    ``k = dF/dd`` of the contact set held fixed (the flat-punch stiffness of the contact,
@@ -39,6 +39,7 @@ from ...bem import adhesion
 from ...bem.punch import contact_stiffness
 from ...errors import ConvergenceError, IndentError
 from ...models.rough_adhesion import jkr_critical_approach
+from ..study_settings import capped_tol
 
 __all__ = ["LOAD_STEPS", "RETRACT_STEPS", "RETRACT_REACH", "REFINE", "adhesive_run"]
 
@@ -56,7 +57,13 @@ REFINE = 16
 
 def _reference_approach(s) -> float:
     """``d_ref``: Hertz's approach at the largest load (a sphere; ``a³ = 3FR/(4E*)``, ``d = a²/R``)
-    plus three rms heights; a flat surface: six rms heights."""
+    plus three rms heights; a flat surface: six rms heights.
+
+    Written here, not as ``a = k/(2E*)`` of :func:`roughcontact.models.paper.hertz_stiffness`:
+    that is the same radius in exact arithmetic but differs in the last bit, and ``d_ref`` sets the
+    approach steps of the loading, so it would change every adhesive run's numbers (measured
+    2026-11-27: the retract force of a rough 65² sphere by 7e-9 relative, its pull-off by 9e-14)
+    and invalidate the finished runs' results."""
     if s.kind == "flat":
         return 6.0 * s.h_rms
     a = (3.0 * s.forces()[-1] * s.radius / (4.0 * s.e_star)) ** (1.0 / 3.0)
@@ -71,7 +78,7 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
     solve does not converge or the contact comes off while loading."""
     w, E, L = float(s.work_of_adhesion), s.e_star, s.length
     forces = s.forces()
-    common = dict(length=L, e_star=E, work_of_adhesion=w, periodic=s.periodic, tol=min(s.tol, 1e-8),
+    common = dict(length=L, e_star=E, work_of_adhesion=w, periodic=s.periodic, tol=capped_tol(s.tol),
                   maxiter=s.maxiter)
     stiffness = np.zeros(forces.size)
 

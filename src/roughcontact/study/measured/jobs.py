@@ -42,7 +42,7 @@ from ...surfaces.bodies import paraboloid
 from .. import provenance, runfile, statistics
 from .config import LENGTH_UNITS, plain_unit, to_metres, to_newtons, to_pascals
 from ..runs import force_grid, kind_of
-from ..study_settings import StudySettings, TopographyInput, ZetaFitSettings
+from ..study_settings import StudySettings, TopographyInput, ZetaFitSettings, solver_maxiter
 
 __all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job",
            "merge_surface", "run_order", "sha256"]
@@ -204,7 +204,7 @@ def job_of(study, source: str, name: str, radius: float, index: int, *, force_un
                        e_star=study.e_star, length_unit=study.units.length,
                        pressure_unit=study.units.e_star, force_from=rng.start,
                        force_to=rng.stop, force_count=rng.count, tol=solver.tol,
-                       maxiter=bem.DEFAULT_MAXITER if solver.maxiter is None else solver.maxiter,
+                       maxiter=solver_maxiter(solver.maxiter),
                        stiffness_method=solver.stiffness, rel_step=solver.rel_step,
                        force_unit=plain_unit(force_unit), **extra)
 
