@@ -216,7 +216,8 @@ def _write_runs(tmp_path, s, slopes):
                "pastewka_robbins_number": job.number, "range_ratio": s.range_ratio,
                "loading_slope": slopes[(job.hurst, job.number)][job.seed]}
         path = tmp_path / job.combination / f"seed{job.seed}.nc"
-        runfile.write_stickiness_run(path, out, attrs=provenance.provenance_attrs(grid_n=s.n))
+        runfile.write_stickiness_run(path, out, attrs=provenance.provenance_attrs(config=s.run(job).record(),
+                                                                                  grid_n=s.n))
         paths.append(path)
     return paths
 
@@ -236,7 +237,7 @@ def test_the_table_has_the_mean_slope_inside_its_interval(tmp_path):
 def test_the_merge_rejects_a_run_on_another_grid(tmp_path):
     s = _settings(number=[0.5], seeds=2, steps=8)
     paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
-    with pytest.raises(MergeError, match="stickiness.n"):
+    with pytest.raises(MergeError, match=r"other settings .*differs in n: \d+ in the file, 256 now"):
         merge_stickiness(_settings(number=[0.5], seeds=2, steps=8, n=256), paths)
 
 
@@ -244,7 +245,18 @@ def test_the_merge_rejects_a_file_that_is_no_stickiness_run(tmp_path):
     s = _settings(number=[0.5], seeds=2, steps=8)
     paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
     xr.Dataset(attrs={"title": "something else"}).to_netcdf(paths[1])
-    with pytest.raises(MergeError, match="not a stickiness run"):
+    with pytest.raises(MergeError, match=f"{paths[1]}: foreign NetCDF file .*rerun snakemake"):
+        merge_stickiness(s, paths)
+
+
+def test_the_merge_rejects_a_run_file_of_another_kind(tmp_path):
+    """A file with the variables of a stickiness run but another title (e.g. an indentation run's)."""
+    s = _settings(number=[0.5], seeds=2, steps=8)
+    paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
+    with xr.open_dataset(paths[0]) as ds:
+        other = ds.load().assign_attrs(title=runfile.TITLE)
+    other.to_netcdf(paths[0])
+    with pytest.raises(MergeError, match="is not a roughcontact stickiness run"):
         merge_stickiness(s, paths)
 
 

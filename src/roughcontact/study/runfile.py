@@ -15,7 +15,8 @@ from .axes import AXES
 
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "RETRACT_VARIABLES",
            "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
-           "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "write_stickiness_run"]
+           "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "write_stickiness_run",
+           "RunFileSpec"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)
 TITLE = "roughcontact indentation run"
@@ -94,6 +95,41 @@ STICKINESS_SCALARS = {
 #: the approach coordinate of a stickiness run
 APPROACH_ATTRS = {"long_name": "step of the loading path", "units": "1"}
 
+@dataclasses.dataclass(frozen=True)
+class RunFileSpec:
+    """What the run file of one job must be (:func:`roughcontact.study.io.read_run` checks it):
+    each job record gives its own (``JobSettings.file_spec``, ``StickinessRun.file_spec``,
+    ``MeasuredJob.file_spec``).
+
+    Attributes
+    ----------
+    title : str
+        The ``title`` attribute (:data:`TITLE`, :data:`STICKINESS_TITLE`).
+    variables : tuple of str
+        Variables the file must hold.
+    dims : tuple of str
+        Its dimensions, exactly.
+    config : dict
+        The job's settings record: the file's ``config_hash`` must be its hash.
+    scalars : dict
+        ``{name: value}`` scalar variables the file must hold with these values (a generated
+        run's H, R, h_rms and seed, named by its path).
+    force_variable : str or None
+        The variable holding the load path (``force``; a measured run: ``force_normalized``);
+        ``None``: no load path to check (a stickiness run).
+    forces : numpy.ndarray or None
+        Its expected values (the file's units), equal to 1e-12 relative.
+    """
+
+    title: str
+    variables: tuple
+    dims: tuple
+    config: dict
+    scalars: dict = dataclasses.field(default_factory=dict)
+    force_variable: str | None = None
+    forces: np.ndarray | None = None
+
+
 #: scalar variables of a run file: (NetCDF type, long name, units)
 SCALARS = {
     "hurst": ("f8", "Hurst exponent H", "1"),
@@ -135,48 +171,49 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str, units: dic
     coordinates : tuple of str
         Names of *extra* per-load variables that are coordinates of the others (``force_normalized``).
     """
-    import netCDF4
-
     from . import provenance
 
     units = units or {}
     scalars = scalars or {}
     extra = extra or {}
     labels = " ".join((*scalars, *coordinates))
-    with provenance.atomic_path(path) as tmp:
-        with netCDF4.Dataset(tmp, "w", format="NETCDF4") as nc:
-            nc.setncatts({**attrs, "title": TITLE})
-            nc.createDimension("force", len(out["force"]))
-            scale, unit = units.get("force", (1.0, FORCE_ATTRS["units"]))
-            var = nc.createVariable("force", "f8", ("force",))
-            var[:] = out["force"] * scale
-            var.setncatts({**FORCE_ATTRS, "units": unit})
-            for name, value in scalars.items():
-                dtype, long, unit = SCALARS[name]
-                v = nc.createVariable(name, dtype, ())
-                v.assignValue(value)
-                v.setncatts({"long_name": long, "units": unit})
-            for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES if v in out)):
-                meta = VARIABLES[name]
-                scale, unit = units.get(name, (1.0, meta.units))
-                long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
-                v = nc.createVariable(name, meta.dtype, ("force",))
-                v[:] = out[name] * scale if scale != 1.0 else out[name]
-                v.setncatts({"long_name": long, "units": unit, **({"coordinates": labels} if labels else {})})
-            if "retract_force" in out:   # an adhesive run: its retract path and pull-off
-                nc.createDimension("retract", len(out["retract_force"]))
-                for name, meta in RETRACT_VARIABLES.items():
-                    v = nc.createVariable(name, meta.dtype, ("retract",))
-                    v[:] = out[name]
-                    v.setncatts({"long_name": meta.long_name, "units": meta.units})
-                for name, meta in PULL_OFF_VARIABLES.items():
-                    v = nc.createVariable(name, meta.dtype, ())
-                    v.assignValue(out[name])
-                    v.setncatts({"long_name": meta.long_name, "units": meta.units})
-            for name, (values, var_attrs) in extra.items():
-                v = nc.createVariable(name, "f8", ("force",))
-                v[:] = values
-                v.setncatts(var_attrs)
+
+    def fill(nc) -> None:
+        """The run file's attributes, dimensions and variables into the open file *nc*."""
+        nc.setncatts({**attrs, "title": TITLE})
+        nc.createDimension("force", len(out["force"]))
+        scale, unit = units.get("force", (1.0, FORCE_ATTRS["units"]))
+        var = nc.createVariable("force", "f8", ("force",))
+        var[:] = out["force"] * scale
+        var.setncatts({**FORCE_ATTRS, "units": unit})
+        for name, value in scalars.items():
+            dtype, long, unit = SCALARS[name]
+            v = nc.createVariable(name, dtype, ())
+            v.assignValue(value)
+            v.setncatts({"long_name": long, "units": unit})
+        for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES if v in out)):
+            meta = VARIABLES[name]
+            scale, unit = units.get(name, (1.0, meta.units))
+            long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
+            v = nc.createVariable(name, meta.dtype, ("force",))
+            v[:] = out[name] * scale if scale != 1.0 else out[name]
+            v.setncatts({"long_name": long, "units": unit, **({"coordinates": labels} if labels else {})})
+        if "retract_force" in out:   # an adhesive run: its retract path and pull-off
+            nc.createDimension("retract", len(out["retract_force"]))
+            for name, meta in RETRACT_VARIABLES.items():
+                v = nc.createVariable(name, meta.dtype, ("retract",))
+                v[:] = out[name]
+                v.setncatts({"long_name": meta.long_name, "units": meta.units})
+            for name, meta in PULL_OFF_VARIABLES.items():
+                v = nc.createVariable(name, meta.dtype, ())
+                v.assignValue(out[name])
+                v.setncatts({"long_name": meta.long_name, "units": meta.units})
+        for name, (values, var_attrs) in extra.items():
+            v = nc.createVariable(name, "f8", ("force",))
+            v[:] = values
+            v.setncatts(var_attrs)
+
+    provenance.write_netcdf(fill, path)
 
 
 def write_stickiness_run(path, out: dict, *, attrs: dict) -> None:
@@ -195,5 +232,4 @@ def write_stickiness_run(path, out: dict, *, attrs: dict) -> None:
                  for name, meta in STICKINESS_SCALARS.items()})
     ds = xr.Dataset(data, coords={"approach": ("approach", np.arange(len(out["force"])), APPROACH_ATTRS)},
                     attrs={**attrs, "title": STICKINESS_TITLE})
-    with provenance.atomic_path(path) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
+    provenance.write_netcdf(ds, path)

@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from ..bem import DEFAULT_MAXITER
-from . import axes
+from . import axes, runfile
 from .runs import parse_combo
 from .axes import kind_of
 from .study_settings import StudySettings, force_grid, solver_maxiter
@@ -123,6 +123,19 @@ class JobSettings:
         if self.realization_of is not None:   # runs of a grid's own surfaces keep their hash
             out["realization_of"] = self.realization_of
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
+
+    def file_spec(self) -> runfile.RunFileSpec:
+        """What this run's file must be (:func:`roughcontact.study.io.read_run`): the run file's
+        variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
+        H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
+        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+        dims = ("force",)
+        if self.work_of_adhesion > 0:
+            variables += (*runfile.RETRACT_VARIABLES, *runfile.PULL_OFF_VARIABLES)
+            dims = ("force", "retract")
+        return runfile.RunFileSpec(title=runfile.TITLE, variables=variables, dims=dims, config=self.record(),
+                                   scalars={name: getattr(self, name) for name in runfile.SCALARS},
+                                   force_variable="force", forces=self.forces())
 
     def describe(self) -> str:
         """One line naming the run, for logs and error messages."""

@@ -111,8 +111,7 @@ def prepare_surface(entry, output, *, length_unit: str, tile: int | None) -> Non
                                   "units": study_unit})},
                     coords={"x": ("x", x, {"units": study_unit}), "y": ("y", x, {"units": study_unit})},
                     attrs=attrs)
-    with provenance.atomic_path(output) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
+    provenance.write_netcdf(ds, output)
     logger.info("%s: %d x %d cells of %g %s, %d tiles of %d", entry.name, n, n,
                 scan.cell_size * factor, study_unit, (n // tile) ** 2, tile)
 
@@ -188,6 +187,14 @@ class MeasuredJob:
 
     def describe(self) -> str:
         return f"{self.source} {self.name}, {self.ensemble} {self.index}, R = {self.radius:g} {self.length_unit}"
+
+    def file_spec(self) -> runfile.RunFileSpec:
+        """What this run's file must be (:func:`roughcontact.study.io.read_run`): the run file's
+        variables over ``force`` with ``force_normalized``, the ``config_hash`` of the job and
+        its normalised force grid ``F/(E* L²)``."""
+        return runfile.RunFileSpec(title=runfile.TITLE, variables=(*runfile.RUN_VARIABLES, "force", "force_normalized"),
+                                   dims=("force",), config=dataclasses.asdict(self), force_variable="force_normalized",
+                                   forces=force_grid(self.force_from, self.force_to, self.force_count))
 
 
 def job_of(study, source: str, name: str, radius: float, index: int, *, force_unit: str = "N") -> MeasuredJob:
@@ -305,7 +312,9 @@ def _half_space(job: MeasuredJob) -> str:
 def merge_surface(study, source: str, name: str, run_files, output, surface_file=None) -> None:
     """Merge the runs of one surface into *output* (NetCDF, one group per kind, atomic).
 
-    *run_files*: paths whose order is :func:`run_order` of the same arguments. Each group
+    *run_files*: paths whose order is :func:`run_order` of the same arguments, each read by
+    :func:`roughcontact.study.io.read_run` against its :func:`job_of` (a
+    :class:`~roughcontact.errors.MergeError` names a missing, foreign or stale one). Each group
     holds the per-run variables over ``(radius,) tile|seed, force`` and, over ``(radius,)
     force``, ``k_mean`` with the percentile bootstrap interval (``fit.zeta.bootstrap``
     resamples of the tiles or seeds, level ``fit.zeta.confidence``) as ``k_ci_low``,
@@ -313,11 +322,12 @@ def merge_surface(study, source: str, name: str, run_files, output, surface_file
     """
     import xarray as xr
 
-    from ..io import write_groups
+    from ..io import read_run, write_groups
 
     study = StudySettings.of(study)
-    runs = [xr.load_dataset(p, engine="netcdf4") for p in run_files]
-    order = run_order(study, source, name, len(runs) // max(1, len(study.radius)))
+    order = run_order(study, source, name, len(run_files) // max(1, len(study.radius)))
+    # the one reader: each file checked against its job (title, variables, config_hash, force grid)
+    runs = [read_run(p, job_of(study, source, name, radius, i)) for p, (radius, i) in zip(run_files, order)]
     ens = "tile" if source == "topography" else "seed"
     groups = {}
     for kind in ("sphere", "flat"):

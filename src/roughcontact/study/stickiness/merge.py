@@ -37,9 +37,13 @@ NUMBER_ATTRS = {"long_name": "Pastewka & Robbins' number N of the sweep", "units
 
 def merge_stickiness(s: StickinessSettings, paths):
     """The scalars of the stickiness run files *paths* (one per :meth:`StickinessSettings.jobs`, in
-    its order) as one Dataset (module docstring). Raises :class:`~roughcontact.errors.MergeError`
-    naming a file that is not a stickiness run or not of the sweep's grid."""
+    its order) as one Dataset (module docstring). Each is read by
+    :func:`roughcontact.study.io.read_run` against its :class:`~.settings.StickinessRun`, which raises
+    :class:`~roughcontact.errors.MergeError` naming a file that is missing, not a stickiness run or
+    computed with other settings (its ``config_hash``)."""
     import xarray as xr
+
+    from ..io import read_run
 
     jobs = s.jobs()
     if len(paths) != len(jobs):
@@ -47,16 +51,10 @@ def merge_stickiness(s: StickinessSettings, paths):
     shape = (len(s.hurst), len(s.number), s.seeds)
     data = {}
     for job, path in zip(jobs, paths):
-        with xr.open_dataset(path, engine="netcdf4") as ds:
-            if ds.attrs.get("title") != runfile.STICKINESS_TITLE:
-                raise MergeError(f"{path}: not a stickiness run (title {ds.attrs.get('title')!r}); delete it and "
-                                 "rerun snakemake")
-            if int(ds.attrs.get("grid_n", -1)) != s.n:
-                raise MergeError(f"{path}: a run on {ds.attrs.get('grid_n')}^2, the sweep has stickiness.n = "
-                                 f"{s.n}; delete it and rerun snakemake")
-            at = (s.hurst.index(job.hurst), s.number.index(job.number), job.seed)
-            for name, meta in runfile.STICKINESS_SCALARS.items():
-                data.setdefault(name, np.zeros(shape, dtype=meta.dtype))[at] = ds[name].values
+        ds = read_run(path, s.run(job))
+        at = (s.hurst.index(job.hurst), s.number.index(job.number), job.seed)
+        for name, meta in runfile.STICKINESS_SCALARS.items():
+            data.setdefault(name, np.zeros(shape, dtype=meta.dtype))[at] = ds[name].values
     dims = ("hurst", "number", "seed")
     meta = runfile.STICKINESS_SCALARS
     return xr.Dataset({name: (dims, values, {"long_name": meta[name].long_name, "units": meta[name].units})
@@ -116,6 +114,5 @@ def run_stickiness_merge(cfg, run_files, out_nc, out_csv) -> None:
     ds.attrs.update(provenance.provenance_attrs(
         config=getattr(cfg, "config", cfg), title="roughcontact stickiness runs: loading slopes F/A at the area A*",
         forces="e_star * length**2 (stickiness.csv: dF/dA in units of h'E*)"))
-    with provenance.atomic_path(out_nc) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
+    provenance.write_netcdf(ds, out_nc)
     write_csv(stickiness_table(ds, s), out_csv)

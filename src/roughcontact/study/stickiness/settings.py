@@ -81,6 +81,16 @@ class StickinessRun:
         """The run as logs and error messages name it."""
         return f"stickiness {self.combination} seed {self.seed}"
 
+    def file_spec(self):
+        """What this run's file must be (:class:`roughcontact.study.runfile.RunFileSpec`, checked by
+        :func:`roughcontact.study.io.read_run`): the loading path over ``approach``, the run's
+        scalars and the ``config_hash`` of :meth:`record`."""
+        from .. import runfile
+
+        return runfile.RunFileSpec(title=runfile.STICKINESS_TITLE,
+                                   variables=(*runfile.STICKINESS_VARIABLES, *runfile.STICKINESS_SCALARS),
+                                   dims=("approach",), config=self.record())
+
 
 @dataclasses.dataclass(frozen=True)
 class StickinessSettings:

@@ -1,0 +1,101 @@
+"""The one atomic NetCDF write (roughcontact.study.provenance.write_netcdf) and the one reader of
+run files of every kind (roughcontact.study.io.read_run): what each checks and the MergeError
+that names the file, what is wrong and what to do."""
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from roughcontact.errors import MergeError
+from roughcontact.study import provenance, runfile
+from roughcontact.study.io import read_run
+from roughcontact.study.measured.jobs import MeasuredJob
+from roughcontact.study.settings import JobSettings
+
+GENERATED = JobSettings(hurst=0.7, radius=0.5, h_rms=9e-3, seed=3, n=33, length=1.0, e_star=1.0, force_from=1e-3,
+                        force_to=0.3, force_count=4, tol=1e-8, stiffness_method="punch", rel_step=1e-3)
+
+
+def test_a_failed_write_leaves_no_file_and_no_temporary(tmp_path):
+    def fill(nc):
+        nc.createDimension("x", 2)
+        raise RuntimeError("killed mid-write")
+
+    with pytest.raises(RuntimeError, match="mid-write"):
+        provenance.write_netcdf(fill, tmp_path / "out.nc")
+    assert list(tmp_path.iterdir()) == [], "neither the file nor its temporary"
+
+
+def test_an_xarray_dataset_round_trips_exactly(tmp_path):
+    rng = np.random.default_rng(7)
+    ds = xr.Dataset({"a": ("x", rng.normal(size=5))}, attrs={"title": "t"})
+    provenance.write_netcdf(ds, tmp_path / "d" / "out.nc")
+    xr.testing.assert_identical(xr.load_dataset(tmp_path / "d" / "out.nc"), ds)
+
+
+def _generated_file(path, s: JobSettings):
+    """A generated run file of *s* with made-up per-load numbers (what is read, not solved)."""
+    rng = np.random.default_rng(11)
+    count = s.force_count
+    out = {"force": s.forces(), "depth": rng.random(count), "stiffness": rng.random(count) + 1.0,
+           "contact_area": rng.random(count), "contact_cells": np.arange(count), "iterations": np.ones(count, int),
+           "converged": np.ones(count, "i1")}
+    runfile.write_run(path, out, stiffness_method=s.stiffness_method,
+                      scalars={name: getattr(s, name) for name in runfile.SCALARS},
+                      attrs=provenance.provenance_attrs(config=s.record()))
+
+
+def test_a_generated_run_of_the_current_settings_reads(tmp_path):
+    _generated_file(tmp_path / "r.nc", GENERATED)
+    ds = read_run(tmp_path / "r.nc", GENERATED)
+    np.testing.assert_allclose(ds["force"].values, GENERATED.forces(), rtol=1e-15, atol=0)
+
+
+def test_a_stale_run_names_the_setting_that_differs(tmp_path):
+    """tol 1e-8 in the file, 1e-6 in the current settings: the message names tol with both values."""
+    _generated_file(tmp_path / "r.nc", GENERATED)
+    with pytest.raises(MergeError, match=r"r\.nc: was computed with other settings .*differs in tol: 1e-08 in the "
+                                         r"file, 1e-06 now.*delete .*r\.nc and rerun snakemake"):
+        read_run(tmp_path / "r.nc", dataclasses.replace(GENERATED, tol=1e-6))
+
+
+def test_a_run_of_another_seed_names_the_scalar(tmp_path):
+    _generated_file(tmp_path / "r.nc", GENERATED)
+    with pytest.raises(MergeError, match="holds seed = 3, expected 4 from its name"):
+        read_run(tmp_path / "r.nc", dataclasses.replace(GENERATED, seed=4))
+
+
+def test_an_elastic_file_is_no_adhesive_run(tmp_path):
+    """The adhesive run's record asks for the retract path and pull-off."""
+    _generated_file(tmp_path / "r.nc", GENERATED)
+    adhesive = dataclasses.replace(GENERATED, options=(("work_of_adhesion", 1e-3),))
+    with pytest.raises(MergeError, match="foreign NetCDF file .*lacks retract_depth"):
+        read_run(tmp_path / "r.nc", adhesive)
+
+
+MEASURED = MeasuredJob(source="spectrum", name="s", index=1, radius=0.5, e_star=1.0, length_unit="um",
+                       pressure_unit="MPa", force_from=1e-4, force_to=1e-2, force_count=3, tol=1e-8, maxiter=100,
+                       stiffness_method="punch", rel_step=1e-3, n=16, length=1.0)
+
+
+def _measured_file(path, job: MeasuredJob, normalized):
+    out = {"force": normalized * 2.0, **{name: np.ones(normalized.size, runfile.VARIABLES[name].dtype)
+                                         for name in runfile.RUN_VARIABLES}}
+    runfile.write_run(path, out, stiffness_method="punch", coordinates=("force_normalized",),
+                      extra={"force_normalized": (normalized, {"long_name": "F/(E* L^2)", "units": "1"})},
+                      attrs=provenance.provenance_attrs(config=dataclasses.asdict(job)))
+
+
+def test_a_measured_run_is_checked_on_its_normalised_force_grid(tmp_path):
+    """Its force grid is F/(E* L^2) (force_normalized): equal to 1e-12 relative reads, 1e-9 off does not."""
+    grid = np.geomspace(1e-4, 1e-2, 3)
+    _measured_file(tmp_path / "m.nc", MEASURED, grid)
+    assert read_run(tmp_path / "m.nc", MEASURED).sizes["force"] == 3
+    _measured_file(tmp_path / "off.nc", MEASURED, grid * (1 + 1e-9))
+    with pytest.raises(MergeError, match="off.nc: its force grid differs"):
+        read_run(tmp_path / "off.nc", MEASURED)
+    with pytest.raises(MergeError, match=r"differs in index: 1 in the file, 2 now"):
+        read_run(tmp_path / "m.nc", dataclasses.replace(MEASURED, index=2))
