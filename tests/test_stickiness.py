@@ -322,3 +322,21 @@ def test_claim_q_has_no_rows_without_a_stickiness_table():
                                 study=study_settings(TINY))
     table = claims.claims_table(pd.DataFrame(), xr.Dataset(), pd.DataFrame(), inputs.study)
     assert "q" not in set(table.get("claim", [])), table
+
+
+def test_a_cohesive_failure_names_the_run_and_its_approach(monkeypatch):
+    """The solver fails after two approaches: IndentError naming the run, approach 3/steps and
+    what to change (the cohesive path replaced by a stub that fails)."""
+    import roughcontact.study.stickiness.run as run_module
+    from roughcontact.errors import ConvergenceError, IndentError
+
+    def failing(z, depths, *, on_state, **kwargs):
+        for i in range(2):
+            on_state(i, np.zeros(z.shape, bool), np.zeros(z.shape, bool))
+        raise ConvergenceError("stub")
+
+    monkeypatch.setattr(run_module, "cohesive_path", failing)
+    s = _settings(n=32, cutoff=4, hurst=[0.8], number=[0.5], steps=8)
+    with pytest.raises(IndentError, match=r"stickiness H0.8_N0.5 seed 0: the cohesive solve did not converge at "
+                                          r"approach 3/8 \(stub\); lower stickiness.area"):
+        stickiness_run(s.run_of("H0.8_N0.5", 0))

@@ -39,6 +39,7 @@ from ...bem import adhesion
 from ...bem.punch import contact_stiffness
 from ...errors import ConvergenceError, IndentError
 from ...models.rough_adhesion import jkr_critical_approach
+from ..path import LoadPath
 from ..study_settings import capped_tol
 
 __all__ = ["LOAD_STEPS", "RETRACT_STEPS", "RETRACT_REACH", "REFINE", "adhesive_run"]
@@ -82,17 +83,16 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
                   maxiter=s.maxiter)
     stiffness = np.zeros(forces.size)
 
-    def on_load(i, contact):
+    def record(i, contact) -> str:   # a loading state: the flat-punch stiffness of its contact set
         stiffness[i] = contact_stiffness(contact, length=L, e_star=E, periodic=s.periodic, tol=1e-10)
-        text = (f"load step {i + 1}/{forces.size}: F/(E*L^2) = {forces[i] / (E * L**2):.3e}, "
-                f"contact cells = {int(np.count_nonzero(contact))}, k/(E*L) = {stiffness[i] / (E * L):.4e}")
-        logger.info("%s: %s", name, text)
-        if progress is not None:
-            progress(i + 1, forces.size, text)
+        return (f"F/(E*L^2) = {forces[i] / (E * L**2):.3e}, contact cells = {int(np.count_nonzero(contact))}, "
+                f"k/(E*L) = {stiffness[i] / (E * L):.4e}")
 
-    try:
+    follow = LoadPath(name, forces.size, record, progress=progress)
+    with follow.failing(ConvergenceError, lambda exc: f"indent {name}: the adhesive solve did not converge ({exc}); "
+                                                      "use more cells (grid.n) or loosen solver.tol"):
         loading = adhesion.adhesive_force_path(z, forces, step=_reference_approach(s) / LOAD_STEPS,
-                                               on_state=on_load, **common)
+                                               on_state=follow, **common)
         if loading.depth.size != forces.size:
             raise IndentError(f"indent {name}: the adhesive contact came off while loading; raise "
                               f"forces.{s.kind}.from")
@@ -100,18 +100,20 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
         end = -d_max if s.kind == "flat" else -RETRACT_REACH * jkr_critical_approach(
             radius=s.radius, e_star=E, work_of_adhesion=w)
         retract = np.linspace(d_max, end, RETRACT_STEPS)
-        sets = []
-        path = adhesion.adhesive_path(z, np.r_[loading.depth, retract[1:]], **common,
-                                      on_state=lambda i, contact: sets.append(contact.copy()))
+        depths, sets = np.r_[loading.depth, retract[1:]], []
+
+        def keep(i, contact) -> str:   # a state of the path to pull-off: its contact set, to refine from
+            sets.append(contact.copy())
+            return f"d/L = {depths[i] / L:.4e}, contact cells = {int(np.count_nonzero(contact))}"
+
+        path = adhesion.adhesive_path(z, depths, **common, on_state=LoadPath(name, depths.size, keep,
+                                                                              what="retract path step"))
         first = loading.depth.size - 1                       # the retract path starts at d_max
         r_force, r_cells = path.force[first:], path.contact_cells[first:]
         j = int(np.argmin(r_force))
         lo, hi = max(j - 1, 0), min(j + 1, RETRACT_STEPS - 1)
         fine = np.linspace(retract[lo], retract[hi], 2 * REFINE + 1)
         refined = adhesion.adhesive_path(z, fine, **common, start=sets[first + lo])   # on from retract[lo]
-    except ConvergenceError as exc:
-        raise IndentError(f"indent {name}: the adhesive solve did not converge ({exc}); use more cells (grid.n) "
-                          f"or loosen solver.tol") from exc
     m = int(np.argmin(refined.force))
     better = refined.force[m] <= r_force[j]
     cell = (L / z.shape[0]) ** 2

@@ -35,6 +35,7 @@ import numpy as np
 from ...bem import solve
 from ...bem.cohesive import cohesive_path
 from ...errors import ConvergenceError, IndentError
+from ..path import LoadPath
 from ...models.rough_adhesion import (pastewka_robbins_gap, pastewka_robbins_stickiness,
                                       pastewka_robbins_work_of_adhesion)
 from ...surfaces.moments import spectral_moments
@@ -130,20 +131,16 @@ def stickiness_run(s) -> dict:
                 "N = %.4g; %d approaches %.4g ... %.4g", name, s.rms_slope, surface.rms_curvature,
                 criterion.g0, criterion.g0 * s.n / s.length, reach, work, work / reach / s.e_star, criterion.number,
                 s.steps, depths[0], depths[-1])
-    count = {"i": 0}
 
-    def on_state(i, contact, zone):
-        count["i"] = i + 1
-        logger.info("%s: approach %d/%d: contact %.4f, zone %.4f of the grid", name, i + 1, s.steps,
-                    np.count_nonzero(contact) / cells, np.count_nonzero(zone) / cells)
+    def record(i, contact, zone) -> str:   # an approach: its contact and zone, reported (the path keeps them)
+        return f"contact {np.count_nonzero(contact) / cells:.4f}, zone {np.count_nonzero(zone) / cells:.4f} of the grid"
 
-    try:
+    follow = LoadPath(name, s.steps, record, what="approach")
+    with follow.failing(ConvergenceError, lambda exc: f"{name}: the cohesive solve did not converge at {follow.where} "
+                                                      f"({exc}); lower stickiness.area or use more cells (stickiness.n)"):
         path = cohesive_path(z, depths, length=s.length, e_star=s.e_star, work_of_adhesion=work,
-                             cohesive_stress=work / reach, periodic=True, tol=s.tol, on_state=on_state,
+                             cohesive_stress=work / reach, periodic=True, tol=s.tol, on_state=follow,
                              until=lambda i, force, contact: contact > s.area * cells)
-    except ConvergenceError as exc:
-        raise IndentError(f"{name}: the cohesive solve did not converge at approach {count['i'] + 1}/{s.steps} "
-                          f"({exc}); lower stickiness.area or use more cells (stickiness.n)") from exc
     area = path.contact_cells / cells
     slope = loading_slope(path.force / scale, area, at=s.area)
     logger.info("%s: F/A = %.4g h'E* at A = %g L^2 (%d approaches with 0 < A <= %g L^2)", name, slope, s.area,
