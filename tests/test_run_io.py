@@ -37,11 +37,12 @@ def test_an_xarray_dataset_round_trips_exactly(tmp_path):
 
 
 def _generated_file(path, s: JobSettings):
-    """A generated run file of *s* with made-up per-load numbers (what is read, not solved)."""
+    """A generated run file of *s* with made-up per-load numbers (what is read, not solved;
+    contact cells ``seed, seed + 1, ...``)."""
     rng = np.random.default_rng(11)
     count = s.force_count
     out = {"force": s.forces(), "depth": rng.random(count), "stiffness": rng.random(count) + 1.0,
-           "contact_area": rng.random(count), "contact_cells": np.arange(count), "iterations": np.ones(count, int),
+           "contact_area": rng.random(count), "contact_cells": np.arange(count) + s.seed, "iterations": np.ones(count, int),
            "converged": np.ones(count, "i1")}
     runfile.write_run(path, out, stiffness_method=s.stiffness_method,
                       scalars={name: getattr(s, name) for name in runfile.SCALARS},
@@ -99,3 +100,22 @@ def test_a_measured_run_is_checked_on_its_normalised_force_grid(tmp_path):
         read_run(tmp_path / "off.nc", MEASURED)
     with pytest.raises(MergeError, match=r"differs in index: 1 in the file, 2 now"):
         read_run(tmp_path / "m.nc", dataclasses.replace(MEASURED, index=2))
+
+
+def test_gather_places_each_run_by_its_coordinates(tmp_path):
+    """Two runs (seeds 3 and 4) given in reverse order land at seed 3, 4 of the merged array;
+    their commits are collected once (roughcontact.study.merge.gather on a KindLayout)."""
+    from roughcontact.study.merge import KindLayout, gather
+
+    jobs = {seed: dataclasses.replace(GENERATED, seed=seed) for seed in (3, 4)}
+    rows = []
+    for seed in (4, 3):
+        _generated_file(tmp_path / f"s{seed}.nc", jobs[seed])
+        rows.append(({"seed": seed}, tmp_path / f"s{seed}.nc"))
+    layout = KindLayout(kind="sphere", rows=rows, axes=(), coords={"seed": [3, 4]}, at={id(r): {} for r, _ in rows})
+    got = gather(layout, lambda row: jobs[row["seed"]], {"force": "f8", "contact_cells": "i8"})
+    assert got.data["contact_cells"].shape == (2, 4) and got.data["contact_cells"].dtype == np.int64
+    np.testing.assert_array_equal(got.data["contact_cells"], [[3, 4, 5, 6], [4, 5, 6, 7]])
+    np.testing.assert_allclose(got.data["force"][1], GENERATED.forces(), rtol=1e-15, atol=0)
+    assert len(got.commits) == 1, got.commits
+    assert got.attrs["contact_cells"]["units"] == "1"

@@ -28,8 +28,7 @@ from ...errors import MergeError
 from ...models.adhesion import jkr_pull_off
 from ...models.rough_adhesion import johnson_rough_sphere_parameter
 from .. import provenance, runfile, runs
-from ..io import read_run
-from ..merge import kind_layouts
+from ..merge import gather, kind_layouts
 from ..settings import job_settings
 from ..statistics import bootstrap_indices, interval
 from ..study_settings import StudySettings
@@ -54,15 +53,10 @@ def merge_adhesion(study, paths) -> dict:
     variables_of = {**runfile.RETRACT_VARIABLES, **runfile.PULL_OFF_VARIABLES}
     groups = {}
     for layout in kind_layouts(study, table, paths):
-        data, count = {}, None
-        for row, path in layout.rows:
-            ds = read_run(path, job_settings(study, row))   # an adhesive run: its retract path checked there
-            count = ds.sizes["retract"] if count is None else count
-            for name, meta in variables_of.items():
-                values = ds[name].values
-                if name not in data:
-                    data[name] = np.zeros(layout.shape + values.shape, dtype=meta.dtype)
-                data[name][layout.index(row)] = values
+        # each an adhesive run: read_run checks its retract path and pull-off
+        data = gather(layout, lambda row: job_settings(study, row),
+                      {name: meta.dtype for name, meta in variables_of.items()}).data
+        count = data["retract_force"].shape[-1]
         dims = (*layout.axes, "seed")
         variables = {name: ((*dims, "retract") if name in runfile.RETRACT_VARIABLES else dims, values,
                             {"long_name": variables_of[name].long_name, "units": variables_of[name].units})

@@ -20,16 +20,18 @@ its contact passes ``stickiness.area`` and so has a length of its own, stays in 
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
 
 from ...errors import MergeError
 from .. import provenance, runfile
+from ..merge import KindLayout, gather
 from ..statistics import bootstrap_indices, interval
-from .settings import StickinessSettings
+from .settings import StickinessJob, StickinessSettings
 
-__all__ = ["merge_stickiness", "stickiness_table", "threshold", "run_stickiness_merge"]
+__all__ = ["merge_stickiness", "stickiness_layout", "stickiness_table", "threshold", "run_stickiness_merge"]
 
 #: the number coordinate (hurst and seed: those of every merged file, runfile.AXIS_ATTRS)
 NUMBER_ATTRS = {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"}
@@ -43,18 +45,11 @@ def merge_stickiness(s: StickinessSettings, paths):
     computed with other settings (its ``config_hash``)."""
     import xarray as xr
 
-    from ..io import read_run
-
     jobs = s.jobs()
     if len(paths) != len(jobs):
         raise MergeError(f"the stickiness merge got {len(paths)} run files for {len(jobs)} runs")
-    shape = (len(s.hurst), len(s.number), s.seeds)
-    data = {}
-    for job, path in zip(jobs, paths):
-        ds = read_run(path, s.run(job))
-        at = (s.hurst.index(job.hurst), s.number.index(job.number), job.seed)
-        for name, meta in runfile.STICKINESS_SCALARS.items():
-            data.setdefault(name, np.zeros(shape, dtype=meta.dtype))[at] = ds[name].values
+    data = gather(stickiness_layout(s, paths), lambda row: s.run(StickinessJob(**row)),
+                  {name: meta.dtype for name, meta in runfile.STICKINESS_SCALARS.items()}).data
     dims = ("hurst", "number", "seed")
     meta = runfile.STICKINESS_SCALARS
     return xr.Dataset({name: (dims, values, {"long_name": meta[name].long_name, "units": meta[name].units})
@@ -63,6 +58,16 @@ def merge_stickiness(s: StickinessSettings, paths):
                               "number": ("number", np.array(s.number), NUMBER_ATTRS),
                               "seed": ("seed", np.arange(s.seeds), runfile.AXIS_ATTRS["seed"])},
                       attrs={"grid_n": s.n, "area": s.area, "cutoff_cells": s.cutoff})
+
+
+def stickiness_layout(s: StickinessSettings, paths) -> KindLayout:
+    """The :class:`~roughcontact.study.merge.KindLayout` of the sweep's runs (one path of *paths*
+    per :meth:`StickinessSettings.jobs`, in its order): flat surfaces over ``hurst, number`` and
+    ``seed``, each row a dict of its :class:`~.settings.StickinessJob`'s fields."""
+    rows = [(dataclasses.asdict(job), path) for job, path in zip(s.jobs(), paths)]
+    return KindLayout(kind="flat", rows=rows, axes=("hurst", "number"),
+                      coords={"hurst": list(s.hurst), "number": list(s.number), "seed": list(range(s.seeds))},
+                      at={id(row): {"hurst": row["hurst"], "number": row["number"]} for row, _ in rows})
 
 
 def threshold(numbers, slopes) -> float:
