@@ -119,3 +119,36 @@ def test_gather_places_each_run_by_its_coordinates(tmp_path):
     np.testing.assert_allclose(got.data["force"][1], GENERATED.forces(), rtol=1e-15, atol=0)
     assert len(got.commits) == 1, got.commits
     assert got.attrs["contact_cells"]["units"] == "1"
+
+
+def test_a_generated_runs_record_and_hash_are_those_of_finished_runs():
+    """JobSettings.record() of the tiny preset's first run is the dict its run files have recorded
+    since before this change (config_hash 74181d01403de942, read from a run file of 2026-11-27):
+    finished result directories stay valid."""
+    from pathlib import Path
+
+    from roughcontact.study import runs, settings
+    from roughcontact.study.config import load_config, resolve_config
+
+    cfg = resolve_config(load_config(Path(__file__).resolve().parents[1] / "presets" / "tiny.yaml"))
+    record = settings.job_settings(cfg, runs.runs(cfg)[0]).record()
+    assert record == {"hurst": 0.5, "radius": 0.5, "h_rms": 0.009, "seed": 0, "n": 65, "length": 1.0, "e_star": 1.0,
+                      "force_from": 1e-05, "force_to": 0.01, "force_count": 10, "tol": 1e-08,
+                      "stiffness_method": "punch", "rel_step": 0.001, "maxiter": 10000, "kind": "sphere",
+                      "periodic": False}
+    assert provenance.config_hash(record) == "74181d01403de942"
+
+
+def test_path_settings_are_derived_once_for_every_job_record():
+    """A generated run's length, half-space and hardness (a pressure, hardness * E*) from its record;
+    a measured run's tile length and half-space given; the solver from either record."""
+    from roughcontact.study.indent import path_settings
+
+    plastic = dataclasses.replace(GENERATED, radius=float("inf"), options=(("hardness", 0.5),), e_star=2.0)
+    p = path_settings(plastic)
+    assert (p.length, p.periodic, p.hardness, p.tol, p.maxiter, p.force_key) == (1.0, True, 1.0, 1e-8, 10000,
+                                                                                  "forces.flat.to")
+    m = path_settings(MEASURED, length=3.2, periodic=False, edge_contact=False)
+    assert (m.length, m.periodic, m.e_star, m.maxiter, m.hardness, m.force_key) == (3.2, False, 1.0, 100, None,
+                                                                                    "forces.sphere.to")
+    assert m.name == MEASURED.describe()

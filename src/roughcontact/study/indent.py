@@ -135,11 +135,18 @@ def compute_run(s: JobSettings, progress=None) -> dict:
     return solve_load_path(make_surface(s), s.forces(), path_settings(s), progress)
 
 
-def path_settings(s: JobSettings) -> PathSettings:
-    """The :class:`PathSettings` of a generated run (the solver axes through their role)."""
-    return PathSettings(length=s.length, e_star=s.e_star, periodic=s.periodic, tol=s.tol, maxiter=s.maxiter,
-                        stiffness_method=s.stiffness_method, rel_step=s.rel_step, name=s.describe(),
-                        force_key=f"forces.{s.kind}.to", **s.arguments("solver"))
+def path_settings(s, **where) -> PathSettings:
+    """The :class:`PathSettings` of a job record *s*, derived here once for every kind: its solver
+    (``tol``, ``maxiter``, ``stiffness_method``, ``rel_step``), ``e_star``, name (``describe()``) and
+    force key (``forces.<kind>.to``); a generated run's
+    (:class:`~roughcontact.study.settings.JobSettings`) length, half-space and solver axes
+    (:meth:`~roughcontact.study.settings.JobSettings.arguments`, e.g. the hardness). *where*: the
+    fields a job record does not hold (a measured run's tile ``length``, ``periodic``,
+    ``edge_hint``, ``edge_contact``)."""
+    own = ({"length": s.length, "periodic": s.periodic, **s.arguments("solver")} if isinstance(s, JobSettings)
+           else {})
+    return PathSettings(e_star=s.e_star, tol=s.tol, maxiter=s.maxiter, stiffness_method=s.stiffness_method,
+                        rel_step=s.rel_step, name=s.describe(), force_key=f"forces.{s.kind}.to", **{**own, **where})
 
 
 def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:

@@ -256,17 +256,15 @@ def run_job(job: MeasuredJob, source_file, output) -> dict:
     Raises :class:`~roughcontact.errors.IndentError` when a body's contact reaches the outer
     ring of cells, or a solve does not converge.
     """
-    from ..indent import PathSettings, solve_load_path
+    from ..indent import path_settings, solve_load_path
 
     z, length, periodic = job_heights(job, source_file)
     e = job.e_star
     normalized = force_grid(job.force_from, job.force_to, job.force_count)
     forces = normalized * e * length**2
     where = "the scan's edge" if job.source == "topography" else "the grid's edge"
-    settings = PathSettings(
-        length=length, e_star=e, periodic=periodic, tol=job.tol, maxiter=job.maxiter,
-        stiffness_method=job.stiffness_method, rel_step=job.rel_step, name=job.describe(),
-        force_key=f"forces.{job.kind}.to",
+    settings = path_settings(
+        job, length=length, periodic=periodic,
         edge_hint=f"use a smaller radius or larger tiles (loads whose contact would reach {where})",
         edge_contact=job.kind == "flat" and not periodic)   # a flat free tile is a rough punch of side L
     scale_f, scale_k = _scales(job)
