@@ -19,7 +19,7 @@ from roughcontact.models.rough_adhesion import STICKINESS_RANGE_LIMIT
 from roughcontact import cli
 from roughcontact.study import claims, provenance, runfile
 from roughcontact.study.config import load_config, resolve_config, study_settings
-from roughcontact.study.stickiness import StickinessJob, StickinessSettings, loading_slope, stickiness_run
+from roughcontact.study.stickiness import StickinessSettings, loading_slope, stickiness_run
 from roughcontact.study.stickiness.merge import merge_stickiness, stickiness_table, threshold
 from roughcontact.study.stickiness.run import stickiness_surface
 from roughcontact.surfaces.moments import spectral_moments
@@ -85,20 +85,20 @@ def test_more_seeds_or_numbers_leave_a_runs_settings_and_hash_unchanged():
     """A run shared by two sweeps that differ by one more seed, number or H (or by the merge's
     interval, fit.zeta) has equal settings and config_hash: Snakemake reruns nothing."""
     base = _settings(hurst=[0.8], number=[0.5], seeds=2)
-    run = base.run_of("H0.8_N0.5", 1)
+    run = base.job("H0.8_N0.5", 1)
     for other in (_settings(hurst=[0.8], number=[0.5], seeds=3), _settings(hurst=[0.8], number=[0.5, 3.0], seeds=2),
                   _settings(hurst=[0.5, 0.8], number=[0.5], seeds=2)):
-        assert other.run_of("H0.8_N0.5", 1) == run, other
-        assert provenance.config_hash(other.run_of("H0.8_N0.5", 1).record()) == provenance.config_hash(run.record())
+        assert other.job("H0.8_N0.5", 1) == run, other
+        assert provenance.config_hash(other.job("H0.8_N0.5", 1).record()) == provenance.config_hash(run.record())
     bootstrap = StickinessSettings.of(resolve_config({**TINY, "stickiness": {"hurst": [0.8], "number": [0.5]},
                                                       "fit": {"zeta": {"bootstrap": 17}}}))
-    assert bootstrap.run_of("H0.8_N0.5", 1) == run, "the merge's bootstrap is no setting of a run"
+    assert bootstrap.job("H0.8_N0.5", 1) == run, "the merge's bootstrap is no setting of a run"
 
 
 def test_another_grid_or_tolerance_is_another_run():
-    run = _settings(hurst=[0.8], number=[0.5]).run_of("H0.8_N0.5", 0)
+    run = _settings(hurst=[0.8], number=[0.5]).job("H0.8_N0.5", 0)
     for other in (_settings(hurst=[0.8], number=[0.5], n=256), _settings(hurst=[0.8], number=[0.5], steps=9)):
-        assert provenance.config_hash(other.run_of("H0.8_N0.5", 0).record()) != provenance.config_hash(run.record())
+        assert provenance.config_hash(other.job("H0.8_N0.5", 0).record()) != provenance.config_hash(run.record())
 
 
 def test_the_tolerance_is_the_solvers_capped_at_1e_8():
@@ -114,7 +114,7 @@ def test_the_run_file_records_the_runs_settings_and_their_hash(tmp_path, monkeyp
     import roughcontact.study.stickiness.run as run_module
 
     s = _settings(hurst=[0.8], number=[0.5], steps=8)
-    run = s.run_of("H0.8_N0.5", 0)
+    run = s.job("H0.8_N0.5", 0)
     stub = {"depth": np.zeros(2), "force": np.zeros(2), "contact_cells": np.zeros(2, int), "zone_cells": np.zeros(2, int),
             **{name: 0.5 for name in runfile.STICKINESS_SCALARS}}
     monkeypatch.setattr(run_module, "stickiness_run", lambda r: stub)
@@ -129,7 +129,7 @@ def test_the_run_file_records_the_runs_settings_and_their_hash(tmp_path, monkeyp
 @pytest.mark.parametrize("n", [64, 65])
 def test_the_surface_has_the_sweeps_rms_gradient(n):
     s = _settings(n=n, cutoff=4)
-    surface = stickiness_surface(s.run(StickinessJob(0.8, 0.5, 3)))
+    surface = stickiness_surface(s.run(hurst=0.8, number=0.5, seed=3))
     slope = math.sqrt(2.0 * spectral_moments(surface.heights, length=s.length).m2)
     assert slope == pytest.approx(s.rms_slope, rel=1e-12), f"h' on {n}^2"
 
@@ -140,7 +140,7 @@ def test_the_interaction_has_the_jobs_number_and_range(n, number):
     """w and dr invert Pastewka & Robbins' number N = (h'E* dr/(2w))(h'^2/(h'' dr))^(2/3) and
     dr/g0 exactly (rounding only)."""
     s = _settings(n=n, cutoff=4)
-    criterion = stickiness_surface(s.run(StickinessJob(0.8, number, 1))).criterion
+    criterion = stickiness_surface(s.run(hurst=0.8, number=number, seed=1)).criterion
     assert criterion.number == pytest.approx(number, rel=1e-12), "N"
     assert criterion.range_ratio == pytest.approx(s.range_ratio, rel=1e-12), "dr/g0"
 
@@ -166,7 +166,7 @@ def test_loading_slope_is_nan_short_of_the_area():
 def extremes():
     """128^2, cutoff 4 cells, one surface at N = 0.3 and N = 1000 (about 8 s)."""
     s = _settings(n=128, cutoff=4, number=[0.3, 1000.0], seeds=2, steps=16)
-    return s, {number: stickiness_run(s.run(StickinessJob(0.8, number, 0))) for number in s.number}
+    return s, {number: stickiness_run(s.run(hurst=0.8, number=number, seed=0)) for number in s.number}
 
 
 def test_far_below_one_the_surface_is_sticky(extremes):
@@ -193,7 +193,7 @@ def test_far_above_one_the_slope_is_that_without_adhesion(extremes):
     at N = 1e5, that last the chord's own error (F interpolated between loading states); -20 % at
     N = 30."""
     s, runs = extremes
-    expected = _repulsive_slope(s, stickiness_surface(s.run(StickinessJob(0.8, 1000.0, 0))).heights)
+    expected = _repulsive_slope(s, stickiness_surface(s.run(hurst=0.8, number=1000.0, seed=0)).heights)
     assert runs[1000.0]["loading_slope"] == pytest.approx(expected, rel=0.03), "N = 1000 against no adhesion"
 
 
@@ -216,7 +216,7 @@ def _write_runs(tmp_path, s, slopes):
                "pastewka_robbins_number": job.number, "range_ratio": s.range_ratio,
                "loading_slope": slopes[(job.hurst, job.number)][job.seed]}
         path = tmp_path / job.combination / f"seed{job.seed}.nc"
-        runfile.write_stickiness_run(path, out, attrs=provenance.provenance_attrs(config=s.run(job).record(),
+        runfile.write_stickiness_run(path, out, attrs=provenance.provenance_attrs(config=job.record(),
                                                                                   grid_n=s.n))
         paths.append(path)
     return paths
@@ -339,4 +339,4 @@ def test_a_cohesive_failure_names_the_run_and_its_approach(monkeypatch):
     s = _settings(n=32, cutoff=4, hurst=[0.8], number=[0.5], steps=8)
     with pytest.raises(IndentError, match=r"stickiness H0.8_N0.5 seed 0: the cohesive solve did not converge at "
                                           r"approach 3/8 \(stub\); lower stickiness.area"):
-        stickiness_run(s.run_of("H0.8_N0.5", 0))
+        stickiness_run(s.job("H0.8_N0.5", 0))

@@ -102,7 +102,7 @@ def stickiness_run_settings(wildcards):
     sweep's runs for others)."""
     if STICKINESS is None:
         raise ValueError("the config has no stickiness section: no stickiness runs")
-    return STICKINESS.run_of(wildcards.combination, wildcards.seed)
+    return STICKINESS.job(wildcards.combination, wildcards.seed)
 
 
 def stickiness_table(wildcards):

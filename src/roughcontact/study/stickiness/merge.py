@@ -20,7 +20,6 @@ its contact passes ``stickiness.area`` and so has a length of its own, stays in 
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
@@ -29,7 +28,7 @@ from ...errors import MergeError
 from .. import provenance, runfile
 from ..merge import KindLayout, gather
 from ..statistics import bootstrap_indices, interval
-from .settings import StickinessJob, StickinessSettings
+from .settings import StickinessSettings
 
 __all__ = ["merge_stickiness", "stickiness_layout", "stickiness_table", "threshold", "run_stickiness_merge"]
 
@@ -48,7 +47,7 @@ def merge_stickiness(s: StickinessSettings, paths):
     jobs = s.jobs()
     if len(paths) != len(jobs):
         raise MergeError(f"the stickiness merge got {len(paths)} run files for {len(jobs)} runs")
-    data = gather(stickiness_layout(s, paths), lambda row: s.run(StickinessJob(**row)),
+    data = gather(stickiness_layout(s, paths), lambda row: s.run(**row),
                   {name: meta.dtype for name, meta in runfile.STICKINESS_SCALARS.items()}).data
     dims = ("hurst", "number", "seed")
     meta = runfile.STICKINESS_SCALARS
@@ -63,8 +62,8 @@ def merge_stickiness(s: StickinessSettings, paths):
 def stickiness_layout(s: StickinessSettings, paths) -> KindLayout:
     """The :class:`~roughcontact.study.merge.KindLayout` of the sweep's runs (one path of *paths*
     per :meth:`StickinessSettings.jobs`, in its order): flat surfaces over ``hurst, number`` and
-    ``seed``, each row a dict of its :class:`~.settings.StickinessJob`'s fields."""
-    rows = [(dataclasses.asdict(job), path) for job, path in zip(s.jobs(), paths)]
+    ``seed``, each row a dict of its run's ``hurst``, ``number`` and ``seed``."""
+    rows = [({"hurst": job.hurst, "number": job.number, "seed": job.seed}, path) for job, path in zip(s.jobs(), paths)]
     return KindLayout(kind="flat", rows=rows, axes=("hurst", "number"),
                       coords={"hurst": list(s.hurst), "number": list(s.number), "seed": list(range(s.seeds))},
                       at={id(row): {"hurst": row["hurst"], "number": row["number"]} for row, _ in rows})

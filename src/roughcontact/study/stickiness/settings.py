@@ -6,21 +6,7 @@ from collections.abc import Mapping
 
 from ..study_settings import capped_tol
 
-__all__ = ["StickinessJob", "StickinessRun", "StickinessSettings"]
-
-
-@dataclasses.dataclass(frozen=True)
-class StickinessJob:
-    """One stickiness run: a surface (``hurst``, ``seed``) at one Pastewka–Robbins number."""
-
-    hurst: float
-    number: float
-    seed: int
-
-    @property
-    def combination(self) -> str:
-        """The name of its (H, N) combination in paths, e.g. ``H0.8_N0.5``."""
-        return f"H{self.hurst:g}_N{self.number:g}"
+__all__ = ["StickinessRun", "StickinessSettings"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -30,12 +16,12 @@ class StickinessRun:
     The ``stickiness_run`` rule's ``params`` and the ``config`` (and ``config_hash``) its run file
     records, so that another seed, number or Hurst exponent in the sweep, or a change of the
     merge's interval (``fit.zeta``), reruns no finished run. Built by
-    :meth:`StickinessSettings.run`.
+    :meth:`StickinessSettings.run`; the one record of a stickiness run (its path, its job, its file).
 
     Attributes
     ----------
     hurst, number, seed :
-        The run (:class:`StickinessJob`): Hurst exponent, Pastewka–Robbins number, seed.
+        The run: Hurst exponent, Pastewka–Robbins number, seed of the surface.
     n : int
         Grid points per side (periodic).
     length, e_star : float
@@ -157,26 +143,22 @@ class StickinessSettings:
                    tol=capped_tol(float(cfg["solver"]["tol"])), confidence=float(zeta["confidence"]),
                    bootstrap=int(zeta["bootstrap"]))
 
-    def jobs(self) -> list[StickinessJob]:
-        """Every run, by H, then N, then seed (the order the merge expects)."""
-        return [StickinessJob(h, x, s) for h in self.hurst for x in self.number for s in range(self.seeds)]
+    def run(self, *, hurst: float, number: float, seed: int) -> StickinessRun:
+        """The :class:`StickinessRun` of the surface (*hurst*, *seed*) at the number *number*: the
+        sweep's settings that one run depends on."""
+        return StickinessRun(hurst=float(hurst), number=float(number), seed=int(seed), n=self.n, length=self.length,
+                             e_star=self.e_star, rms_slope=self.rms_slope, cutoff=self.cutoff,
+                             range_ratio=self.range_ratio, area=self.area, steps=self.steps, tol=self.tol)
 
-    def job(self, combination: str, seed) -> StickinessJob:
-        """The run of a path's *combination* (``H0.8_N0.5``) and *seed*; ``KeyError`` naming the
-        combinations of the sweep for any other."""
+    def jobs(self) -> list[StickinessRun]:
+        """Every run, by H, then N, then seed (the order the merge expects)."""
+        return [self.run(hurst=h, number=x, seed=s) for h in self.hurst for x in self.number for s in range(self.seeds)]
+
+    def job(self, combination: str, seed) -> StickinessRun:
+        """The run of a path's *combination* (``H0.8_N0.5``) and *seed*: the ``stickiness_run``
+        rule's ``params``; ``KeyError`` naming the combinations of the sweep for any other."""
         for job in self.jobs():
             if job.combination == combination and job.seed == int(seed):
                 return job
         raise KeyError(f"no stickiness run {combination} seed {seed}; the sweep has "
                        f"{sorted({j.combination for j in self.jobs()})} with seeds 0..{self.seeds - 1}")
-
-    def run(self, job: StickinessJob) -> StickinessRun:
-        """The :class:`StickinessRun` of *job*: the sweep's settings that one run depends on."""
-        return StickinessRun(hurst=job.hurst, number=job.number, seed=job.seed, n=self.n, length=self.length,
-                             e_star=self.e_star, rms_slope=self.rms_slope, cutoff=self.cutoff,
-                             range_ratio=self.range_ratio, area=self.area, steps=self.steps, tol=self.tol)
-
-    def run_of(self, combination: str, seed) -> StickinessRun:
-        """The :class:`StickinessRun` of a path's *combination* and *seed* (:meth:`job`): the
-        ``stickiness_run`` rule's ``params``."""
-        return self.run(self.job(combination, seed))
