@@ -16,7 +16,8 @@ from ..bem import DEFAULT_MAXITER
 from . import axes, runfile
 from .runs import parse_combo
 from .axes import kind_of
-from .study_settings import StudySettings, force_grid, solver_maxiter
+from .defaults import solver_maxiter
+from .study_settings import StudySettings, force_grid
 
 __all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
 

@@ -24,13 +24,9 @@ from typing import Mapping
 
 import numpy as np
 
-from ..bem import DEFAULT_MAXITER
 from . import axes
 
 __all__ = [
-    "ADHESIVE_TOL_CAP",
-    "capped_tol",
-    "solver_maxiter",
     "force_grid",
     "ForceRange",
     "GridSettings",
@@ -44,22 +40,6 @@ __all__ = [
     "StudySettings",
     "coarse_config",
 ]
-
-
-#: the loosest relative tolerance of an adhesive or cohesive solve (the adhesive retract and the
-#: stickiness approach), whatever ``solver.tol`` is: their pull-off and loading slope need it
-ADHESIVE_TOL_CAP = 1e-8
-
-
-def capped_tol(tol: float) -> float:
-    """The tolerance of an adhesive or cohesive solve: ``solver.tol``, at most :data:`ADHESIVE_TOL_CAP`."""
-    return min(tol, ADHESIVE_TOL_CAP)
-
-
-def solver_maxiter(maxiter: int | None) -> int:
-    """The iteration limit of a run's solves: ``solver.maxiter``, or the solver's default
-    (:data:`roughcontact.bem.DEFAULT_MAXITER`) where the configuration leaves it ``None``."""
-    return DEFAULT_MAXITER if maxiter is None else int(maxiter)
 
 
 def force_grid(force_from: float, force_to: float, count: int) -> np.ndarray:

@@ -40,7 +40,7 @@ from ...bem.punch import contact_stiffness
 from ...errors import ConvergenceError, IndentError
 from ...models.rough_adhesion import jkr_critical_approach
 from ..path import LoadPath
-from ..study_settings import capped_tol
+from ..defaults import capped_tol
 
 __all__ = ["LOAD_STEPS", "RETRACT_STEPS", "RETRACT_REACH", "REFINE", "adhesive_run"]
 

@@ -42,7 +42,8 @@ from ...surfaces.bodies import paraboloid
 from .. import provenance, runfile
 from .config import LENGTH_UNITS, plain_unit, to_metres, to_newtons, to_pascals
 from ..runs import force_grid, kind_of
-from ..study_settings import StudySettings, TopographyInput, solver_maxiter
+from ..defaults import solver_maxiter
+from ..study_settings import StudySettings, TopographyInput
 
 __all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job", "run_order",
            "sha256"]

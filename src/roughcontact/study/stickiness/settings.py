@@ -4,7 +4,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 
-from ..study_settings import capped_tol
+from ..defaults import capped_tol
 
 __all__ = ["StickinessRun", "StickinessSettings"]
 
@@ -37,7 +37,7 @@ class StickinessRun:
     steps : int
         Approaches of the loading path.
     tol : float
-        Relative tolerance of every solve (:func:`roughcontact.study.study_settings.capped_tol`).
+        Relative tolerance of every solve (:func:`roughcontact.study.defaults.capped_tol`).
     """
 
     hurst: float
@@ -104,7 +104,7 @@ class StickinessSettings:
         Approaches of a loading path.
     tol, confidence, bootstrap :
         The solver's tolerance (``solver.tol``, capped by
-        :func:`~roughcontact.study.study_settings.capped_tol`) and the interval of the merged table
+        :func:`~roughcontact.study.defaults.capped_tol`) and the interval of the merged table
         (``fit.zeta.confidence``, ``fit.zeta.bootstrap``).
     """
 
