@@ -234,6 +234,24 @@ def test_the_table_has_the_mean_slope_inside_its_interval(tmp_path):
     assert sticky["threshold"] == pytest.approx(math.sqrt(0.5 * 3.0), rel=1e-12), "mean slopes -0.2, +0.2"
 
 
+def test_the_merged_files_record_the_sweep_not_the_configuration(tmp_path):
+    """stickiness.nc's config and config_hash are the sweep's (StickinessSettings.record): another
+    generated seed does not change them; the table's rows are those of merge_stickiness."""
+    from roughcontact.study.stickiness.merge import run_stickiness_merge
+
+    s = _settings(number=[0.5], seeds=2, steps=8)
+    assert StickinessSettings.of(s) is s, "typed settings are returned unchanged"
+    other = StickinessSettings.of(resolve_config({**TINY, "seeds": 7, "stickiness": {"number": [0.5], "seeds": 2,
+                                                                                      "steps": 8}}))
+    assert other.record() == s.record(), "the generated study's seeds are no setting of the sweep"
+    paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
+    run_stickiness_merge(s, paths, tmp_path / "m.nc", tmp_path / "m.csv")
+    with xr.open_dataset(tmp_path / "m.nc") as ds:
+        assert json.loads(ds.attrs["config"]) == json.loads(provenance.canonical_json(s.record()))
+        assert ds.attrs["config_hash"] == provenance.config_hash(s.record())
+    assert pd.read_csv(tmp_path / "m.csv")["loading_slope"].tolist() == pytest.approx([-0.15], rel=1e-12)
+
+
 def test_the_merge_rejects_a_run_on_another_grid(tmp_path):
     s = _settings(number=[0.5], seeds=2, steps=8)
     paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})

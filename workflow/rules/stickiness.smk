@@ -38,7 +38,7 @@ rule stickiness:
     conda:
         "../../envs/roughcontact.yaml"
     params:
-        cfg=config,
+        sweep=STICKINESS,
     script:
         "../scripts/stickiness.py"
 
@@ -58,6 +58,6 @@ rule stickiness_figures:
     conda:
         "../../envs/roughcontact.yaml"
     params:
-        cfg=config,
+        sweep=STICKINESS,
     script:
         "../scripts/stickiness_figures.py"

@@ -109,14 +109,18 @@ def stickiness_table(ds, s: StickinessSettings):
     return pd.DataFrame(rows)
 
 
-def run_stickiness_merge(cfg, run_files, out_nc, out_csv) -> None:
-    """``stickiness`` rule: the stickiness run files -> ``stickiness.nc`` and ``stickiness.csv``."""
+def run_stickiness_merge(s, run_files, out_nc, out_csv) -> None:
+    """``stickiness`` rule: the stickiness run files -> ``stickiness.nc`` and ``stickiness.csv``.
+
+    *s*: the sweep (:class:`~.settings.StickinessSettings`, the rule's ``params``; a resolved
+    configuration is read with :meth:`~.settings.StickinessSettings.of`); the merged file's
+    provenance records :meth:`~.settings.StickinessSettings.record`."""
     from ..io import write_csv
 
-    s = StickinessSettings.of(cfg)
+    s = StickinessSettings.of(s)
     ds = merge_stickiness(s, list(run_files))
     ds.attrs.update(provenance.provenance_attrs(
-        config=getattr(cfg, "config", cfg), title="roughcontact stickiness runs: loading slopes F/A at the area A*",
+        config=s.record(), title="roughcontact stickiness runs: loading slopes F/A at the area A*",
         forces="e_star * length**2 (stickiness.csv: dF/dA in units of h'E*)"))
     provenance.write_netcdf(ds, out_nc)
     write_csv(stickiness_table(ds, s), out_csv)

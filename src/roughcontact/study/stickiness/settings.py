@@ -126,8 +126,11 @@ class StickinessSettings:
     @classmethod
     def of(cls, cfg) -> "StickinessSettings | None":
         """The sweep of a resolved configuration (:func:`roughcontact.study.config.resolve_config`;
-        a :class:`~roughcontact.study.study_settings.StudySettings` has it as ``stickiness``);
-        ``None`` where it has no ``stickiness`` section."""
+        a :class:`~roughcontact.study.study_settings.StudySettings` has it as ``stickiness``; a
+        :class:`StickinessSettings` is returned unchanged); ``None`` where it has no
+        ``stickiness`` section."""
+        if isinstance(cfg, StickinessSettings):
+            return cfg
         if not isinstance(cfg, Mapping):
             return cfg.stickiness
         section = cfg.get("stickiness")
@@ -149,6 +152,11 @@ class StickinessSettings:
         return StickinessRun(hurst=float(hurst), number=float(number), seed=int(seed), n=self.n, length=self.length,
                              e_star=self.e_star, rms_slope=self.rms_slope, cutoff=self.cutoff,
                              range_ratio=self.range_ratio, area=self.area, steps=self.steps, tol=self.tol)
+
+    def record(self) -> dict:
+        """The sweep as a flat mapping of plain values: the merged files' ``config`` and
+        ``config_hash`` (what the stickiness merge depends on, nothing else of the configuration)."""
+        return dataclasses.asdict(self)
 
     def jobs(self) -> list[StickinessRun]:
         """Every run, by H, then N, then seed (the order the merge expects)."""
