@@ -152,3 +152,21 @@ def test_path_settings_are_derived_once_for_every_job_record():
     assert (m.length, m.periodic, m.e_star, m.maxiter, m.hardness, m.force_key) == (3.2, False, 1.0, 100, None,
                                                                                     "forces.sphere.to")
     assert m.name == MEASURED.describe()
+
+
+def test_the_one_writer_writes_a_stickiness_run_that_the_one_reader_reads(tmp_path):
+    """write_run(kind="stickiness"): the approach path and scalars round-trip exactly; another kind
+    is a ValueError naming both."""
+    from roughcontact.study.stickiness.settings import StickinessRun
+
+    run = StickinessRun(hurst=0.8, number=0.5, seed=1, n=64, length=1.0, e_star=1.0, rms_slope=0.1, cutoff=4.0,
+                        range_ratio=0.05, area=0.05, steps=8, tol=1e-8)
+    rng = np.random.default_rng(3)
+    out = {"depth": rng.random(5), "force": rng.normal(size=5), "contact_cells": np.arange(5), "zone_cells": np.arange(5),
+           **{name: float(rng.random()) for name in runfile.STICKINESS_SCALARS}}
+    runfile.write_run(tmp_path / "s.nc", out, kind="stickiness", attrs=provenance.provenance_attrs(config=run.record()))
+    ds = read_run(tmp_path / "s.nc", run)
+    np.testing.assert_array_equal(ds["force"].values, out["force"])
+    assert float(ds["loading_slope"]) == out["loading_slope"] and ds["approach"].values.tolist() == [0, 1, 2, 3, 4]
+    with pytest.raises(ValueError, match="'indentation' or 'stickiness'"):
+        runfile.write_run(tmp_path / "x.nc", out, kind="sticky", attrs={})

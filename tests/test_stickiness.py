@@ -216,7 +216,7 @@ def _write_runs(tmp_path, s, slopes):
                "pastewka_robbins_number": job.number, "range_ratio": s.range_ratio,
                "loading_slope": slopes[(job.hurst, job.number)][job.seed]}
         path = tmp_path / job.combination / f"seed{job.seed}.nc"
-        runfile.write_stickiness_run(path, out, attrs=provenance.provenance_attrs(config=job.record(),
+        runfile.write_run(path, out, kind="stickiness", attrs=provenance.provenance_attrs(config=job.record(),
                                                                                   grid_n=s.n))
         paths.append(path)
     return paths

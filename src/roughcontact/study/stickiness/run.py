@@ -158,11 +158,11 @@ def run_stickiness_job(s, output) -> dict:
     """``stickiness_run`` rule: the run *s* (:class:`~.settings.StickinessRun`, the rule's
     ``params``) -> its run file *output* (NetCDF, atomic; its provenance records *s*:
     ``config`` is :meth:`~.settings.StickinessRun.record`, ``config_hash`` its hash;
-    :func:`roughcontact.study.runfile.write_stickiness_run`)."""
+    :func:`roughcontact.study.runfile.write_run`)."""
     from .. import provenance, runfile
 
     out = stickiness_run(s)
-    runfile.write_stickiness_run(output, out, attrs=provenance.provenance_attrs(
+    runfile.write_run(output, out, kind="stickiness", attrs=provenance.provenance_attrs(
         config=s.record(), hurst=s.hurst, number=s.number, seed=s.seed, grid_n=s.n, grid_length=s.length,
         e_star=s.e_star, periodic=1, cutoff_cells=s.cutoff, area=s.area, solver_tol=s.tol,
         interaction="Maugis-Dugdale (roughcontact.bem.cohesive)",
