@@ -3,6 +3,7 @@ surface and interaction of a run against the closed-form criterion, the loading 
 with known answers, the sign of the slope far from N = 1, the merged table and claim (q)."""
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -18,7 +19,7 @@ from roughcontact.models.rough_adhesion import STICKINESS_RANGE_LIMIT
 from roughcontact import cli
 from roughcontact.study import claims, provenance, runfile
 from roughcontact.study.config import load_config, resolve_config, study_settings
-from roughcontact.study.stickiness import StickinessJob, StickinessSettings, loading_slope, stickiness_run
+from roughcontact.study.stickiness import StickinessSettings, loading_slope, stickiness_run
 from roughcontact.study.stickiness.merge import merge_stickiness, stickiness_table, threshold
 from roughcontact.study.stickiness.run import stickiness_surface
 from roughcontact.surfaces.moments import spectral_moments
@@ -78,12 +79,57 @@ def test_an_unknown_job_names_the_sweep():
         _settings().job("H0.8_N7", 0)
 
 
+# --- a run's identity: its own settings, not the configuration -----------------------------------
+
+def test_more_seeds_or_numbers_leave_a_runs_settings_and_hash_unchanged():
+    """A run shared by two sweeps that differ by one more seed, number or H (or by the merge's
+    interval, fit.zeta) has equal settings and config_hash: Snakemake reruns nothing."""
+    base = _settings(hurst=[0.8], number=[0.5], seeds=2)
+    run = base.job("H0.8_N0.5", 1)
+    for other in (_settings(hurst=[0.8], number=[0.5], seeds=3), _settings(hurst=[0.8], number=[0.5, 3.0], seeds=2),
+                  _settings(hurst=[0.5, 0.8], number=[0.5], seeds=2)):
+        assert other.job("H0.8_N0.5", 1) == run, other
+        assert provenance.config_hash(other.job("H0.8_N0.5", 1).record()) == provenance.config_hash(run.record())
+    bootstrap = StickinessSettings.of(resolve_config({**TINY, "stickiness": {"hurst": [0.8], "number": [0.5]},
+                                                      "fit": {"zeta": {"bootstrap": 17}}}))
+    assert bootstrap.job("H0.8_N0.5", 1) == run, "the merge's bootstrap is no setting of a run"
+
+
+def test_another_grid_or_tolerance_is_another_run():
+    run = _settings(hurst=[0.8], number=[0.5]).job("H0.8_N0.5", 0)
+    for other in (_settings(hurst=[0.8], number=[0.5], n=256), _settings(hurst=[0.8], number=[0.5], steps=9)):
+        assert provenance.config_hash(other.job("H0.8_N0.5", 0).record()) != provenance.config_hash(run.record())
+
+
+def test_the_tolerance_is_the_solvers_capped_at_1e_8():
+    """solver.tol 1e-6 gives 1e-8 exactly, 1e-10 stays 1e-10."""
+    loose = resolve_config({**TINY, "solver": {**TINY["solver"], "tol": 1e-6}, "stickiness": {}})
+    tight = resolve_config({**TINY, "solver": {**TINY["solver"], "tol": 1e-10}, "stickiness": {}})
+    assert StickinessSettings.of(loose).tol == 1e-8 and StickinessSettings.of(tight).tol == 1e-10
+
+
+def test_the_run_file_records_the_runs_settings_and_their_hash(tmp_path, monkeypatch):
+    """config and config_hash of a stickiness run file are those of its StickinessRun (the
+    loading path itself replaced by a stub: what is written, not what is solved)."""
+    import roughcontact.study.stickiness.run as run_module
+
+    s = _settings(hurst=[0.8], number=[0.5], steps=8)
+    run = s.job("H0.8_N0.5", 0)
+    stub = {"depth": np.zeros(2), "force": np.zeros(2), "contact_cells": np.zeros(2, int), "zone_cells": np.zeros(2, int),
+            **{name: 0.5 for name in runfile.STICKINESS_SCALARS}}
+    monkeypatch.setattr(run_module, "stickiness_run", lambda r: stub)
+    run_module.run_stickiness_job(run, tmp_path / "r.nc")
+    with xr.open_dataset(tmp_path / "r.nc") as ds:
+        assert json.loads(ds.attrs["config"]) == run.record()
+        assert ds.attrs["config_hash"] == provenance.config_hash(run.record())
+
+
 # --- the surface and its interaction: the closed-form criterion ---------------------------------
 
 @pytest.mark.parametrize("n", [64, 65])
 def test_the_surface_has_the_sweeps_rms_gradient(n):
     s = _settings(n=n, cutoff=4)
-    surface = stickiness_surface(s, StickinessJob(0.8, 0.5, 3))
+    surface = stickiness_surface(s.run(hurst=0.8, number=0.5, seed=3))
     slope = math.sqrt(2.0 * spectral_moments(surface.heights, length=s.length).m2)
     assert slope == pytest.approx(s.rms_slope, rel=1e-12), f"h' on {n}^2"
 
@@ -94,7 +140,7 @@ def test_the_interaction_has_the_jobs_number_and_range(n, number):
     """w and dr invert Pastewka & Robbins' number N = (h'E* dr/(2w))(h'^2/(h'' dr))^(2/3) and
     dr/g0 exactly (rounding only)."""
     s = _settings(n=n, cutoff=4)
-    criterion = stickiness_surface(s, StickinessJob(0.8, number, 1)).criterion
+    criterion = stickiness_surface(s.run(hurst=0.8, number=number, seed=1)).criterion
     assert criterion.number == pytest.approx(number, rel=1e-12), "N"
     assert criterion.range_ratio == pytest.approx(s.range_ratio, rel=1e-12), "dr/g0"
 
@@ -120,7 +166,7 @@ def test_loading_slope_is_nan_short_of_the_area():
 def extremes():
     """128^2, cutoff 4 cells, one surface at N = 0.3 and N = 1000 (about 8 s)."""
     s = _settings(n=128, cutoff=4, number=[0.3, 1000.0], seeds=2, steps=16)
-    return s, {number: stickiness_run(s, StickinessJob(0.8, number, 0)) for number in s.number}
+    return s, {number: stickiness_run(s.run(hurst=0.8, number=number, seed=0)) for number in s.number}
 
 
 def test_far_below_one_the_surface_is_sticky(extremes):
@@ -147,7 +193,7 @@ def test_far_above_one_the_slope_is_that_without_adhesion(extremes):
     at N = 1e5, that last the chord's own error (F interpolated between loading states); -20 % at
     N = 30."""
     s, runs = extremes
-    expected = _repulsive_slope(s, stickiness_surface(s, StickinessJob(0.8, 1000.0, 0)).heights)
+    expected = _repulsive_slope(s, stickiness_surface(s.run(hurst=0.8, number=1000.0, seed=0)).heights)
     assert runs[1000.0]["loading_slope"] == pytest.approx(expected, rel=0.03), "N = 1000 against no adhesion"
 
 
@@ -170,7 +216,8 @@ def _write_runs(tmp_path, s, slopes):
                "pastewka_robbins_number": job.number, "range_ratio": s.range_ratio,
                "loading_slope": slopes[(job.hurst, job.number)][job.seed]}
         path = tmp_path / job.combination / f"seed{job.seed}.nc"
-        runfile.write_stickiness_run(path, out, attrs=provenance.provenance_attrs(grid_n=s.n))
+        runfile.write_run(path, out, kind="stickiness", attrs=provenance.provenance_attrs(config=job.record(),
+                                                                                  grid_n=s.n))
         paths.append(path)
     return paths
 
@@ -187,10 +234,28 @@ def test_the_table_has_the_mean_slope_inside_its_interval(tmp_path):
     assert sticky["threshold"] == pytest.approx(math.sqrt(0.5 * 3.0), rel=1e-12), "mean slopes -0.2, +0.2"
 
 
+def test_the_merged_files_record_the_sweep_not_the_configuration(tmp_path):
+    """stickiness.nc's config and config_hash are the sweep's (StickinessSettings.record): another
+    generated seed does not change them; the table's rows are those of merge_stickiness."""
+    from roughcontact.study.stickiness.merge import run_stickiness_merge
+
+    s = _settings(number=[0.5], seeds=2, steps=8)
+    assert StickinessSettings.of(s) is s, "typed settings are returned unchanged"
+    other = StickinessSettings.of(resolve_config({**TINY, "seeds": 7, "stickiness": {"number": [0.5], "seeds": 2,
+                                                                                      "steps": 8}}))
+    assert other.record() == s.record(), "the generated study's seeds are no setting of the sweep"
+    paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
+    run_stickiness_merge(s, paths, tmp_path / "m.nc", tmp_path / "m.csv")
+    with xr.open_dataset(tmp_path / "m.nc") as ds:
+        assert json.loads(ds.attrs["config"]) == json.loads(provenance.canonical_json(s.record()))
+        assert ds.attrs["config_hash"] == provenance.config_hash(s.record())
+    assert pd.read_csv(tmp_path / "m.csv")["loading_slope"].tolist() == pytest.approx([-0.15], rel=1e-12)
+
+
 def test_the_merge_rejects_a_run_on_another_grid(tmp_path):
     s = _settings(number=[0.5], seeds=2, steps=8)
     paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
-    with pytest.raises(MergeError, match="stickiness.n"):
+    with pytest.raises(MergeError, match=r"other settings .*differs in n: \d+ in the file, 256 now"):
         merge_stickiness(_settings(number=[0.5], seeds=2, steps=8, n=256), paths)
 
 
@@ -198,7 +263,18 @@ def test_the_merge_rejects_a_file_that_is_no_stickiness_run(tmp_path):
     s = _settings(number=[0.5], seeds=2, steps=8)
     paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
     xr.Dataset(attrs={"title": "something else"}).to_netcdf(paths[1])
-    with pytest.raises(MergeError, match="not a stickiness run"):
+    with pytest.raises(MergeError, match=f"{paths[1]}: foreign NetCDF file .*rerun snakemake"):
+        merge_stickiness(s, paths)
+
+
+def test_the_merge_rejects_a_run_file_of_another_kind(tmp_path):
+    """A file with the variables of a stickiness run but another title (e.g. an indentation run's)."""
+    s = _settings(number=[0.5], seeds=2, steps=8)
+    paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
+    with xr.open_dataset(paths[0]) as ds:
+        other = ds.load().assign_attrs(title=runfile.TITLE)
+    other.to_netcdf(paths[0])
+    with pytest.raises(MergeError, match="is not a roughcontact stickiness run"):
         merge_stickiness(s, paths)
 
 
@@ -264,3 +340,21 @@ def test_claim_q_has_no_rows_without_a_stickiness_table():
                                 study=study_settings(TINY))
     table = claims.claims_table(pd.DataFrame(), xr.Dataset(), pd.DataFrame(), inputs.study)
     assert "q" not in set(table.get("claim", [])), table
+
+
+def test_a_cohesive_failure_names_the_run_and_its_approach(monkeypatch):
+    """The solver fails after two approaches: IndentError naming the run, approach 3/steps and
+    what to change (the cohesive path replaced by a stub that fails)."""
+    import roughcontact.study.stickiness.run as run_module
+    from roughcontact.errors import ConvergenceError, IndentError
+
+    def failing(z, depths, *, on_state, **kwargs):
+        for i in range(2):
+            on_state(i, np.zeros(z.shape, bool), np.zeros(z.shape, bool))
+        raise ConvergenceError("stub")
+
+    monkeypatch.setattr(run_module, "cohesive_path", failing)
+    s = _settings(n=32, cutoff=4, hurst=[0.8], number=[0.5], steps=8)
+    with pytest.raises(IndentError, match=r"stickiness H0.8_N0.5 seed 0: the cohesive solve did not converge at "
+                                          r"approach 3/8 \(stub\); lower stickiness.area"):
+        stickiness_run(s.job("H0.8_N0.5", 0))

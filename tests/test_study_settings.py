@@ -126,3 +126,19 @@ def test_an_axis_the_mapping_lacks_takes_its_paper_value(study):
     """A file's configuration recorded before an optional axis existed: the axis at its paper value."""
     old = {k: v for k, v in study.config.items() if k != "hardness"}
     assert StudySettings.of(old).hardness == (None,), "hardness of a configuration without the key"
+
+
+def test_capped_tol_is_the_solvers_at_most_1e_8():
+    """The adhesive and cohesive solves' tolerance: solver.tol, at most 1e-8 (exact)."""
+    from roughcontact.study.defaults import ADHESIVE_TOL_CAP, capped_tol
+
+    assert ADHESIVE_TOL_CAP == 1e-8
+    assert capped_tol(1e-6) == 1e-8 and capped_tol(1e-10) == 1e-10 and capped_tol(1e-8) == 1e-8
+
+
+def test_solver_maxiter_defaults_to_the_solvers():
+    """solver.maxiter None: the solver's default (roughcontact.bem.DEFAULT_MAXITER), else the value."""
+    from roughcontact.bem import DEFAULT_MAXITER
+    from roughcontact.study.defaults import solver_maxiter
+
+    assert solver_maxiter(None) == DEFAULT_MAXITER and solver_maxiter(37) == 37

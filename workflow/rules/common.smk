@@ -97,8 +97,9 @@ def stickiness_run_files(wildcards):
     ]
 
 
-def stickiness_job(wildcards):
-    """The stickiness run of a job's wildcards (fails naming the sweep's runs for others)."""
+def stickiness_run_settings(wildcards):
+    """The settings of the stickiness run of a job's wildcards, its identity (fails naming the
+    sweep's runs for others)."""
     if STICKINESS is None:
         raise ValueError("the config has no stickiness section: no stickiness runs")
     return STICKINESS.job(wildcards.combination, wildcards.seed)

@@ -17,8 +17,7 @@ rule stickiness_run:
         "../../envs/roughcontact.yaml"
     threads: 1
     params:
-        job=stickiness_job,
-        cfg=config,
+        run=stickiness_run_settings,
     script:
         "../scripts/stickiness_run.py"
 
@@ -39,7 +38,7 @@ rule stickiness:
     conda:
         "../../envs/roughcontact.yaml"
     params:
-        cfg=config,
+        sweep=STICKINESS,
     script:
         "../scripts/stickiness.py"
 
@@ -59,6 +58,6 @@ rule stickiness_figures:
     conda:
         "../../envs/roughcontact.yaml"
     params:
-        cfg=config,
+        sweep=STICKINESS,
     script:
         "../scripts/stickiness_figures.py"

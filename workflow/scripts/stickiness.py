@@ -4,4 +4,4 @@ from roughcontact.study.stickiness.merge import run_stickiness_merge
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    run_stickiness_merge(snakemake.params.cfg, snakemake.input.runs, snakemake.output.nc, snakemake.output.csv)
+    run_stickiness_merge(snakemake.params.sweep, snakemake.input.runs, snakemake.output.nc, snakemake.output.csv)

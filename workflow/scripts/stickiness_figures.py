@@ -4,4 +4,4 @@ from roughcontact.study.stickiness.figures import run_stickiness_figures
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    run_stickiness_figures(snakemake.params.cfg, snakemake.input.runs, snakemake.output.loading)
+    run_stickiness_figures(snakemake.params.sweep, snakemake.input.runs, snakemake.output.loading)

@@ -4,4 +4,4 @@ from roughcontact.study.stickiness.run import run_stickiness_job
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    run_stickiness_job(snakemake.params.cfg, snakemake.params.job, snakemake.output.run)
+    run_stickiness_job(snakemake.params.run, snakemake.output.run)

@@ -8,13 +8,13 @@ from __future__ import annotations
 
 import dataclasses
 import logging
-import time
 
 import numpy as np
 
 from .. import bem, surfaces
 from ..errors import ConvergenceError, DomainTooSmallError, IndentError
 from . import provenance, runfile
+from .path import LoadPath
 from .settings import JobSettings
 
 __all__ = ["PathSettings", "solve_load_path", "path_settings", "make_surface", "compute_run", "write_run",
@@ -87,11 +87,11 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     """Solve the warm-started load path of heights *z* at *forces* (force units); return
     the per-load arrays of :data:`roughcontact.study.runfile.VARIABLES` and ``force``.
 
-    The one indent core: generated surfaces (:func:`compute_run`) and measured ones
-    (:func:`roughcontact.study.measured.run_job`) differ only in how they make ``z``. Each
-    state is reduced to its numbers as soon as it is solved, so only two states are alive at
-    a time. *progress*, if given, is called as ``progress(i, total, text)`` after each load;
-    the same line goes to this module's logger. *units*: ``(force scale, force unit,
+    The force-controlled path kind of :class:`~roughcontact.study.path.LoadPath`: generated
+    surfaces (:func:`compute_run`) and measured ones (:func:`roughcontact.study.measured.run_job`)
+    differ only in how they make ``z``. Each state is reduced to its numbers as soon as it is
+    solved, so only two states are alive at a time. *progress*, if given, is called as
+    ``progress(i, total, text)`` after each load; the same line goes to the log. *units*: ``(force scale, force unit,
     stiffness scale, stiffness unit)`` to add the load and stiffness in physical units to the
     progress lines (e.g. N and N/m).
 
@@ -105,36 +105,30 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     out = {name: np.zeros(total, dtype=runfile.VARIABLES[name].dtype)
            for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if p.hardness is not None else ())}
     out["force"] = np.asarray(forces, dtype=float)
-    path = bem.iter_load_path(z, forces, length=L, e_star=E, periodic=p.periodic, tol=p.tol, maxiter=p.maxiter,
-                              hardness=p.hardness, edge_contact=p.edge_contact)
-    i = 0  # the load being solved: the generator raises while solving load i
-    clock = time.perf_counter()
-    try:
-        for i, state in enumerate(path):
-            _record(p, out, i, state, cell)
-            now = time.perf_counter()
-            text = (f"load step {i + 1}/{total}: F/(E*L^2) = {forces[i] / (E * L**2):.3e}, "
-                    f"iterations = {state.iterations}, contact cells = {out['contact_cells'][i]}, "
-                    f"k/(E*L) = {out['stiffness'][i] / (E * L):.4e}")
-            if units is not None:
-                f_scale, f_unit, k_scale, k_unit = units
-                text += f", F = {forces[i] * f_scale:.4g} {f_unit}, k = {out['stiffness'][i] * k_scale:.4g} {k_unit}"
-            text += f", {now - clock:.2f} s"
-            clock = now
-            logger.info("%s: %s", p.name, text)
-            if progress is not None:
-                progress(i + 1, total, text)
-            i += 1  # the next load (enumerate sets it again when its state is solved)
-    except DomainTooSmallError as exc:
-        fnorm = forces[i] / (E * L**2)
+
+    def record(i, state) -> str:
+        _record(p, out, i, state, cell)
+        words = (f"F/(E*L^2) = {forces[i] / (E * L**2):.3e}, iterations = {state.iterations}, "
+                 f"contact cells = {out['contact_cells'][i]}, k/(E*L) = {out['stiffness'][i] / (E * L):.4e}")
+        if units is not None:
+            f_scale, f_unit, k_scale, k_unit = units
+            words += f", F = {forces[i] * f_scale:.4g} {f_unit}, k = {out['stiffness'][i] * k_scale:.4g} {k_unit}"
+        return words
+
+    def edge(exc) -> str:   # the generator raises while solving load i = follow.done
+        i = follow.done
         last = f"{forces[i - 1] / (E * L**2):.3g}" if i else "the first load"
         if i and units is not None:   # the last good load in the user's units too
             last += f" (F = {forces[i - 1] * units[0]:.4g} {units[1]})"
-        raise IndentError(
-            f"indent {p.name}: the contact reached the edge of the free-space grid at load step "
-            f"{i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}); lower {p.force_key} to {last} or below "
-            f"or {p.edge_hint}"
-        ) from exc
+        return (f"indent {p.name}: the contact reached the edge of the free-space grid at {follow.where} "
+                f"(F/(E*L^2) = {forces[i] / (E * L**2):.3g}); lower {p.force_key} to {last} or below or {p.edge_hint}")
+
+    follow = LoadPath(p.name, total, record, progress=progress)
+    path = bem.iter_load_path(z, forces, length=L, e_star=E, periodic=p.periodic, tol=p.tol, maxiter=p.maxiter,
+                              hardness=p.hardness, edge_contact=p.edge_contact)
+    with follow.failing(DomainTooSmallError, edge):
+        for i, state in enumerate(path):
+            follow(i, state)
     return out
 
 
@@ -150,11 +144,18 @@ def compute_run(s: JobSettings, progress=None) -> dict:
     return solve_load_path(make_surface(s), s.forces(), path_settings(s), progress)
 
 
-def path_settings(s: JobSettings) -> PathSettings:
-    """The :class:`PathSettings` of a generated run (the solver axes through their role)."""
-    return PathSettings(length=s.length, e_star=s.e_star, periodic=s.periodic, tol=s.tol, maxiter=s.maxiter,
-                        stiffness_method=s.stiffness_method, rel_step=s.rel_step, name=s.describe(),
-                        force_key=f"forces.{s.kind}.to", **s.arguments("solver"))
+def path_settings(s, **where) -> PathSettings:
+    """The :class:`PathSettings` of a job record *s*, derived here once for every kind: its solver
+    (``tol``, ``maxiter``, ``stiffness_method``, ``rel_step``), ``e_star``, name (``describe()``) and
+    force key (``forces.<kind>.to``); a generated run's
+    (:class:`~roughcontact.study.settings.JobSettings`) length, half-space and solver axes
+    (:meth:`~roughcontact.study.settings.JobSettings.arguments`, e.g. the hardness). *where*: the
+    fields a job record does not hold (a measured run's tile ``length``, ``periodic``,
+    ``edge_hint``, ``edge_contact``)."""
+    own = ({"length": s.length, "periodic": s.periodic, **s.arguments("solver")} if isinstance(s, JobSettings)
+           else {})
+    return PathSettings(e_star=s.e_star, tol=s.tol, maxiter=s.maxiter, stiffness_method=s.stiffness_method,
+                        rel_step=s.rel_step, name=s.describe(), force_key=f"forces.{s.kind}.to", **{**own, **where})
 
 
 def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:

@@ -1,26 +1,22 @@
 """Reading and writing the study's files: run files, NetCDF groups, CSV tables.
 
-Every write is atomic (a temporary file, then a rename: :func:`roughcontact.study.provenance.atomic_path`),
-so a failed job leaves no half-written output. Imports xarray where used (the ``pipeline``
+Every write is atomic (a temporary file, then a rename: :func:`roughcontact.study.provenance.atomic_path`;
+every NetCDF file through :func:`roughcontact.study.provenance.write_netcdf`), so a failed job
+leaves no half-written output. Imports xarray where used (the ``pipeline``
 extra). The run file's data model is :mod:`roughcontact.study.runfile`.
 """
 from __future__ import annotations
 
+import json
 import os
 
 import numpy as np
 
 from ..errors import MergeError
 from . import provenance, runfile
-from .settings import JobSettings
+from .provenance import write_netcdf
 
 __all__ = ["read_run", "write_groups", "read_groups", "write_netcdf", "write_csv"]
-
-
-def write_netcdf(ds, path) -> None:
-    """Atomic NetCDF4 write (temp file, then rename)."""
-    with provenance.atomic_path(path) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
 
 
 def write_csv(df, path) -> None:
@@ -29,11 +25,27 @@ def write_csv(df, path) -> None:
         df.to_csv(tmp, index=False)  # shortest round-trip repr: values read back are the values written
 
 
-def read_run(path, expected: JobSettings | None = None):
-    """Open one run file, check it and return it loaded in memory.
+def read_run(path, expected=None):
+    """Open one run file of any kind, check it and return it loaded in memory: the one reader.
 
-    Raises :class:`~roughcontact.errors.MergeError` naming *path* for a truncated, foreign or
-    stale file.  *expected* (the job settings of the current config) enables the stale check.
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The run file.
+    expected : object with ``file_spec()``, optional
+        The job record of the current configuration (a generated or adhesive run's
+        :class:`~roughcontact.study.settings.JobSettings`, a
+        :class:`~roughcontact.study.stickiness.settings.StickinessRun`, a
+        :class:`~roughcontact.study.measured.jobs.MeasuredJob`): its
+        :class:`~roughcontact.study.runfile.RunFileSpec` gives the title, variables and
+        dimensions, the scalars its path names, the ``config_hash`` and the force grid the file
+        must have. ``None``: only that it is a generated or adhesive run file.
+
+    Raises
+    ------
+    roughcontact.errors.MergeError
+        Naming *path*, what is wrong and what to do: a missing, truncated or foreign file, or a
+        stale one (computed with other settings: the differing settings are named).
     """
     import xarray as xr
 
@@ -47,29 +59,54 @@ def read_run(path, expected: JobSettings | None = None):
     except Exception as exc:
         raise MergeError(f"{path}: not a readable NetCDF file ({type(exc).__name__}: {exc}); "
                          f"it may be truncated; {hint}") from exc
-    missing = [v for v in (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS) if v not in ds.variables]
-    if missing or ds.attrs.get("title") != runfile.TITLE:
-        what = f"lacks {', '.join(missing)}" if missing else "is not a roughcontact indentation run"
+    spec = expected.file_spec() if expected is not None else None
+    title = spec.title if spec is not None else runfile.TITLE
+    required = spec.variables if spec is not None else (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+    missing = [v for v in required if v not in ds.variables]
+    if missing or ds.attrs.get("title") != title:
+        what = f"lacks {', '.join(missing)}" if missing else f"is not a {title}"
         raise MergeError(f"{path}: foreign NetCDF file ({what}); {hint}")
-    adhesive = expected.work_of_adhesion > 0 if expected is not None else "retract" in ds.dims
-    dims = ["force", "retract"] if adhesive else ["force"]   # an adhesive run has its retract path too
+    dims = spec.dims if spec is not None else (("force", "retract") if "retract" in ds.dims else ("force",))
     if sorted(ds.dims) != sorted(dims):
         raise MergeError(f"{path}: foreign NetCDF file (dimensions {dict(ds.sizes)}, expected {', '.join(dims)}); "
                          f"{hint}")
-    if expected is not None:
-        for key in runfile.SCALARS:
-            got, want = float(ds[key]), float(getattr(expected, key))
-            if not (got == want):
-                raise MergeError(f"{path}: holds {key} = {got:g}, expected {want:g} from its name; {hint}")
-        want = provenance.config_hash(expected.record())
-        if ds.attrs.get("config_hash") != want:
-            raise MergeError(f"{path}: was computed with other settings (config_hash {ds.attrs.get('config_hash')} "
-                             f"!= {want} of the current config); {hint} or run snakemake with --rerun-triggers params")
-        forces = expected.forces()
-        if ds.sizes["force"] != len(forces) or not np.allclose(ds["force"].values, forces, rtol=1e-12, atol=0):
-            raise MergeError(f"{path}: its force grid differs from the current config; {hint}")
+    if spec is not None:
+        _check_settings(path, ds, spec, hint)
     return ds
 
+
+def _check_settings(path: str, ds, spec: runfile.RunFileSpec, hint: str) -> None:
+    """The stale checks of :func:`read_run`: scalars, ``config_hash``, force grid."""
+    for key, want in spec.scalars.items():
+        got = float(ds[key])
+        if not (got == float(want)):
+            raise MergeError(f"{path}: holds {key} = {got:g}, expected {float(want):g} from its name; {hint}")
+    want = provenance.config_hash(spec.config)
+    if ds.attrs.get("config_hash") != want:
+        raise MergeError(f"{path}: was computed with other settings (config_hash {ds.attrs.get('config_hash')} "
+                         f"!= {want} of the current config{_differences(ds.attrs.get('config'), spec.config)}); "
+                         f"{hint} or run snakemake with --rerun-triggers params")
+    if spec.force_variable is not None:
+        forces = spec.forces
+        got = ds[spec.force_variable].values
+        if got.shape != forces.shape or not np.allclose(got, forces, rtol=1e-12, atol=0):
+            raise MergeError(f"{path}: its force grid differs from the current config; {hint}")
+
+
+def _differences(recorded, current: dict) -> str:
+    """``"; differs in n: 64 in the file, 256 now"``: the settings a stale file was computed
+    with that differ from *current* (its ``config`` attribute, JSON); empty where it has none."""
+    try:
+        recorded = json.loads(recorded) if recorded else None
+    except ValueError:
+        return ""
+    if not isinstance(recorded, dict):
+        return ""
+    now = json.loads(provenance.canonical_json(current))
+    keys = sorted(set(recorded) | set(now), key=str)
+    diff = [f"{k}: {recorded.get(k, 'absent')} in the file, {now.get(k, 'absent')} now"
+            for k in keys if recorded.get(k) != now.get(k)]
+    return f"; differs in {'; '.join(diff)}" if diff else ""
 
 
 def write_groups(path, groups: dict, attrs: dict) -> None:
@@ -77,9 +114,7 @@ def write_groups(path, groups: dict, attrs: dict) -> None:
     *attrs* become the root group's attributes (provenance)."""
     import xarray as xr
 
-    tree = xr.DataTree.from_dict({"/": xr.Dataset(attrs=attrs), **groups})
-    with provenance.atomic_path(path) as tmp:
-        tree.to_netcdf(tmp, engine="netcdf4")
+    write_netcdf(xr.DataTree.from_dict({"/": xr.Dataset(attrs=attrs), **groups}), path)
 
 
 def read_groups(path) -> dict:

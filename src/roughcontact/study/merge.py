@@ -19,7 +19,7 @@ from .io import read_run, write_groups
 from .settings import job_settings
 from .study_settings import StudySettings
 
-__all__ = ["KindLayout", "kind_layouts", "merge_runs", "run_merge"]
+__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "merge_runs", "run_merge"]
 
 
 log = logging.getLogger(__name__)
@@ -40,14 +40,17 @@ def _force_coords(study: StudySettings, kind: str) -> dict:
 @dataclasses.dataclass(frozen=True)
 class KindLayout:
     """Where the runs of one surface kind go in a merged Dataset: ``rows`` (run, path) of the
-    kind, its sweep ``axes`` (:data:`runs.AXES`), the sorted merged-file ``coords`` of each axis
-    and of ``seed``, and each run's coordinates (:meth:`index`)."""
+    kind, its sweep ``axes`` (:data:`runs.AXES`; a stickiness sweep: ``hurst, number``; a
+    measured surface: ``radius``), the sorted merged-file ``coords`` of each axis and of the
+    ``ensemble`` dimension (``seed``; a measured scan's ``tile``), and each run's coordinates
+    (``at``, by ``id`` of its row; :meth:`index`). :func:`gather` reads its runs."""
 
     kind: str
     rows: list
     axes: tuple
     coords: dict
     at: dict
+    ensemble: str = "seed"
 
     @property
     def shape(self) -> tuple:
@@ -60,9 +63,9 @@ class KindLayout:
         return "periodic" if self.kind == "flat" else "free (non-periodic)"
 
     def index(self, row) -> tuple:
-        """The position of the run *row* along the axes and ``seed``."""
+        """The position of the run *row* along the axes and the ensemble (``seed``)."""
         return (tuple(self.coords[a].index(self.at[id(row)][a]) for a in self.axes)
-                + (self.coords["seed"].index(row["seed"]),))
+                + (self.coords[self.ensemble].index(row[self.ensemble]),))
 
 
 def kind_layouts(study: StudySettings, table: list, paths) -> list[KindLayout]:
@@ -80,6 +83,64 @@ def kind_layouts(study: StudySettings, table: list, paths) -> list[KindLayout]:
         coords["seed"] = list(study.seeds)
         out.append(KindLayout(kind=kind, rows=rows, axes=axes, coords=coords, at=at))
     return out
+
+
+@dataclasses.dataclass(frozen=True)
+class Gathered:
+    """The runs of one :class:`KindLayout`, read and placed (:func:`gather`).
+
+    Attributes
+    ----------
+    data : dict
+        ``{name: numpy.ndarray}`` of shape ``layout.shape + the variable's own shape`` (its
+        dimensions in the run file: ``force``, ``retract``, none for a scalar).
+    attrs : dict
+        ``{name: attributes}`` of each variable as the first run holding it has them (without
+        ``coordinates``).
+    commits : list of str
+        The sorted ``git_commit`` of the runs (``unknown`` where one has none).
+    run_attrs : dict
+        The global attributes of the layout's first run.
+    """
+
+    data: dict
+    attrs: dict
+    commits: list
+    run_attrs: dict
+
+
+def gather(layout: KindLayout, expected_of, variables: dict, value=None) -> Gathered:
+    """Read every run of *layout* with :func:`roughcontact.study.io.read_run` against its job record
+    ``expected_of(row)`` and place the *variables* (``{name: NetCDF dtype}``) of each at its
+    coordinates (:meth:`KindLayout.index`): the shared part of every merge (generated runs, the
+    adhesive runs' pull-off, the stickiness runs).
+
+    *value*: ``value(ds, name)`` the values of *name* in the run *ds* (default ``ds[name].values``),
+    e.g. a generated elastic run's loading stiffness where it has none. Raises
+    :class:`~roughcontact.errors.MergeError` (from :func:`~roughcontact.study.io.read_run`) naming a
+    missing, foreign or stale run file."""
+    data, attrs, commits, first = {}, {}, set(), None
+    for row, path in layout.rows:
+        ds = read_run(path, expected_of(row))
+        first = dict(ds.attrs) if first is None else first
+        at = layout.index(row)
+        for name, dtype in variables.items():
+            values = np.asarray(value(ds, name) if value is not None else ds[name].values)
+            if name not in data:
+                data[name] = np.zeros(layout.shape + values.shape, dtype=dtype)
+            data[name][at] = values
+            if name in ds and name not in attrs:
+                attrs[name] = {k: v for k, v in ds[name].attrs.items() if k != "coordinates"}
+        commits.add(ds.attrs.get("git_commit", "unknown"))
+    return Gathered(data=data, attrs=attrs, commits=sorted(commits), run_attrs=first or {})
+
+
+def _generated_value(ds, name):
+    """A generated run's values of *name*: an elastic run's loading tangent is its stiffness,
+    and nothing flows."""
+    if name in ds:
+        return ds[name].values
+    return ds["stiffness"].values if name == "loading_stiffness" else np.zeros(ds.sizes["force"])
 
 
 def merge_runs(study, paths) -> dict:
@@ -100,31 +161,19 @@ def merge_runs(study, paths) -> dict:
         raise MergeError(f"merge got {len(paths)} run files for {len(table)} runs of the config")
     groups = {}
     for layout in kind_layouts(study, table, paths):
-        kind, rows, axes, coords = layout.kind, layout.rows, layout.axes, layout.coords
-        shape = layout.shape + (study.forces[kind].count,)
-        plastic = any(row["hardness"] is not None for row, _ in rows)
+        kind, axes, coords = layout.kind, layout.axes, layout.coords
+        plastic = any(row["hardness"] is not None for row, _ in layout.rows)
         names = runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
-        data = {name: np.zeros(shape, dtype=runfile.VARIABLES[name].dtype) for name in names}
-        attrs_of, commits = {}, set()
-        for row, path in rows:
-            ds = read_run(path, job_settings(study, row))
-            idx = layout.index(row)
-            for name in names:
-                # an elastic run's loading tangent is its stiffness, and nothing flows
-                values = ds[name] if name in ds else (ds["stiffness"] if name == "loading_stiffness" else 0)
-                data[name][idx] = getattr(values, "values", values)
-                if name in ds:
-                    attrs_of.setdefault(name, {k: v for k, v in ds[name].attrs.items() if k != "coordinates"})
-            commits.add(ds.attrs.get("git_commit", "unknown"))
+        runs_of = gather(layout, lambda row: job_settings(study, row), {n: runfile.VARIABLES[n].dtype for n in names},
+                         value=_generated_value)
         dims = (*axes, "seed", "force")
-        ds = xr.Dataset(
-            {name: (dims, data[name], attrs_of.get(name, {})) for name in names},
+        groups[kind] = xr.Dataset(
+            {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names},
             coords={**{axis: (axis, coords[axis], runfile.AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
                     **_force_coords(study, kind)},
             attrs={"surface_kind": kind, "half_space": layout.half_space,
-                   "run_git_commits": provenance.canonical_json(sorted(commits))},
+                   "run_git_commits": provenance.canonical_json(runs_of.commits)},
         )
-        groups[kind] = ds
     return groups
 
 

@@ -4,7 +4,8 @@ Every NetCDF file the pipeline writes carries :func:`provenance_attrs`: the
 package version, the git commit of the checkout (when there is one), the
 resolved configuration and its hash, and the creation time.  Files are written
 through :func:`atomic_path`, so a failed or killed job never leaves a partial
-file under the final name.
+file under the final name; every NetCDF file through :func:`write_netcdf`, the one
+atomic NetCDF write.
 
 Only the standard library is imported here.
 """
@@ -27,6 +28,7 @@ __all__ = [
     "config_hash",
     "provenance_attrs",
     "atomic_path",
+    "write_netcdf",
 ]
 
 
@@ -136,3 +138,25 @@ def atomic_path(path: str | os.PathLike):
         with contextlib.suppress(FileNotFoundError):
             tmp.unlink()
         raise
+
+
+def write_netcdf(data, path: str | os.PathLike) -> None:
+    """Write one NetCDF4 file atomically (:func:`atomic_path`): the one NetCDF write of the study.
+
+    Parameters
+    ----------
+    data : xarray.Dataset or xarray.DataTree or callable
+        What to write: an xarray object (its ``to_netcdf``, engine ``netcdf4``), or a function
+        ``fill(nc)`` that fills an open, writable ``netCDF4.Dataset`` (format ``NETCDF4``) when the
+        file's variables are written one by one (:func:`roughcontact.study.runfile.write_run`).
+    path : str or os.PathLike
+        The final file; it appears only once the write has finished.
+    """
+    with atomic_path(path) as tmp:
+        if hasattr(data, "to_netcdf"):
+            data.to_netcdf(tmp, engine="netcdf4")
+        else:
+            import netCDF4
+
+            with netCDF4.Dataset(tmp, "w", format="NETCDF4") as nc:
+                data(nc)

@@ -15,7 +15,7 @@ from .axes import AXES
 
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "RETRACT_VARIABLES",
            "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
-           "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "write_stickiness_run"]
+           "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)
 TITLE = "roughcontact indentation run"
@@ -51,7 +51,7 @@ PLASTIC_VARIABLES = ("loading_stiffness", "plastic_cells")
 FORCE_ATTRS = {"long_name": "normal force F", "units": "e_star * length**2"}
 
 #: per-step variables of an adhesive run's retract path (dimension ``retract``,
-#: :mod:`roughcontact.study.adhesive`)
+#: :mod:`roughcontact.study.adhesion.run`)
 RETRACT_VARIABLES = {
     "retract_depth": Variable("f8", "approach from first touch along the retract path (displacement control)",
                               "length"),
@@ -94,6 +94,41 @@ STICKINESS_SCALARS = {
 #: the approach coordinate of a stickiness run
 APPROACH_ATTRS = {"long_name": "step of the loading path", "units": "1"}
 
+@dataclasses.dataclass(frozen=True)
+class RunFileSpec:
+    """What the run file of one job must be (:func:`roughcontact.study.io.read_run` checks it):
+    each job record gives its own (``JobSettings.file_spec``, ``StickinessRun.file_spec``,
+    ``MeasuredJob.file_spec``).
+
+    Attributes
+    ----------
+    title : str
+        The ``title`` attribute (:data:`TITLE`, :data:`STICKINESS_TITLE`).
+    variables : tuple of str
+        Variables the file must hold.
+    dims : tuple of str
+        Its dimensions, exactly.
+    config : dict
+        The job's settings record: the file's ``config_hash`` must be its hash.
+    scalars : dict
+        ``{name: value}`` scalar variables the file must hold with these values (a generated
+        run's H, R, h_rms and seed, named by its path).
+    force_variable : str or None
+        The variable holding the load path (``force``; a measured run: ``force_normalized``);
+        ``None``: no load path to check (a stickiness run).
+    forces : numpy.ndarray or None
+        Its expected values (the file's units), equal to 1e-12 relative.
+    """
+
+    title: str
+    variables: tuple
+    dims: tuple
+    config: dict
+    scalars: dict = dataclasses.field(default_factory=dict)
+    force_variable: str | None = None
+    forces: np.ndarray | None = None
+
+
 #: scalar variables of a run file: (NetCDF type, long name, units)
 SCALARS = {
     "hurst": ("f8", "Hurst exponent H", "1"),
@@ -111,19 +146,38 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def write_run(path, out: dict, *, attrs: dict, stiffness_method: str, units: dict | None = None,
-              scalars: dict | None = None, extra: dict | None = None, coordinates: tuple = ()) -> None:
-    """Write one run file (NetCDF4, atomic: temp file, then rename): the one run-file format of
-    generated and measured runs.
+def _put(nc, name: str, dtype: str, dims: tuple, values, attrs: dict) -> None:
+    """One variable *name* of the open NetCDF file *nc*: its type, dimensions, values and attributes."""
+    var = nc.createVariable(name, dtype, dims)
+    if dims:
+        var[:] = values
+    else:
+        var.assignValue(values)
+    var.setncatts(attrs)
+
+
+def _meta(meta: Variable) -> dict:
+    return {"long_name": meta.long_name, "units": meta.units}
+
+
+def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = None, units: dict | None = None,
+              scalars: dict | None = None, extra: dict | None = None, coordinates: tuple = (),
+              kind: str = "indentation") -> None:
+    """Write one run file (NetCDF4, atomic: :func:`roughcontact.study.provenance.write_netcdf`): the
+    one run-file writer of generated, adhesive, measured and stickiness runs.
 
     Parameters
     ----------
     out : dict
-        ``force`` and the per-load arrays of :data:`VARIABLES` (``force`` in force units).
+        An indentation run: ``force`` and the per-load arrays of :data:`VARIABLES` (``force`` in
+        force units; an adhesive run's :data:`RETRACT_VARIABLES` and :data:`PULL_OFF_VARIABLES`
+        too). A stickiness run: the arrays of :data:`STICKINESS_VARIABLES` (one per approach) and
+        the scalars of :data:`STICKINESS_SCALARS`.
     attrs : dict
-        Global attributes (provenance, settings); ``title`` is set to :data:`TITLE`.
-    stiffness_method : str
-        How the stiffness was computed (named in its ``long_name``).
+        Global attributes (provenance, settings); ``title`` is set to :data:`TITLE` (a stickiness
+        run: :data:`STICKINESS_TITLE`).
+    stiffness_method : str, optional
+        How the stiffness was computed (named in its ``long_name``; indentation runs).
     units : dict, optional
         ``{name: (scale, units)}``: write ``out[name] * scale`` with these CF units instead of the
         study's normalised units (a measured run: ``force`` in N, ``stiffness`` in N/m, lengths
@@ -134,66 +188,54 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str, units: dic
         ``{name: (values, attrs)}`` further per-load variables (e.g. ``stiffness_normalized``).
     coordinates : tuple of str
         Names of *extra* per-load variables that are coordinates of the others (``force_normalized``).
+    kind : str
+        ``"indentation"`` (over ``force``) or ``"stickiness"`` (over ``approach``).
     """
-    import netCDF4
-
     from . import provenance
 
+    if kind == "stickiness":
+        def fill(nc) -> None:
+            """A stickiness run's attributes, its ``approach`` path and its scalars into *nc*."""
+            nc.setncatts({**attrs, "title": STICKINESS_TITLE})
+            count = len(out["force"])
+            nc.createDimension("approach", count)
+            _put(nc, "approach", "i8", ("approach",), np.arange(count), APPROACH_ATTRS)
+            for name, meta in STICKINESS_VARIABLES.items():
+                _put(nc, name, meta.dtype, ("approach",), np.asarray(out[name]).astype(meta.dtype), _meta(meta))
+            for name, meta in STICKINESS_SCALARS.items():
+                _put(nc, name, meta.dtype, (), np.asarray(out[name], dtype=meta.dtype), _meta(meta))
+
+        provenance.write_netcdf(fill, path)
+        return
+    if kind != "indentation":
+        raise ValueError(f"kind must be 'indentation' or 'stickiness', not {kind!r}")
     units = units or {}
     scalars = scalars or {}
     extra = extra or {}
     labels = " ".join((*scalars, *coordinates))
-    with provenance.atomic_path(path) as tmp:
-        with netCDF4.Dataset(tmp, "w", format="NETCDF4") as nc:
-            nc.setncatts({**attrs, "title": TITLE})
-            nc.createDimension("force", len(out["force"]))
-            scale, unit = units.get("force", (1.0, FORCE_ATTRS["units"]))
-            var = nc.createVariable("force", "f8", ("force",))
-            var[:] = out["force"] * scale
-            var.setncatts({**FORCE_ATTRS, "units": unit})
-            for name, value in scalars.items():
-                dtype, long, unit = SCALARS[name]
-                v = nc.createVariable(name, dtype, ())
-                v.assignValue(value)
-                v.setncatts({"long_name": long, "units": unit})
-            for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES if v in out)):
-                meta = VARIABLES[name]
-                scale, unit = units.get(name, (1.0, meta.units))
-                long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
-                v = nc.createVariable(name, meta.dtype, ("force",))
-                v[:] = out[name] * scale if scale != 1.0 else out[name]
-                v.setncatts({"long_name": long, "units": unit, **({"coordinates": labels} if labels else {})})
-            if "retract_force" in out:   # an adhesive run: its retract path and pull-off
-                nc.createDimension("retract", len(out["retract_force"]))
-                for name, meta in RETRACT_VARIABLES.items():
-                    v = nc.createVariable(name, meta.dtype, ("retract",))
-                    v[:] = out[name]
-                    v.setncatts({"long_name": meta.long_name, "units": meta.units})
-                for name, meta in PULL_OFF_VARIABLES.items():
-                    v = nc.createVariable(name, meta.dtype, ())
-                    v.assignValue(out[name])
-                    v.setncatts({"long_name": meta.long_name, "units": meta.units})
-            for name, (values, var_attrs) in extra.items():
-                v = nc.createVariable(name, "f8", ("force",))
-                v[:] = values
-                v.setncatts(var_attrs)
 
+    def fill(nc) -> None:
+        """The run file's attributes, dimensions and variables into the open file *nc*."""
+        nc.setncatts({**attrs, "title": TITLE})
+        nc.createDimension("force", len(out["force"]))
+        scale, unit = units.get("force", (1.0, FORCE_ATTRS["units"]))
+        _put(nc, "force", "f8", ("force",), out["force"] * scale, {**FORCE_ATTRS, "units": unit})
+        for name, value in scalars.items():
+            dtype, long, unit = SCALARS[name]
+            _put(nc, name, dtype, (), value, {"long_name": long, "units": unit})
+        for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES if v in out)):
+            meta = VARIABLES[name]
+            scale, unit = units.get(name, (1.0, meta.units))
+            long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
+            _put(nc, name, meta.dtype, ("force",), out[name] * scale if scale != 1.0 else out[name],
+                 {"long_name": long, "units": unit, **({"coordinates": labels} if labels else {})})
+        if "retract_force" in out:   # an adhesive run: its retract path and pull-off
+            nc.createDimension("retract", len(out["retract_force"]))
+            for name, meta in RETRACT_VARIABLES.items():
+                _put(nc, name, meta.dtype, ("retract",), out[name], _meta(meta))
+            for name, meta in PULL_OFF_VARIABLES.items():
+                _put(nc, name, meta.dtype, (), out[name], _meta(meta))
+        for name, (values, var_attrs) in extra.items():
+            _put(nc, name, "f8", ("force",), values, var_attrs)
 
-def write_stickiness_run(path, out: dict, *, attrs: dict) -> None:
-    """Write one stickiness run (NetCDF4, atomic): the arrays of :data:`STICKINESS_VARIABLES` over
-    ``approach`` and the scalars of :data:`STICKINESS_SCALARS` from *out*
-    (:func:`roughcontact.study.stickiness.stickiness_run`), with the global *attrs*."""
-    import xarray as xr
-
-    from . import provenance
-
-    data = {name: (("approach",), np.asarray(out[name]).astype(meta.dtype),
-                   {"long_name": meta.long_name, "units": meta.units})
-            for name, meta in STICKINESS_VARIABLES.items()}
-    data.update({name: ((), np.asarray(out[name], dtype=meta.dtype), {"long_name": meta.long_name,
-                                                                        "units": meta.units})
-                 for name, meta in STICKINESS_SCALARS.items()})
-    ds = xr.Dataset(data, coords={"approach": ("approach", np.arange(len(out["force"])), APPROACH_ATTRS)},
-                    attrs={**attrs, "title": STICKINESS_TITLE})
-    with provenance.atomic_path(path) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
+    provenance.write_netcdf(fill, path)

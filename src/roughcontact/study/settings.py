@@ -13,9 +13,10 @@ import math
 import numpy as np
 
 from ..bem import DEFAULT_MAXITER
-from . import axes
+from . import axes, runfile
 from .runs import parse_combo
 from .axes import kind_of
+from .defaults import solver_maxiter
 from .study_settings import StudySettings, force_grid
 
 __all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
@@ -136,6 +137,19 @@ class JobSettings:
             out["realization_of"] = self.realization_of
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
 
+    def file_spec(self) -> runfile.RunFileSpec:
+        """What this run's file must be (:func:`roughcontact.study.io.read_run`): the run file's
+        variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
+        H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
+        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+        dims = ("force",)
+        if self.work_of_adhesion > 0:
+            variables += (*runfile.RETRACT_VARIABLES, *runfile.PULL_OFF_VARIABLES)
+            dims = ("force", "retract")
+        return runfile.RunFileSpec(title=runfile.TITLE, variables=variables, dims=dims, config=self.record(),
+                                   scalars={name: getattr(self, name) for name in runfile.SCALARS},
+                                   force_variable="force", forces=self.forces())
+
     def describe(self) -> str:
         """One line naming the run, for logs and error messages."""
         r = "inf (flat, periodic)" if not math.isfinite(self.radius) else f"{self.radius:g}"
@@ -166,7 +180,7 @@ def job_settings(study, run: dict) -> JobSettings:
         n=study.grid.n, length=study.grid.length, e_star=study.e_star,
         force_from=rng.start, force_to=rng.stop, force_count=rng.count,
         tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
-        maxiter=DEFAULT_MAXITER if solver.maxiter is None else solver.maxiter, options=options_of(run),
+        maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
         realization_of=study.grid.realization_of)
 
 

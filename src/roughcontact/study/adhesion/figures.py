@@ -15,6 +15,7 @@ import math
 
 import numpy as np
 
+from ...models.adhesion import jkr_pull_off
 from ..plotting import pyplot, save_png
 from ..study_settings import StudySettings
 
@@ -43,7 +44,7 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path) -> 
             ax.plot(run["depth"].sel(seed=seed) / L, run["force"].values / (E * L**2), "-", color=color, lw=0.8)
             ax.plot(sub["retract_depth"].sel(seed=seed) / L, sub["retract_force"].sel(seed=seed) / (E * L**2), "--",
                     color=color, lw=0.8)
-        jkr = -1.5 * math.pi * combo["work_of_adhesion"] * combo["radius"] / (E * L**2)
+        jkr = jkr_pull_off(radius=combo["radius"], e_star=E, work_of_adhesion=combo["work_of_adhesion"])[0] / (E * L**2)
         ax.axhline(jkr, color="k", lw=0.8, ls=":", label="JKR −(3/2)πwR")
         ax.axhline(0, color="0.6", lw=0.5)
         ax.set(xlabel="approach d / L", ylabel="F / (E* L²)",

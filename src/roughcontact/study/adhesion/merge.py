@@ -25,10 +25,10 @@ import math
 import numpy as np
 
 from ...errors import MergeError
+from ...models.adhesion import jkr_pull_off
 from ...models.rough_adhesion import johnson_rough_sphere_parameter
 from .. import provenance, runfile, runs
-from ..io import read_run
-from ..merge import kind_layouts
+from ..merge import gather, kind_layouts
 from ..settings import job_settings
 from ..statistics import bootstrap_indices, interval
 from ..study_settings import StudySettings
@@ -53,17 +53,10 @@ def merge_adhesion(study, paths) -> dict:
     variables_of = {**runfile.RETRACT_VARIABLES, **runfile.PULL_OFF_VARIABLES}
     groups = {}
     for layout in kind_layouts(study, table, paths):
-        data, count = {}, None
-        for row, path in layout.rows:
-            ds = read_run(path, job_settings(study, row))
-            if "retract_force" not in ds:
-                raise MergeError(f"{path}: an adhesive run without its retract path; delete it and rerun snakemake")
-            count = ds.sizes["retract"] if count is None else count
-            for name, meta in variables_of.items():
-                values = ds[name].values
-                if name not in data:
-                    data[name] = np.zeros(layout.shape + values.shape, dtype=meta.dtype)
-                data[name][layout.index(row)] = values
+        # each an adhesive run: read_run checks its retract path and pull-off
+        data = gather(layout, lambda row: job_settings(study, row),
+                      {name: meta.dtype for name, meta in variables_of.items()}).data
+        count = data["retract_force"].shape[-1]
         dims = (*layout.axes, "seed")
         variables = {name: ((*dims, "retract") if name in runfile.RETRACT_VARIABLES else dims, values,
                             {"long_name": variables_of[name].long_name, "units": variables_of[name].units})
@@ -98,8 +91,8 @@ def pull_off_table(groups: dict, study):
             row = {"kind": kind, **combo, "pull_off": mean, "pull_off_ci_low": low, "pull_off_ci_high": high,
                    "sticky_fraction": float(np.mean(force < 0)), "n_seeds": int(force.size)}
             if math.isfinite(radius):
-                jkr = -1.5 * math.pi * w * radius / (E * L**2)
-                a_jkr = (9 * math.pi * w * radius**2 / (8 * E)) ** (1 / 3)
+                jkr, a_jkr = jkr_pull_off(radius=radius, e_star=E, work_of_adhesion=w)
+                jkr /= E * L**2
                 cells = ds["retract_contact_cells"].isel({**dict(zip(axes, position)), "retract": 0}).values
                 preload = float(np.mean(np.sqrt(cells / math.pi))) * (L / n)
                 row.update(pull_off_jkr=jkr, pull_off_ratio=mean / jkr, pull_off_ratio_ci_low=high / jkr,

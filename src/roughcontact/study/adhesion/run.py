@@ -10,7 +10,7 @@ largest load's contact is wider than JKR's pull-off radius ``a³ = 9πwR²/(8E*)
 largest load above ``(9/4)πwR``); ``pull_off.csv`` reports the ratio of the two
 (``preload_radius_ratio``).
 
-1. **Loading**, force-controlled, to the study's loads (:func:`roughcontact.bem.adhesive_force_path`,
+1. **Loading**, force-controlled, to the study's loads (:func:`roughcontact.bem.adhesion.adhesive_force_path`,
    approach steps of :data:`LOAD_STEPS` per ``d_ref``, the smooth body's approach at the largest
    load plus ``3 h_rms``): per load the approach, the contact cells and area and the stiffness
    ``k = dF/dd`` of the contact set held fixed (the flat-punch stiffness of the contact,
@@ -39,6 +39,8 @@ from ...bem import adhesion
 from ...bem.punch import contact_stiffness
 from ...errors import ConvergenceError, IndentError
 from ...models.rough_adhesion import jkr_critical_approach
+from ..path import LoadPath
+from ..defaults import capped_tol
 
 __all__ = ["LOAD_STEPS", "RETRACT_STEPS", "RETRACT_REACH", "REFINE", "adhesive_run"]
 
@@ -56,7 +58,13 @@ REFINE = 16
 
 def _reference_approach(s) -> float:
     """``d_ref``: Hertz's approach at the largest load (a sphere; ``a³ = 3FR/(4E*)``, ``d = a²/R``)
-    plus three rms heights; a flat surface: six rms heights."""
+    plus three rms heights; a flat surface: six rms heights.
+
+    Written here, not as ``a = k/(2E*)`` of :func:`roughcontact.models.paper.hertz_stiffness`:
+    that is the same radius in exact arithmetic but differs in the last bit, and ``d_ref`` sets the
+    approach steps of the loading, so it would change every adhesive run's numbers (measured
+    2026-11-27: the retract force of a rough 65² sphere by 7e-9 relative, its pull-off by 9e-14)
+    and invalidate the finished runs' results."""
     if s.kind == "flat":
         return 6.0 * s.h_rms
     a = (3.0 * s.forces()[-1] * s.radius / (4.0 * s.e_star)) ** (1.0 / 3.0)
@@ -71,21 +79,20 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
     solve does not converge or the contact comes off while loading."""
     w, E, L = float(s.work_of_adhesion), s.e_star, s.length
     forces = s.forces()
-    common = dict(length=L, e_star=E, work_of_adhesion=w, periodic=s.periodic, tol=min(s.tol, 1e-8),
+    common = dict(length=L, e_star=E, work_of_adhesion=w, periodic=s.periodic, tol=capped_tol(s.tol),
                   maxiter=s.maxiter)
     stiffness = np.zeros(forces.size)
 
-    def on_load(i, contact):
+    def record(i, contact) -> str:   # a loading state: the flat-punch stiffness of its contact set
         stiffness[i] = contact_stiffness(contact, length=L, e_star=E, periodic=s.periodic, tol=1e-10)
-        text = (f"load step {i + 1}/{forces.size}: F/(E*L^2) = {forces[i] / (E * L**2):.3e}, "
-                f"contact cells = {int(np.count_nonzero(contact))}, k/(E*L) = {stiffness[i] / (E * L):.4e}")
-        logger.info("%s: %s", name, text)
-        if progress is not None:
-            progress(i + 1, forces.size, text)
+        return (f"F/(E*L^2) = {forces[i] / (E * L**2):.3e}, contact cells = {int(np.count_nonzero(contact))}, "
+                f"k/(E*L) = {stiffness[i] / (E * L):.4e}")
 
-    try:
+    follow = LoadPath(name, forces.size, record, progress=progress)
+    with follow.failing(ConvergenceError, lambda exc: f"indent {name}: the adhesive solve did not converge ({exc}); "
+                                                      "use more cells (grid.n) or loosen solver.tol"):
         loading = adhesion.adhesive_force_path(z, forces, step=_reference_approach(s) / LOAD_STEPS,
-                                               on_state=on_load, **common)
+                                               on_state=follow, **common)
         if loading.depth.size != forces.size:
             raise IndentError(f"indent {name}: the adhesive contact came off while loading; raise "
                               f"forces.{s.kind}.from")
@@ -93,18 +100,20 @@ def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:
         end = -d_max if s.kind == "flat" else -RETRACT_REACH * jkr_critical_approach(
             radius=s.radius, e_star=E, work_of_adhesion=w)
         retract = np.linspace(d_max, end, RETRACT_STEPS)
-        sets = []
-        path = adhesion.adhesive_path(z, np.r_[loading.depth, retract[1:]], **common,
-                                      on_state=lambda i, contact: sets.append(contact.copy()))
+        depths, sets = np.r_[loading.depth, retract[1:]], []
+
+        def keep(i, contact) -> str:   # a state of the path to pull-off: its contact set, to refine from
+            sets.append(contact.copy())
+            return f"d/L = {depths[i] / L:.4e}, contact cells = {int(np.count_nonzero(contact))}"
+
+        path = adhesion.adhesive_path(z, depths, **common, on_state=LoadPath(name, depths.size, keep,
+                                                                              what="retract path step"))
         first = loading.depth.size - 1                       # the retract path starts at d_max
         r_force, r_cells = path.force[first:], path.contact_cells[first:]
         j = int(np.argmin(r_force))
         lo, hi = max(j - 1, 0), min(j + 1, RETRACT_STEPS - 1)
         fine = np.linspace(retract[lo], retract[hi], 2 * REFINE + 1)
         refined = adhesion.adhesive_path(z, fine, **common, start=sets[first + lo])   # on from retract[lo]
-    except ConvergenceError as exc:
-        raise IndentError(f"indent {name}: the adhesive solve did not converge ({exc}); use more cells (grid.n) "
-                          f"or loosen solver.tol") from exc
     m = int(np.argmin(refined.force))
     better = refined.force[m] <= r_force[j]
     cell = (L / z.shape[0]) ** 2

@@ -9,7 +9,7 @@ Three jobs per measured surface (``workflow/rules/measured.smk``):
 * :func:`run_job`: one load path of one tile of a scan, or of one seed of a spectrum
   (:func:`roughcontact.surfaces.surface_from_psd` on the grid ``grid.n``, ``grid.length``), for
   one radius;
-* :func:`merge_surface`: the runs of one surface, one group per kind (``sphere``: dims
+* :func:`roughcontact.study.measured.merge.merge_surface`: the runs of one surface, one group per kind (``sphere``: dims
   ``radius, tile|seed, force``; ``flat``: ``tile|seed, force``), with the bootstrap interval of
   the mean stiffness over the tiles (or seeds), CF ``units`` and provenance.
 
@@ -36,16 +36,17 @@ import os
 
 import numpy as np
 
-from ... import bem, surfaces
+from ... import surfaces
 from ...errors import IndentError, InputFileError
 from ...surfaces.bodies import paraboloid
-from .. import provenance, runfile, statistics
+from .. import provenance, runfile
 from .config import LENGTH_UNITS, plain_unit, to_metres, to_newtons, to_pascals
 from ..runs import force_grid, kind_of
-from ..study_settings import StudySettings, TopographyInput, ZetaFitSettings
+from ..defaults import solver_maxiter
+from ..study_settings import StudySettings, TopographyInput
 
-__all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job",
-           "merge_surface", "run_order", "sha256"]
+__all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job", "run_order",
+           "sha256"]
 
 logger = logging.getLogger(__name__)
 
@@ -111,8 +112,7 @@ def prepare_surface(entry, output, *, length_unit: str, tile: int | None) -> Non
                                   "units": study_unit})},
                     coords={"x": ("x", x, {"units": study_unit}), "y": ("y", x, {"units": study_unit})},
                     attrs=attrs)
-    with provenance.atomic_path(output) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
+    provenance.write_netcdf(ds, output)
     logger.info("%s: %d x %d cells of %g %s, %d tiles of %d", entry.name, n, n,
                 scan.cell_size * factor, study_unit, (n // tile) ** 2, tile)
 
@@ -189,6 +189,14 @@ class MeasuredJob:
     def describe(self) -> str:
         return f"{self.source} {self.name}, {self.ensemble} {self.index}, R = {self.radius:g} {self.length_unit}"
 
+    def file_spec(self) -> runfile.RunFileSpec:
+        """What this run's file must be (:func:`roughcontact.study.io.read_run`): the run file's
+        variables over ``force`` with ``force_normalized``, the ``config_hash`` of the job and
+        its normalised force grid ``F/(E* L²)``."""
+        return runfile.RunFileSpec(title=runfile.TITLE, variables=(*runfile.RUN_VARIABLES, "force", "force_normalized"),
+                                   dims=("force",), config=dataclasses.asdict(self), force_variable="force_normalized",
+                                   forces=force_grid(self.force_from, self.force_to, self.force_count))
+
 
 def job_of(study, source: str, name: str, radius: float, index: int, *, force_unit: str = "N") -> MeasuredJob:
     """The :class:`MeasuredJob` of one (surface, radius, tile or seed) of the study
@@ -204,7 +212,7 @@ def job_of(study, source: str, name: str, radius: float, index: int, *, force_un
                        e_star=study.e_star, length_unit=study.units.length,
                        pressure_unit=study.units.e_star, force_from=rng.start,
                        force_to=rng.stop, force_count=rng.count, tol=solver.tol,
-                       maxiter=bem.DEFAULT_MAXITER if solver.maxiter is None else solver.maxiter,
+                       maxiter=solver_maxiter(solver.maxiter),
                        stiffness_method=solver.stiffness, rel_step=solver.rel_step,
                        force_unit=plain_unit(force_unit), **extra)
 
@@ -249,17 +257,15 @@ def run_job(job: MeasuredJob, source_file, output) -> dict:
     Raises :class:`~roughcontact.errors.IndentError` when a body's contact reaches the outer
     ring of cells, or a solve does not converge.
     """
-    from ..indent import PathSettings, solve_load_path
+    from ..indent import path_settings, solve_load_path
 
     z, length, periodic = job_heights(job, source_file)
     e = job.e_star
     normalized = force_grid(job.force_from, job.force_to, job.force_count)
     forces = normalized * e * length**2
     where = "the scan's edge" if job.source == "topography" else "the grid's edge"
-    settings = PathSettings(
-        length=length, e_star=e, periodic=periodic, tol=job.tol, maxiter=job.maxiter,
-        stiffness_method=job.stiffness_method, rel_step=job.rel_step, name=job.describe(),
-        force_key=f"forces.{job.kind}.to",
+    settings = path_settings(
+        job, length=length, periodic=periodic,
         edge_hint=f"use a smaller radius or larger tiles (loads whose contact would reach {where})",
         edge_contact=job.kind == "flat" and not periodic)   # a flat free tile is a rough punch of side L
     scale_f, scale_k = _scales(job)
@@ -300,79 +306,6 @@ def _half_space(job: MeasuredJob) -> str:
     if job.source == "spectrum" and job.kind == "flat":
         return "periodic"
     return "free (non-periodic)" + (", rough punch of the tile's side" if job.kind == "flat" else "")
-
-
-def merge_surface(study, source: str, name: str, run_files, output, surface_file=None) -> None:
-    """Merge the runs of one surface into *output* (NetCDF, one group per kind, atomic).
-
-    *run_files*: paths whose order is :func:`run_order` of the same arguments. Each group
-    holds the per-run variables over ``(radius,) tile|seed, force`` and, over ``(radius,)
-    force``, ``k_mean`` with the percentile bootstrap interval (``fit.zeta.bootstrap``
-    resamples of the tiles or seeds, level ``fit.zeta.confidence``) as ``k_ci_low``,
-    ``k_ci_high`` (N/m; NaN with one tile).
-    """
-    import xarray as xr
-
-    from ..io import write_groups
-
-    study = StudySettings.of(study)
-    runs = [xr.load_dataset(p, engine="netcdf4") for p in run_files]
-    order = run_order(study, source, name, len(runs) // max(1, len(study.radius)))
-    ens = "tile" if source == "topography" else "seed"
-    groups = {}
-    for kind in ("sphere", "flat"):
-        radii = [r for r in study.radius if kind_of(r) == kind]
-        if not radii:
-            continue
-        members = sorted({i for r, i in order if kind_of(r) == kind})
-        stacked = []
-        for radius in radii:
-            parts = [runs[order.index((radius, i))] for i in members]
-            stacked.append(xr.concat(parts, dim=xr.DataArray(members, dims=ens, name=ens),
-                                     coords="minimal", combine_attrs="override"))
-        ds = xr.concat(stacked, dim=xr.DataArray(radii, dims="radius", name="radius"), coords="minimal",
-                       combine_attrs="override") if kind == "sphere" else stacked[0]
-        ds = ds.assign_coords(force=ds["force"].isel({d: 0 for d in ds["force"].dims if d != "force"}, drop=True))
-        ds[ens].attrs.update(long_name="tile of the scan (row by row)" if ens == "tile" else "random seed",
-                             units="1")
-        if kind == "sphere":
-            ds["radius"].attrs.update(long_name="sphere radius R", units=study.units.length)
-        _add_interval(ds, ens, study.fit.zeta)
-        ds.attrs = {"surface_kind": kind, "half_space": runs[order.index((radii[0], members[0]))].attrs["half_space"],
-                    "run_git_commits": provenance.canonical_json(sorted({r.attrs["git_commit"] for r in runs}))}
-        groups[kind] = ds
-    extra = {}
-    if surface_file is not None:
-        _, _, attrs = read_surface(surface_file)
-        extra = {k: v for k, v in attrs.items() if k.startswith(("scan_", "file", "tile", "length", "name"))}
-    entry = study.topography_entry(name) if source == "topography" else study.spectrum_entry(name)
-    recorded = {"file": os.path.basename(entry.file)} | extra
-    if "file_sha256" not in recorded:  # the surface file records the scan's hash when there is one
-        recorded["file_sha256"] = sha256(entry.file)
-    attrs = provenance.provenance_attrs(
-        config=study.config, title=f"roughcontact measured study: {source} {name}", source=source, **recorded,
-        e_star=study.e_star, e_star_units=study.units.e_star, units_length=study.units.length)
-    write_groups(output, groups, attrs)
-
-
-def _add_interval(ds, ens: str, fit: ZetaFitSettings) -> None:
-    k = ds["stiffness"]
-    ds["k_mean"] = k.mean(ens).assign_attrs(long_name=f"mean stiffness over the {ens}s", units="N m-1")
-    count = ds.sizes[ens]
-    values = np.moveaxis(k.values, k.dims.index(ens), -1)
-    low = np.full(values.shape[:-1], np.nan)
-    high = np.full(values.shape[:-1], np.nan)
-    if count > 1:
-        idx = statistics.bootstrap_indices(count, fit.bootstrap)
-        means = values[..., idx].mean(axis=-1)          # (..., resamples)
-        for pos in np.ndindex(values.shape[:-1]):
-            low[pos], high[pos] = statistics.interval(means[pos], fit.confidence)
-    dims = [d for d in k.dims if d != ens]
-    level = f"{100 * fit.confidence:g} %"
-    ds["k_ci_low"] = (dims, low, {"long_name": f"{level} bootstrap interval of k_mean over the {ens}s, low",
-                                  "units": "N m-1"})
-    ds["k_ci_high"] = (dims, high, {"long_name": f"{level} bootstrap interval of k_mean over the {ens}s, high",
-                                    "units": "N m-1"})
 
 
 def run_order(study, source: str, name: str, count: int) -> list[tuple[float, int]]:

@@ -18,6 +18,6 @@ seeds (:mod:`roughcontact.study.stickiness.merge`) that claim (q) reads. The swe
 Imports the core and numpy only; xarray and matplotlib where they are used.
 """
 from .run import loading_slope, stickiness_run
-from .settings import StickinessJob, StickinessSettings
+from .settings import StickinessRun, StickinessSettings
 
-__all__ = ["StickinessJob", "StickinessSettings", "loading_slope", "stickiness_run"]
+__all__ = ["StickinessRun", "StickinessSettings", "loading_slope", "stickiness_run"]

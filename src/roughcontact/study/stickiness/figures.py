@@ -18,13 +18,14 @@ __all__ = ["KAPPA", "run_stickiness_figures"]
 KAPPA = 2.0
 
 
-def run_stickiness_figures(cfg, run_files, out_loading) -> None:
+def run_stickiness_figures(sweep, run_files, out_loading) -> None:
     """``stickiness_figures`` rule: the stickiness run files (one per
-    :meth:`~.settings.StickinessSettings.jobs`, in its order) -> the load–area figure (module
-    docstring)."""
+    :meth:`~.settings.StickinessSettings.jobs`, in its order) of the *sweep* (a
+    :class:`~.settings.StickinessSettings`, the rule's ``params``, or a resolved configuration)
+    -> the load–area figure (module docstring)."""
     import xarray as xr
 
-    s = StickinessSettings.of(cfg)
+    s = StickinessSettings.of(sweep)
     plt = pyplot()
     runs = {}
     for job, path in zip(s.jobs(), run_files):

@@ -26,10 +26,11 @@ import numpy as np
 
 from ...errors import MergeError
 from .. import provenance, runfile
+from ..merge import KindLayout, gather
 from ..statistics import bootstrap_indices, interval
 from .settings import StickinessSettings
 
-__all__ = ["merge_stickiness", "stickiness_table", "threshold", "run_stickiness_merge"]
+__all__ = ["merge_stickiness", "stickiness_layout", "stickiness_table", "threshold", "run_stickiness_merge"]
 
 #: the number coordinate (hurst and seed: those of every merged file, runfile.AXIS_ATTRS)
 NUMBER_ATTRS = {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"}
@@ -37,26 +38,17 @@ NUMBER_ATTRS = {"long_name": "Pastewka & Robbins' number N of the sweep", "units
 
 def merge_stickiness(s: StickinessSettings, paths):
     """The scalars of the stickiness run files *paths* (one per :meth:`StickinessSettings.jobs`, in
-    its order) as one Dataset (module docstring). Raises :class:`~roughcontact.errors.MergeError`
-    naming a file that is not a stickiness run or not of the sweep's grid."""
+    its order) as one Dataset (module docstring). Each is read by
+    :func:`roughcontact.study.io.read_run` against its :class:`~.settings.StickinessRun`, which raises
+    :class:`~roughcontact.errors.MergeError` naming a file that is missing, not a stickiness run or
+    computed with other settings (its ``config_hash``)."""
     import xarray as xr
 
     jobs = s.jobs()
     if len(paths) != len(jobs):
         raise MergeError(f"the stickiness merge got {len(paths)} run files for {len(jobs)} runs")
-    shape = (len(s.hurst), len(s.number), s.seeds)
-    data = {}
-    for job, path in zip(jobs, paths):
-        with xr.open_dataset(path, engine="netcdf4") as ds:
-            if ds.attrs.get("title") != runfile.STICKINESS_TITLE:
-                raise MergeError(f"{path}: not a stickiness run (title {ds.attrs.get('title')!r}); delete it and "
-                                 "rerun snakemake")
-            if int(ds.attrs.get("grid_n", -1)) != s.n:
-                raise MergeError(f"{path}: a run on {ds.attrs.get('grid_n')}^2, the sweep has stickiness.n = "
-                                 f"{s.n}; delete it and rerun snakemake")
-            at = (s.hurst.index(job.hurst), s.number.index(job.number), job.seed)
-            for name, meta in runfile.STICKINESS_SCALARS.items():
-                data.setdefault(name, np.zeros(shape, dtype=meta.dtype))[at] = ds[name].values
+    data = gather(stickiness_layout(s, paths), lambda row: s.run(**row),
+                  {name: meta.dtype for name, meta in runfile.STICKINESS_SCALARS.items()}).data
     dims = ("hurst", "number", "seed")
     meta = runfile.STICKINESS_SCALARS
     return xr.Dataset({name: (dims, values, {"long_name": meta[name].long_name, "units": meta[name].units})
@@ -65,6 +57,16 @@ def merge_stickiness(s: StickinessSettings, paths):
                               "number": ("number", np.array(s.number), NUMBER_ATTRS),
                               "seed": ("seed", np.arange(s.seeds), runfile.AXIS_ATTRS["seed"])},
                       attrs={"grid_n": s.n, "area": s.area, "cutoff_cells": s.cutoff})
+
+
+def stickiness_layout(s: StickinessSettings, paths) -> KindLayout:
+    """The :class:`~roughcontact.study.merge.KindLayout` of the sweep's runs (one path of *paths*
+    per :meth:`StickinessSettings.jobs`, in its order): flat surfaces over ``hurst, number`` and
+    ``seed``, each row a dict of its run's ``hurst``, ``number`` and ``seed``."""
+    rows = [({"hurst": job.hurst, "number": job.number, "seed": job.seed}, path) for job, path in zip(s.jobs(), paths)]
+    return KindLayout(kind="flat", rows=rows, axes=("hurst", "number"),
+                      coords={"hurst": list(s.hurst), "number": list(s.number), "seed": list(range(s.seeds))},
+                      at={id(row): {"hurst": row["hurst"], "number": row["number"]} for row, _ in rows})
 
 
 def threshold(numbers, slopes) -> float:
@@ -107,15 +109,18 @@ def stickiness_table(ds, s: StickinessSettings):
     return pd.DataFrame(rows)
 
 
-def run_stickiness_merge(cfg, run_files, out_nc, out_csv) -> None:
-    """``stickiness`` rule: the stickiness run files -> ``stickiness.nc`` and ``stickiness.csv``."""
+def run_stickiness_merge(s, run_files, out_nc, out_csv) -> None:
+    """``stickiness`` rule: the stickiness run files -> ``stickiness.nc`` and ``stickiness.csv``.
+
+    *s*: the sweep (:class:`~.settings.StickinessSettings`, the rule's ``params``; a resolved
+    configuration is read with :meth:`~.settings.StickinessSettings.of`); the merged file's
+    provenance records :meth:`~.settings.StickinessSettings.record`."""
     from ..io import write_csv
 
-    s = StickinessSettings.of(cfg)
+    s = StickinessSettings.of(s)
     ds = merge_stickiness(s, list(run_files))
     ds.attrs.update(provenance.provenance_attrs(
-        config=getattr(cfg, "config", cfg), title="roughcontact stickiness runs: loading slopes F/A at the area A*",
+        config=s.record(), title="roughcontact stickiness runs: loading slopes F/A at the area A*",
         forces="e_star * length**2 (stickiness.csv: dF/dA in units of h'E*)"))
-    with provenance.atomic_path(out_nc) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4")
+    provenance.write_netcdf(ds, out_nc)
     write_csv(stickiness_table(ds, s), out_csv)

@@ -35,6 +35,7 @@ import numpy as np
 from ...bem import solve
 from ...bem.cohesive import cohesive_path
 from ...errors import ConvergenceError, IndentError
+from ..path import LoadPath
 from ...models.rough_adhesion import (pastewka_robbins_gap, pastewka_robbins_stickiness,
                                       pastewka_robbins_work_of_adhesion)
 from ...surfaces.moments import spectral_moments
@@ -83,15 +84,15 @@ class StickinessSurface:
     criterion: object
 
 
-def stickiness_surface(s, job) -> StickinessSurface:
-    """The surface of *job* (:class:`~.settings.StickinessJob`) in the sweep *s*
-    (:class:`~.settings.StickinessSettings`) and the interaction that gives it the job's number."""
-    z = self_affine(s.n, hurst=job.hurst, h_rms=1.0, length=s.length, seed=job.seed, cutoff=s.cutoff * s.length / s.n)
+def stickiness_surface(s) -> StickinessSurface:
+    """The surface of the run *s* (:class:`~.settings.StickinessRun`) and the interaction that
+    gives it the run's number."""
+    z = self_affine(s.n, hurst=s.hurst, h_rms=1.0, length=s.length, seed=s.seed, cutoff=s.cutoff * s.length / s.n)
     z *= s.rms_slope / math.sqrt(2.0 * spectral_moments(z, length=s.length).m2)
     moments = spectral_moments(z, length=s.length)
     slope, curvature = math.sqrt(2.0 * moments.m2), 0.5 * math.sqrt(8.0 * moments.m4 / 3.0)
     reach = s.range_ratio * pastewka_robbins_gap(rms_slope=slope, rms_curvature=curvature)
-    work = pastewka_robbins_work_of_adhesion(job.number, rms_slope=slope, rms_curvature=curvature,
+    work = pastewka_robbins_work_of_adhesion(s.number, rms_slope=slope, rms_curvature=curvature,
                                              interaction_range=reach, e_star=s.e_star)
     criterion = pastewka_robbins_stickiness(rms_slope=slope, rms_curvature=curvature, interaction_range=reach,
                                             e_star=s.e_star, work_of_adhesion=work)
@@ -111,14 +112,15 @@ def _area_approach(z, s) -> float:
     raise IndentError(f"stickiness: no load brings the contact to stickiness.area = {s.area:g} of the grid")
 
 
-def stickiness_run(s, job) -> dict:
-    """The loading path of one stickiness run (module docstring): a dict of the arrays ``depth``,
+def stickiness_run(s) -> dict:
+    """The loading path of the stickiness run *s* (:class:`~.settings.StickinessRun`; module
+    docstring): a dict of the arrays ``depth``,
     ``force``, ``contact_cells``, ``zone_cells`` (one per approach) and the scalars of
     :data:`roughcontact.study.runfile.STICKINESS_SCALARS`. Raises
     :class:`~roughcontact.errors.IndentError` naming the run when a solve does not converge; each
     approach is logged."""
-    name = f"stickiness {job.combination} seed {job.seed}"
-    surface = stickiness_surface(s, job)
+    name = s.describe()
+    surface = stickiness_surface(s)
     z, reach, work, criterion = (surface.heights, surface.interaction_range, surface.work_of_adhesion,
                                  surface.criterion)
     top = _area_approach(z, s) + reach
@@ -129,20 +131,16 @@ def stickiness_run(s, job) -> dict:
                 "N = %.4g; %d approaches %.4g ... %.4g", name, s.rms_slope, surface.rms_curvature,
                 criterion.g0, criterion.g0 * s.n / s.length, reach, work, work / reach / s.e_star, criterion.number,
                 s.steps, depths[0], depths[-1])
-    count = {"i": 0}
 
-    def on_state(i, contact, zone):
-        count["i"] = i + 1
-        logger.info("%s: approach %d/%d: contact %.4f, zone %.4f of the grid", name, i + 1, s.steps,
-                    np.count_nonzero(contact) / cells, np.count_nonzero(zone) / cells)
+    def record(i, contact, zone) -> str:   # an approach: its contact and zone, reported (the path keeps them)
+        return f"contact {np.count_nonzero(contact) / cells:.4f}, zone {np.count_nonzero(zone) / cells:.4f} of the grid"
 
-    try:
+    follow = LoadPath(name, s.steps, record, what="approach")
+    with follow.failing(ConvergenceError, lambda exc: f"{name}: the cohesive solve did not converge at {follow.where} "
+                                                      f"({exc}); lower stickiness.area or use more cells (stickiness.n)"):
         path = cohesive_path(z, depths, length=s.length, e_star=s.e_star, work_of_adhesion=work,
-                             cohesive_stress=work / reach, periodic=True, tol=s.tol, on_state=on_state,
+                             cohesive_stress=work / reach, periodic=True, tol=s.tol, on_state=follow,
                              until=lambda i, force, contact: contact > s.area * cells)
-    except ConvergenceError as exc:
-        raise IndentError(f"{name}: the cohesive solve did not converge at approach {count['i'] + 1}/{s.steps} "
-                          f"({exc}); lower stickiness.area or use more cells (stickiness.n)") from exc
     area = path.contact_cells / cells
     slope = loading_slope(path.force / scale, area, at=s.area)
     logger.info("%s: F/A = %.4g h'E* at A = %g L^2 (%d approaches with 0 < A <= %g L^2)", name, slope, s.area,
@@ -156,17 +154,16 @@ def stickiness_run(s, job) -> dict:
     }
 
 
-def run_stickiness_job(cfg, job, output) -> dict:
-    """``stickiness_run`` rule: the run of *job* in the sweep of the resolved configuration *cfg*
-    (:class:`~.settings.StickinessSettings`) -> its run file *output* (NetCDF, atomic, with
-    provenance; :func:`roughcontact.study.runfile.write_stickiness_run`)."""
+def run_stickiness_job(s, output) -> dict:
+    """``stickiness_run`` rule: the run *s* (:class:`~.settings.StickinessRun`, the rule's
+    ``params``) -> its run file *output* (NetCDF, atomic; its provenance records *s*:
+    ``config`` is :meth:`~.settings.StickinessRun.record`, ``config_hash`` its hash;
+    :func:`roughcontact.study.runfile.write_run`)."""
     from .. import provenance, runfile
-    from .settings import StickinessSettings
 
-    s = StickinessSettings.of(cfg)
-    out = stickiness_run(s, job)
-    runfile.write_stickiness_run(output, out, attrs=provenance.provenance_attrs(
-        config=getattr(cfg, "config", cfg), hurst=job.hurst, number=job.number, seed=job.seed, grid_n=s.n, grid_length=s.length,
+    out = stickiness_run(s)
+    runfile.write_run(output, out, kind="stickiness", attrs=provenance.provenance_attrs(
+        config=s.record(), hurst=s.hurst, number=s.number, seed=s.seed, grid_n=s.n, grid_length=s.length,
         e_star=s.e_star, periodic=1, cutoff_cells=s.cutoff, area=s.area, solver_tol=s.tol,
         interaction="Maugis-Dugdale (roughcontact.bem.cohesive)",
         reference="L. Pastewka and M. O. Robbins, PNAS 111 (2014) 3298 (doi:10.1073/pnas.1320846111)"))

@@ -4,21 +4,78 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 
-__all__ = ["StickinessJob", "StickinessSettings"]
+from ..defaults import capped_tol
+
+__all__ = ["StickinessRun", "StickinessSettings"]
 
 
 @dataclasses.dataclass(frozen=True)
-class StickinessJob:
-    """One stickiness run: a surface (``hurst``, ``seed``) at one Pastewka–Robbins number."""
+class StickinessRun:
+    """The resolved settings of one stickiness run: everything it depends on and nothing else.
+
+    The ``stickiness_run`` rule's ``params`` and the ``config`` (and ``config_hash``) its run file
+    records, so that another seed, number or Hurst exponent in the sweep, or a change of the
+    merge's interval (``fit.zeta``), reruns no finished run. Built by
+    :meth:`StickinessSettings.run`; the one record of a stickiness run (its path, its job, its file).
+
+    Attributes
+    ----------
+    hurst, number, seed :
+        The run: Hurst exponent, Pastewka–Robbins number, seed of the surface.
+    n : int
+        Grid points per side (periodic).
+    length, e_star : float
+        Side ``L`` of the surface (length) and ``E*`` (the study's modulus unit).
+    rms_slope : float
+        ``h′`` of the surface (dimensionless).
+    cutoff : float
+        Short-wavelength cutoff in cells.
+    range_ratio : float
+        ``Δr/g₀`` (dimensionless).
+    area : float
+        Contact fraction up to which the surface is loaded.
+    steps : int
+        Approaches of the loading path.
+    tol : float
+        Relative tolerance of every solve (:func:`roughcontact.study.defaults.capped_tol`).
+    """
 
     hurst: float
     number: float
     seed: int
+    n: int
+    length: float
+    e_star: float
+    rms_slope: float
+    cutoff: float
+    range_ratio: float
+    area: float
+    steps: int
+    tol: float
 
     @property
     def combination(self) -> str:
         """The name of its (H, N) combination in paths, e.g. ``H0.8_N0.5``."""
         return f"H{self.hurst:g}_N{self.number:g}"
+
+    def record(self) -> dict:
+        """The settings as a flat mapping of plain values: the run file's ``config`` and what its
+        ``config_hash`` is made of."""
+        return dataclasses.asdict(self)
+
+    def describe(self) -> str:
+        """The run as logs and error messages name it."""
+        return f"stickiness {self.combination} seed {self.seed}"
+
+    def file_spec(self):
+        """What this run's file must be (:class:`roughcontact.study.runfile.RunFileSpec`, checked by
+        :func:`roughcontact.study.io.read_run`): the loading path over ``approach``, the run's
+        scalars and the ``config_hash`` of :meth:`record`."""
+        from .. import runfile
+
+        return runfile.RunFileSpec(title=runfile.STICKINESS_TITLE,
+                                   variables=(*runfile.STICKINESS_VARIABLES, *runfile.STICKINESS_SCALARS),
+                                   dims=("approach",), config=self.record())
 
 
 @dataclasses.dataclass(frozen=True)
@@ -46,7 +103,8 @@ class StickinessSettings:
     steps : int
         Approaches of a loading path.
     tol, confidence, bootstrap :
-        The solver's tolerance (``solver.tol``, at most 1e-8) and the interval of the merged table
+        The solver's tolerance (``solver.tol``, capped by
+        :func:`~roughcontact.study.defaults.capped_tol`) and the interval of the merged table
         (``fit.zeta.confidence``, ``fit.zeta.bootstrap``).
     """
 
@@ -68,8 +126,11 @@ class StickinessSettings:
     @classmethod
     def of(cls, cfg) -> "StickinessSettings | None":
         """The sweep of a resolved configuration (:func:`roughcontact.study.config.resolve_config`;
-        a :class:`~roughcontact.study.study_settings.StudySettings` has it as ``stickiness``);
-        ``None`` where it has no ``stickiness`` section."""
+        a :class:`~roughcontact.study.study_settings.StudySettings` has it as ``stickiness``; a
+        :class:`StickinessSettings` is returned unchanged); ``None`` where it has no
+        ``stickiness`` section."""
+        if isinstance(cfg, StickinessSettings):
+            return cfg
         if not isinstance(cfg, Mapping):
             return cfg.stickiness
         section = cfg.get("stickiness")
@@ -82,16 +143,28 @@ class StickinessSettings:
                    rms_slope=float(section["rms_slope"]), cutoff=float(section["cutoff"]),
                    range_ratio=float(section["range_ratio"]), seeds=int(section["seeds"]),
                    area=float(section["area"]), steps=int(section["steps"]),
-                   tol=min(float(cfg["solver"]["tol"]), 1e-8), confidence=float(zeta["confidence"]),
+                   tol=capped_tol(float(cfg["solver"]["tol"])), confidence=float(zeta["confidence"]),
                    bootstrap=int(zeta["bootstrap"]))
 
-    def jobs(self) -> list[StickinessJob]:
-        """Every run, by H, then N, then seed (the order the merge expects)."""
-        return [StickinessJob(h, x, s) for h in self.hurst for x in self.number for s in range(self.seeds)]
+    def run(self, *, hurst: float, number: float, seed: int) -> StickinessRun:
+        """The :class:`StickinessRun` of the surface (*hurst*, *seed*) at the number *number*: the
+        sweep's settings that one run depends on."""
+        return StickinessRun(hurst=float(hurst), number=float(number), seed=int(seed), n=self.n, length=self.length,
+                             e_star=self.e_star, rms_slope=self.rms_slope, cutoff=self.cutoff,
+                             range_ratio=self.range_ratio, area=self.area, steps=self.steps, tol=self.tol)
 
-    def job(self, combination: str, seed) -> StickinessJob:
-        """The run of a path's *combination* (``H0.8_N0.5``) and *seed*; ``KeyError`` naming the
-        combinations of the sweep for any other."""
+    def record(self) -> dict:
+        """The sweep as a flat mapping of plain values: the merged files' ``config`` and
+        ``config_hash`` (what the stickiness merge depends on, nothing else of the configuration)."""
+        return dataclasses.asdict(self)
+
+    def jobs(self) -> list[StickinessRun]:
+        """Every run, by H, then N, then seed (the order the merge expects)."""
+        return [self.run(hurst=h, number=x, seed=s) for h in self.hurst for x in self.number for s in range(self.seeds)]
+
+    def job(self, combination: str, seed) -> StickinessRun:
+        """The run of a path's *combination* (``H0.8_N0.5``) and *seed*: the ``stickiness_run``
+        rule's ``params``; ``KeyError`` naming the combinations of the sweep for any other."""
         for job in self.jobs():
             if job.combination == combination and job.seed == int(seed):
                 return job
