@@ -4,6 +4,7 @@ importable module prefix imports and the rest is found by ``getattr``. A renamed
 module or function then fails here, not in a reader's browser."""
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import re
 from pathlib import Path
@@ -12,18 +13,6 @@ import pytest
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "roughcontact"
 ROLE = re.compile(r":(?:mod|func|class|meth|attr|data|exc|obj):`~?(roughcontact(?:\.\w+)+)`")
-
-
-#: stale names in files this change may not touch (their owners fix them; each is a strict xfail,
-#: so the fix fails here until its entry is removed)
-KNOWN_STALE = {
-    ("roughcontact/cli.py", "roughcontact.study.study_settings.study_settings"):
-        "roughcontact.study.config.study_settings",
-    ("roughcontact/models/superposition.py", "roughcontact.surfaces.Spectrum.structure_function"):
-        "no Spectrum.structure_function",
-    ("roughcontact/study/axes.py", "roughcontact.study.adhesive"): "roughcontact.study.adhesion",
-    ("roughcontact/study/claims/__init__.py", "roughcontact.study.claims.verdicts"): "roughcontact.study.verdicts",
-}
 
 
 def _targets() -> list[tuple[str, str]]:
@@ -43,7 +32,8 @@ def _resolve(name: str):
         except ModuleNotFoundError:
             continue
         for attr in parts[cut:]:
-            obj = getattr(obj, attr)
+            fields = {f.name for f in dataclasses.fields(obj)} if dataclasses.is_dataclass(obj) else set()
+            obj = attr if attr in fields and not hasattr(obj, attr) else getattr(obj, attr)  # a field's default
         return obj
     raise ModuleNotFoundError(name)
 
@@ -56,12 +46,7 @@ def test_the_scan_finds_the_targets():
     assert len(targets) >= 100, len(targets)
 
 
-def _cases():
-    return [pytest.param(*case, marks=pytest.mark.xfail(strict=True, reason=f"stale: {KNOWN_STALE[case]}"))
-            if case in KNOWN_STALE else case for case in _targets()]
-
-
-@pytest.mark.parametrize("where, name", _cases())
+@pytest.mark.parametrize("where, name", _targets())
 def test_every_named_target_exists(where, name):
     try:
         _resolve(name)

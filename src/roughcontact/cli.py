@@ -250,7 +250,7 @@ def settings_from_args(args) -> JobSettings:
 
 def measured_study_from_args(args) -> StudySettings:
     """The settings of ``roughcontact measured``: what the pipeline resolves for a config of this
-    one scan and radius (:func:`roughcontact.study.study_settings.study_settings`; raises
+    one scan and radius (:func:`roughcontact.study.config.study_settings`; raises
     ConfigError). The scan is ``topography[0]``; forces and solver settings not given take the
     schema's defaults."""
     unit = plain_unit(args.unit)

@@ -25,7 +25,7 @@ it as a whole. Given the surface's spectrum, this module replaces h in eq. 12 by
     h_a = h · √(SF(λ)/SF_ref(λ)),   λ = min(w·a, L),
 
 ``SF(λ)`` the spectrum's structure function (the mean square height difference over a distance
-λ, :meth:`roughcontact.surfaces.Spectrum.structure_function`) and ``SF_ref`` that of the pure
+λ, :meth:`roughcontact.surfaces.spectra.Spectrum.structure_function`) and ``SF_ref`` that of the pure
 self-affine spectrum of the same H, h and grid. For the paper's spectrum ``h_a = h`` and this is
 eq. 16 exactly. Below a roll-off λ_r < L, ``h_a > h`` (at equal h_rms the power law then carries
 more of the variance); above it the structure function saturates at ``2 h_rms²`` while

@@ -1,6 +1,6 @@
 """The paper's claims as a table (``claims.csv``): one row per quantitative claim
 and per combination it is tested on, with the measured value, its 95 %
-interval, the paper's value, the verdict (:mod:`roughcontact.study.claims.verdicts`) and the sweep and
+interval, the paper's value, the verdict (:mod:`roughcontact.study.statistics`) and the sweep and
 loads it rests on. Rows (a)–(f) of a combination off the paper's setting of an
 optional axis (:func:`roughcontact.study.axes.off_paper`; the body's exponent
 aside) keep their measured values but say ``untested`` and name the axis: the
