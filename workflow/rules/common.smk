@@ -14,6 +14,9 @@ os.environ.update(
 )
 
 from roughcontact.errors import ConfigError  # noqa: E402  (numpy only)
+from roughcontact.bem import (
+    SOLVER_VERSION,
+)  # noqa: E402  (a run reruns when it changes)
 from roughcontact.study import (
     config as rc_config,
     runs as study_runs,

@@ -17,6 +17,7 @@ rule indent:
         runtime=indent_runtime,  # minutes
     params:
         settings=lambda wc: study_settings.settings_from_wildcards(STUDY, wc),
+        solver_version=SOLVER_VERSION,  # bumped on purpose when results change
     script:
         "../scripts/indent.py"
 
@@ -40,5 +41,6 @@ rule indent_coarse:
         runtime=indent_runtime,  # minutes
     params:
         settings=lambda wc: study_settings.settings_from_wildcards(COARSE, wc),
+        solver_version=SOLVER_VERSION,  # bumped on purpose when results change
     script:
         "../scripts/indent.py"

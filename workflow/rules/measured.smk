@@ -37,6 +37,7 @@ rule measured_indent:
         job=lambda wc: study_measured.job_of(
             STUDY, "topography", wc.topo, float(wc.radius), int(wc.tile)
         ),
+        solver_version=SOLVER_VERSION,  # bumped on purpose when results change
     script:
         "../scripts/measured_indent.py"
 
@@ -76,6 +77,7 @@ rule spectrum_indent:
         job=lambda wc: study_measured.job_of(
             STUDY, "spectrum", wc.spec, float(wc.radius), int(wc.seed)
         ),
+        solver_version=SOLVER_VERSION,  # bumped on purpose when results change
     script:
         "../scripts/measured_indent.py"
 

@@ -18,6 +18,7 @@ rule stickiness_run:
     threads: 1
     params:
         run=stickiness_run_settings,
+        solver_version=SOLVER_VERSION,  # bumped on purpose when results change
     script:
         "../scripts/stickiness_run.py"
 
