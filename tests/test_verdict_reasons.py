@@ -86,7 +86,9 @@ def test_reason_of_a_known_untested_row(table, letter, because):
 def _stated_verdicts(text) -> set:
     """The verdict words (and the crossover's ``unresolved``) a free text states; ``error`` is left
     out, being also a common noun ("the method's error")."""
-    return set(re.findall(r"\b(consistent|differs|untested|unresolved)\b", str(text))) if isinstance(text, str) else set()
+    if not isinstance(text, str):
+        return set()
+    return set(re.findall(r"\b(consistent|differs|untested|unresolved)\b", text))
 
 
 def test_no_note_states_another_verdict(table):

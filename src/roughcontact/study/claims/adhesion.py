@@ -50,7 +50,8 @@ import math
 import numpy as np
 
 from ...models.rough_adhesion import STICKINESS_RANGE_LIMIT
-from ..statistics import NO_PREDICTION, NOT_SWEPT, OUT_OF_RANGE, UNRESOLVED, judge, split_verdict, untested, verdict_bound
+from ..statistics import (NO_PREDICTION, NOT_SWEPT, OUT_OF_RANGE, UNRESOLVED, judge, split_verdict, untested,
+                          verdict_bound)
 from .registry import Claim, register, row
 
 __all__ = ["SMOOTH", "SAMPLING_ALLOWANCE", "PRELOAD", "method_error"]
@@ -281,7 +282,8 @@ def _q(inputs):
                 verdict = untested(NO_PREDICTION, f"N = 1 is the criterion's threshold itself ({measured})")
             else:
                 predicted = r["number"] < 1.0
-                word, because, why = split_verdict(verdict_bound(0.0, low, high, side="below" if predicted else "above"))
+                side = "below" if predicted else "above"
+                word, because, why = split_verdict(verdict_bound(0.0, low, high, side=side))
                 text = f"predicted {'sticky' if predicted else 'not sticky'}; {measured}"
                 verdict = untested(because, f"{text} ({why})") if because else f"{word}: {text}"
             out.append(row("q", statement, r["loading_slope"], low, high, 0.0, verdict, sweep=sweep,
