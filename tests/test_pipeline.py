@@ -152,6 +152,27 @@ def test_claims_table(run):
     assert (radius_rows["reason"] == "one radius value only").all(), radius_rows["reason"]
 
 
+def test_claims_name_why_they_are_untested(run):
+    """claims.csv of the tiny preset: untested_because is a word of the vocabulary exactly on the untested rows."""
+    from roughcontact.study.statistics import UNTESTED_BECAUSE
+
+    work, _ = run
+    claims = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
+    named = claims["untested_because"].isin(UNTESTED_BECAUSE)
+    assert (named == (claims["verdict"] == "untested")).all(), claims[["claim", "verdict", "untested_because"]]
+
+
+def test_claims_notes_state_no_other_verdict(run):
+    """claims.csv of the tiny preset: no note states a verdict other than its row's (tests/test_verdict_reasons.py)."""
+    from test_verdict_reasons import _stated_verdicts
+
+    work, _ = run
+    claims = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])
+    bad = [(r["claim"], r["verdict"], r["note"]) for _, r in claims.iterrows()
+           if _stated_verdicts(r["note"]) - {r["verdict"]}]
+    assert not bad, bad
+
+
 def test_report_and_figures(run):
     work, cfg = run
     html = (work / "results/report.html").read_text(errors="replace")

@@ -1,7 +1,10 @@
 """The paper's claims as a table (``claims.csv``): one row per quantitative claim
 and per combination it is tested on, with the measured value, its 95 %
-interval, the paper's value, the verdict (:mod:`roughcontact.study.statistics`) and the sweep and
-loads it rests on. Rows (a)–(f) of a combination off the paper's setting of an
+interval, the paper's value, the verdict (:mod:`roughcontact.study.statistics`), why it is untested
+(``untested_because``, a word of :data:`roughcontact.study.statistics.UNTESTED_BECAUSE`, empty on the
+other rows) and the sweep and loads it rests on. A row's note says what its measured or paper value
+is and states no verdict: claim (b) with the fitted ζ and the slopes of eq. 16 itself ((d), (e))
+are rows of their own. Rows (a)–(f) of a combination off the paper's setting of an
 optional axis (:func:`roughcontact.study.axes.off_paper`; the body's exponent
 aside) keep their measured values but say ``untested`` and name the axis: the
 paper's equations are for an elastic, purely self-affine surface, and claims
@@ -111,9 +114,13 @@ def failed(table) -> list:
 CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
                "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
                "paper's value and the verdict: consistent (the paper's value lies inside the interval, or for a "
-               "bound the interval lies on the claimed side), differs (it is excluded), untested (the sweep "
-               "cannot decide it; the reason says why) or error (the claim's estimate failed; the reason is the "
-               "exception, the workflow's log names the claim). claims.csv holds every digit.")
+               "bound the interval lies on the claimed side), differs (it is excluded), untested (the claim is "
+               "not decided; untested_because names why: not swept, off the paper's setting, interval holds the "
+               "threshold, unresolved, outside the model's range or no prediction, and the reason gives the "
+               "detail) or error (the claim's estimate failed; the reason is the exception, the workflow's log "
+               "names the claim). The note says what the measured or paper value is; a second comparison (claim "
+               "(b) with the fitted zeta, the slopes of eq. 16 itself) is a row of its own. claims.csv holds "
+               "every digit.")
 
 
 def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
@@ -137,7 +144,8 @@ def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_
                              stickiness=pd.read_csv(stickiness_csv) if stickiness_csv else None)
     write_csv(table, out_csv)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
-                     first=("claim", "statement", "verdict", "measured", "ci_low", "ci_high", "paper_value", "reason"))
+                     first=("claim", "statement", "verdict", "untested_because", "measured", "ci_low", "ci_high",
+                            "paper_value", "reason"))
     log.info("claims:\n%s", table.to_string())
     if failed(table):
         log.warning("claims that failed (verdict error, the reason is the exception): %s", ", ".join(failed(table)))

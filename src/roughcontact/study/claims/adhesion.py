@@ -50,8 +50,8 @@ import math
 import numpy as np
 
 from ...models.rough_adhesion import STICKINESS_RANGE_LIMIT
-from ..statistics import verdict as stat_verdict
-from ..statistics import verdict_bound
+from ..statistics import (NO_PREDICTION, NOT_SWEPT, OUT_OF_RANGE, UNRESOLVED, judge, split_verdict, untested,
+                          verdict_bound)
 from .registry import Claim, register, row
 
 __all__ = ["SMOOTH", "SAMPLING_ALLOWANCE", "PRELOAD", "method_error"]
@@ -91,7 +91,7 @@ def _n(inputs):
     smooth = table[table["johnson_parameter"] <= SMOOTH] if len(table) else table
     if not len(smooth):
         return [row("n", statement, math.nan, math.nan, math.nan, 1.0,
-                    f"untested: no adhesive sphere with h_rms/delta_c <= {SMOOTH:g}")]
+                    untested(NOT_SWEPT, f"no adhesive sphere with h_rms/delta_c <= {SMOOTH:g}"))]
     out = []
     for _, r in smooth.iterrows():
         where = {a: r[a] for a in ("hurst", "radius", "h_rms", "work_of_adhesion")}
@@ -99,13 +99,14 @@ def _n(inputs):
         sweep = f"h_rms/delta_c = {r['johnson_parameter']:.3g}, {int(r['n_seeds'])} seeds"
         if not r["preload_radius_ratio"] >= PRELOAD:
             out.append(row("n", statement, r["pull_off_ratio"], r["pull_off_ratio_ci_low"], r["pull_off_ratio_ci_high"],
-                           1.0, f"untested: the preload's contact radius is {r['preload_radius_ratio']:.2f} of JKR's "
-                           f"pull-off radius (needs >= {PRELOAD:g}: raise forces.sphere.to)", sweep=sweep, **where))
+                           1.0, untested(NOT_SWEPT, f"the preload's contact radius is {r['preload_radius_ratio']:.2f} "
+                                         f"of JKR's pull-off radius (needs >= {PRELOAD:g}: raise forces.sphere.to)"),
+                           sweep=sweep, **where))
             continue
         if not math.isfinite(error):
             out.append(row("n", statement, r["pull_off_ratio"], r["pull_off_ratio_ci_low"], r["pull_off_ratio_ci_high"],
-                           1.0, f"untested: JKR's pull-off radius is {r['jkr_radius_cells']:.1f} cells (the detachment "
-                           "criterion needs >= 10)", sweep=sweep, **where))
+                           1.0, untested(UNRESOLVED, f"JKR's pull-off radius is {r['jkr_radius_cells']:.1f} cells (the "
+                                         "detachment criterion needs >= 10)"), sweep=sweep, **where))
             continue
         expected = 1.0 + error
         worst = max(abs(r[c] - expected) for c in ("pull_off_ratio", "pull_off_ratio_ci_low", "pull_off_ratio_ci_high")
@@ -201,7 +202,7 @@ def _o(inputs):
     statement = "the rough pull-off / JKR's collapses on Johnson's h_rms/delta_c (Fuller & Tabor)"
     table = _spheres(inputs.adhesion)
     if not len(table):
-        return [row("o", statement, math.nan, math.nan, math.nan, 1.0, "untested: no adhesive sphere")]
+        return [row("o", statement, math.nan, math.nan, math.nan, 1.0, untested(NOT_SWEPT, "no adhesive sphere"))]
     out = []
     for hurst, rows in table.groupby("hurst"):
         rows, capped = _preloaded(rows[np.isfinite(rows["pull_off_ratio"].to_numpy(float))])
@@ -210,13 +211,14 @@ def _o(inputs):
                  f"radii), {len(pairs)} (R, w) pairs")
         if len(pairs) < 2 or len(rows) < 4:
             out.append(row("o", statement, math.nan, math.nan, math.nan, 1.0,
-                           f"untested: {len(pairs)} (R, w) pair(s) and {len(rows)} combination(s) at H = {hurst:g} "
-                           "(a collapse needs two pairs and four combinations)", hurst=hurst, sweep=sweep))
+                           untested(NOT_SWEPT, f"{len(pairs)} (R, w) pair(s) and {len(rows)} combination(s) at "
+                                    f"H = {hurst:g} (a collapse needs two pairs and four combinations)"),
+                           hurst=hurst, sweep=sweep))
             continue
         collapse = _collapse_residual(rows, ("radius", "work_of_adhesion"))
         if not collapse.compared:
             out.append(row("o", statement, math.nan, math.nan, math.nan, 1.0,
-                           "untested: the (R, w) pairs' ranges of h_rms/delta_c do not overlap", hurst=hurst,
+                           untested(NOT_SWEPT, "the (R, w) pairs' ranges of h_rms/delta_c do not overlap"), hurst=hurst,
                            sweep=sweep))
             continue
         sweep += f", {collapse.compared} points compared"
@@ -239,14 +241,15 @@ def _p(inputs):
     enough = [h for h, count in dict(counts).items() if count >= 4]
     if len(enough) < 2:
         return [row("p", statement, math.nan, math.nan, math.nan, 1.0,
-                    f"untested: {len(enough)} H with four or more combinations (one curve across H needs two)")]
+                    untested(NOT_SWEPT, f"{len(enough)} H with four or more combinations (one curve across H needs "
+                                        "two)"))]
     rows = rows[rows["hurst"].isin(enough)]
     collapse = _collapse_residual(rows, ("hurst", "radius", "work_of_adhesion"), across="hurst")
     sweep = (f"H = {', '.join(f'{h:g}' for h in sorted(enough))}: {len(rows)} combinations ({capped} left out: "
              f"preload below {PRELOAD:g} JKR radii), {collapse.compared} points compared")
     if not collapse.compared:
         return [row("p", statement, math.nan, math.nan, math.nan, 1.0,
-                    "untested: the H's ranges of h_rms/delta_c do not overlap", sweep=sweep)]
+                    untested(NOT_SWEPT, "the H's ranges of h_rms/delta_c do not overlap"), sweep=sweep)]
     worst = collapse.worst
     verdict = (f"consistent: no one curve of h_rms/delta_c through every H (the H's curves {worst:.2f} times the "
                "sum of their half-intervals apart)" if worst > 1.0 else
@@ -260,14 +263,15 @@ def _q(inputs):
     table = inputs.stickiness
     if table is None or not len(table):
         return [row("q", statement, math.nan, math.nan, math.nan, 1.0,
-                    "untested: no stickiness runs (the config's stickiness section)")]
+                    untested(NOT_SWEPT, "no stickiness runs (the config's stickiness section)"))]
     out = []
     for hurst, rows in table.groupby("hurst"):
         first = rows.iloc[0]
         sweep = (f"flat, periodic, n = {int(first['n'])}, {int(first['n_seeds'])} seeds, h' = {first['rms_slope']:g}, "
                  f"dr/g0 = {first['range_ratio']:.3g}")
         valid = bool(first["range_ratio"] < STICKINESS_RANGE_LIMIT)
-        outside = f"untested: dr/g0 = {first['range_ratio']:.2g} >= {STICKINESS_RANGE_LIMIT:g} (outside the criterion's range)"
+        outside = untested(OUT_OF_RANGE, f"dr/g0 = {first['range_ratio']:.2g} >= {STICKINESS_RANGE_LIMIT:g} (outside "
+                                         "the criterion's range)")
         for _, r in rows.iterrows():
             low, high = r["loading_slope_ci_low"], r["loading_slope_ci_high"]
             measured = (f"F/A = {r['loading_slope']:.3g} h'E* [{low:.3g}, {high:.3g}], {r['sticky_fraction']:.0%} of "
@@ -275,12 +279,13 @@ def _q(inputs):
             if not valid:
                 verdict = outside
             elif r["number"] == 1.0:
-                verdict = f"untested: N = 1 is the criterion's threshold itself ({measured})"
+                verdict = untested(NO_PREDICTION, f"N = 1 is the criterion's threshold itself ({measured})")
             else:
                 predicted = r["number"] < 1.0
-                verdict = verdict_bound(0.0, low, high, side="below" if predicted else "above")
-                verdict = (f"{verdict.partition(':')[0]}: predicted {'sticky' if predicted else 'not sticky'}; "
-                           f"{measured}" + (f" ({verdict.partition(': ')[2]})" if verdict.startswith("untested") else ""))
+                side = "below" if predicted else "above"
+                word, because, why = split_verdict(verdict_bound(0.0, low, high, side=side))
+                text = f"predicted {'sticky' if predicted else 'not sticky'}; {measured}"
+                verdict = untested(because, f"{text} ({why})") if because else f"{word}: {text}"
             out.append(row("q", statement, r["loading_slope"], low, high, 0.0, verdict, sweep=sweep,
                            loads="F/A at A* in units of h'E*; the paper's value: its sign changes at N = 1",
                            note=f"N = {r['number']:g}", hurst=hurst))
@@ -288,11 +293,12 @@ def _q(inputs):
         if not valid:
             verdict = outside
         elif not math.isfinite(first["threshold"]):
-            verdict = "untested: the mean slope does not change sign from negative to positive across the sweep's N"
+            verdict = untested(NOT_SWEPT, "the mean slope does not change sign from negative to positive across the "
+                                          "sweep's N")
         else:
             crossing = f"the slope changes sign at N = {first['threshold']:.3g} [{low:.3g}, {high:.3g}]"
-            verdict = (f"{stat_verdict(1.0, low, high)}: {crossing}"
-                       + ("" if math.isfinite(low) else " (no interval: the replicates' slopes rarely change sign)"))
+            verdict = (f"{judge(1.0, low, high)}: {crossing}" if math.isfinite(low) and math.isfinite(high) else
+                       untested(UNRESOLVED, f"{crossing} (no interval: the replicates' slopes rarely change sign)"))
         out.append(row("q", "Pastewka & Robbins: flat surfaces turn sticky at N = 1", first["threshold"], low, high,
                        1.0, verdict, sweep=sweep, loads="the number N where the mean F/A at A* changes sign",
                        note="threshold", hurst=hurst))

@@ -26,7 +26,7 @@ import numpy as np
 
 from .. import axes
 from ..ensemble import resolved
-from ..statistics import bootstrap_indices, interval, verdict, verdict_bound
+from ..statistics import NOT_SWEPT, UNRESOLVED, bootstrap_indices, interval, judge, untested, verdict_bound
 from .registry import Claim, register, row
 
 __all__ = ["INSENSITIVE_TOLERANCE"]
@@ -43,10 +43,10 @@ _STATEMENTS = {
 }
 
 
-def _untested(axis, why, paper):
+def _untested(axis, because, why, paper):
     claim, statement = _STATEMENTS[axis]
     return {"claim": claim, "statement": statement, "measured": math.nan, "low": math.nan, "high": math.nan,
-            "paper": paper, "verdict_text": f"untested: {why}"}
+            "paper": paper, "verdict_text": untested(because, why)}
 
 
 def _not_paired(ds, axis: str, length: float, paper):
@@ -55,7 +55,7 @@ def _not_paired(ds, axis: str, length: float, paper):
     baseline = axes.paper_coordinates(length)[axis]   # the run without it: the paper's setting
     values = ds[axis].values.tolist()
     if baseline not in values or len(values) < 2:
-        return _untested(axis, f"no {axis} swept" if values == [baseline]
+        return _untested(axis, NOT_SWEPT, f"no {axis} swept" if values == [baseline]
                          else f"no run without a {axis} to compare with", paper)
     return None
 
@@ -100,7 +100,7 @@ def _pair(axis, where, baseline, with_, without, crossover, study):
     rows = []
     for name, what in names:
         if mask.sum() < (2 if axis == "rolloff" else 1):
-            rows.append({**_untested(axis, f"{int(mask.sum())} loads qualify", paper), **where,
+            rows.append({**_untested(axis, UNRESOLVED, f"{int(mask.sum())} loads qualify", paper), **where,
                          "sweep": sweep, "loads": loads})
             continue
         k_with = with_[name].transpose("seed", "force").values[:, mask]
@@ -116,7 +116,7 @@ def _pair(axis, where, baseline, with_, without, crossover, study):
                 return np.abs(a / b - 1).max(-1)
         value_measured = float(measure(k_with.mean(0), k_without.mean(0)))
         low, high = interval(measure(k_with[indices].mean(1), k_without[indices].mean(1)), level)
-        text = (verdict(0.0, low, high) if axis == "rolloff"
+        text = (judge(0.0, low, high) if axis == "rolloff"
                 else verdict_bound(INSENSITIVE_TOLERANCE, low, high, side="below"))
         rows.append({"claim": claim, "statement": statement + what, "measured": value_measured, "low": low,
                      "high": high, "paper": paper, "verdict_text": text, "sweep": sweep, "loads": loads,

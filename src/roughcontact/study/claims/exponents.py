@@ -7,7 +7,7 @@ from __future__ import annotations
 import itertools
 import math
 
-from ..statistics import verdict
+from ..statistics import NOT_SWEPT, OFF_PAPER, UNRESOLVED, judge, untested
 from .registry import Claim, flat_zeta_rows, paper_rows, register, row
 
 __all__ = ["prl2012_exponent", "exponent_rows"]
@@ -38,7 +38,7 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
     rows = []
     if not (flat_swept and rolled):
         why = "no flat runs" if not flat_swept else "no roll-off below L swept"
-        rows.append(row("l", statement, math.nan, math.nan, math.nan, 1.0, f"untested: {why}"))
+        rows.append(row("l", statement, math.nan, math.nan, math.nan, 1.0, untested(NOT_SWEPT, why)))
     for hurst, rolloff in itertools.product(study.hurst, rolled if flat_swept else []):
         sub = exponents[(exponents["kind"] == "flat") & (exponents["hurst"] == hurst)
                         & (exponents["rolloff"] == rolloff)] if len(exponents) else exponents
@@ -47,7 +47,8 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
         sweep = f"flat H = {hurst:g}, rolloff = {rolloff:g} (length unit), {seeds} seeds, n = {n}"
         if not len(sub):
             rows.append(row("l", statement, math.nan, math.nan, math.nan, 1.0,
-                               "untested: no load with a resolved window", sweep=sweep, hurst=hurst, rolloff=rolloff))
+                               untested(UNRESOLVED, "no load with a resolved window"), sweep=sweep, hurst=hurst,
+                               rolloff=rolloff))
             continue
         covers = (sub["ci_low"] <= 1.0) & (sub["ci_high"] >= 1.0)
         covered = int(covers.sum())
@@ -55,7 +56,7 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
         top = sub[covers].loc[sub[covers]["local_exponent"].idxmax()] if covered else \
             sub.loc[sub["local_exponent"].idxmax()]
         text = (f"consistent: the interval contains 1 at {covered} of {len(sub)} loads (no correction for "
-                f"testing several loads)" if covered else verdict(1.0, top["ci_low"], top["ci_high"]))
+                f"testing several loads)" if covered else judge(1.0, top["ci_low"], top["ci_high"]))
         rows.append(row("l", statement, float(top["local_exponent"]), float(top["ci_low"]), float(top["ci_high"]), 1.0,
                            text, sweep=sweep, hurst=hurst, rolloff=rolloff,
                            loads=f"{len(sub)} loads with a resolved window, F/(E*L^2) = {sub['force'].min():.3g}..."
@@ -66,12 +67,14 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
                  "(Pohrt & Popov, PRL 2012)")
     flat = flat_zeta_rows(zeta_df)
     if not len(flat):
+        # flat ζ fits off the paper's setting only (zeta.csv's source names the axis), or none at all
+        off = len(zeta_df) and zeta_df["source"].astype(str).str.startswith("flat").any()
         rows.append(row("m", statement, math.nan, math.nan, math.nan, math.nan,
-                           "untested: no flat runs at the paper's setting"))
+                           untested(OFF_PAPER if off else NOT_SWEPT, "no flat runs at the paper's setting")))
     for _, z in flat.iterrows():
         value = prl2012_exponent(z["hurst"])
         rows.append(row("m", statement, z["exponent"], z["exponent_ci_low"], z["exponent_ci_high"], value,
-                           verdict(value, z["exponent_ci_low"], z["exponent_ci_high"]), hurst=z["hurst"],
+                           judge(value, z["exponent_ci_low"], z["exponent_ci_high"]), hurst=z["hurst"],
                            sweep=f"flat H = {z['hurst']:g}, {int(z['n_seeds'])} seeds, n = {n}", loads=z["window"],
                            note="measured: the free exponent of the zeta fit (zeta.csv)"))
     return rows

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from ..statistics import interval, verdict, verdict_bound
+from ..statistics import NO_PREDICTION, NOT_SWEPT, UNRESOLVED, interval, judge, untested, verdict_bound
 from .. import axes
 from .registry import Claim, all_of, at_theory, describe, off_theory, register, row, with_crossover
 
@@ -57,17 +57,33 @@ def _a(combination):
         sweep=c["sweep"], loads=c["loads"], note="measured: max |k/k_eq16 - 1|", **c["where"])
 
 
+def _crossover_verdict(r, column: str, predicted: float) -> str:
+    """The verdict text of ``crossover.csv``'s *column* (``verdict_estimate``, ``verdict_fit``) with
+    its untested reason named: ``unresolved`` crossovers (the note says why), no prediction (no
+    fitted ζ), no interval."""
+    word = r[column]
+    if word == "unresolved":
+        return untested(UNRESOLVED, r["note"].split("unresolved: ")[-1].split(";")[0])
+    if word.startswith("untested"):
+        if not math.isfinite(predicted):
+            return untested(NO_PREDICTION, f"no fitted zeta at H = {r['hurst']:g}")
+        return judge(predicted, r["Ftr_ci_low"], r["Ftr_ci_high"])
+    return word
+
+
 def _b(combination):
+    """Two rows: eq. 17 with ζ of eq. 13 (the paper's prediction) and with the ζ fitted on the flat
+    runs (``zeta.csv``), each with its own verdict."""
     r, c = _context(combination)
-    cross_verdict = r["verdict_estimate"]
-    if cross_verdict == "unresolved":
-        cross_verdict = "untested: " + r["note"].split("unresolved: ")[-1].split(";")[0]
-    return row(
-        "b", f"crossover force F_tr of eq. 17 (zeta = 1.7/(H+1); Fig. 3: 8e-5 E* L^2){c['body']}",
-        r["Ftr_measured"], r["Ftr_ci_low"], r["Ftr_ci_high"], r["Ftr_pred_estimate"], cross_verdict,
-        sweep=c["sweep"], loads=c["loads"], note=(f"measured: eq. 16 with free prefactors, F/(E*L^2); eq. 17 "
-                                                  f"with the fitted zeta = {r['Ftr_pred_fit']:.3g}: "
-                                                  f"{r['verdict_fit']}"), **c["where"])
+    note = "measured: eq. 16 with free prefactors, F/(E*L^2)"
+    return [row("b", f"crossover force F_tr of eq. 17 (zeta = 1.7/(H+1); Fig. 3: 8e-5 E* L^2){c['body']}",
+                r["Ftr_measured"], r["Ftr_ci_low"], r["Ftr_ci_high"], r["Ftr_pred_estimate"],
+                _crossover_verdict(r, "verdict_estimate", r["Ftr_pred_estimate"]),
+                sweep=c["sweep"], loads=c["loads"], note=note, **c["where"]),
+            row("b", f"crossover force F_tr of eq. 17 with the fitted zeta (zeta.csv){c['body']}",
+                r["Ftr_measured"], r["Ftr_ci_low"], r["Ftr_ci_high"], r["Ftr_pred_fit"],
+                _crossover_verdict(r, "verdict_fit", r["Ftr_pred_fit"]), sweep=c["sweep"], loads=c["loads"],
+                note=f"{note}; paper value: eq. 17 with zeta = {r['zeta_fit']:.3g}", **c["where"])]
 
 
 def _c(inputs):
@@ -81,7 +97,7 @@ def _c(inputs):
     for _, z in inputs.zeta.iterrows():
         out.append(row(
             "c", "zeta(H) ~ 1.7/(H+1) (eq. 13)", z["zeta"], z["zeta_ci_low"], z["zeta_ci_high"], z["zeta_estimate"],
-            off or verdict(z["zeta_estimate"], z["zeta_ci_low"], z["zeta_ci_high"]), hurst=z["hurst"],
+            off or judge(z["zeta_estimate"], z["zeta_ci_low"], z["zeta_ci_high"]), hurst=z["hurst"],
             sweep=f"{z['source'].split(' (')[0]}, {int(z['n_seeds'])} seeds, n = {n}",
             loads=f"{int(z['n_points'])} loads, F/(E*L^2) = {z['force_min']:.2g}...{z['force_max']:.2g}"))
     return out
@@ -94,38 +110,46 @@ def _c_sphere(combination):
     return row(
         "c", "zeta(H) ~ 1.7/(H+1) from the sphere's fractal branch (eq. 16's B)", r["zeta_sphere"],
         r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"], r["zeta_estimate"],
-        verdict(r["zeta_estimate"], r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"]),
+        judge(r["zeta_estimate"], r["zeta_sphere_ci_low"], r["zeta_sphere_ci_high"]),
         sweep=c["sweep"], loads=c["loads"], **c["where"])
 
 
-def _slope_row(r, c, slopes, claim, name, text):
+def _slope_rows(r, c, slopes, claim, name, text):
+    """Two rows of one slope window: against the asymptote (eq. 11 or eq. 9) and against the slope
+    eq. 16 itself has over the same loads (the fair test where the window is not asymptotic)."""
     window = "low" if name == "slope_low" else "high"
     ratio = slopes.low_max_ratio if window == "low" else slopes.high_min_ratio
-    return row(
-        claim, text, r[name], r[f"{name}_ci_low"], r[f"{name}_ci_high"], r[f"{name}_theory"],
-        r[f"{name}_verdict"], sweep=c["sweep"],
-        loads=(f"{int(r[f'n_loads_{window}'])} resolved loads with F {'<=' if window == 'low' else '>='} "
-               f"{ratio:g} F_tr"),
-        note=(f"eq. 16 itself gives {r[f'{name}_eq16']:.3f} over the same loads: "
-              f"{verdict(r[f'{name}_eq16'], r[f'{name}_ci_low'], r[f'{name}_ci_high'])}"), **c["where"])
+    low, high = r[f"{name}_ci_low"], r[f"{name}_ci_high"]
+    asymptote = r[f"{name}_verdict"]
+    if asymptote.startswith("untested"):    # crossover.csv: too few loads in the window, or no interval
+        asymptote = untested(UNRESOLVED, asymptote.partition(": ")[2] or "no interval")
+    shared = {"sweep": c["sweep"], **c["where"],
+              "loads": (f"{int(r[f'n_loads_{window}'])} resolved loads with F {'<=' if window == 'low' else '>='} "
+                        f"{ratio:g} F_tr")}
+    return [row(claim, text, r[name], low, high, r[f"{name}_theory"], asymptote,
+                note="paper value: the asymptote", **shared),
+            row(claim, f"{window}-force slope equals that of eq. 16 itself over the same loads", r[name], low, high,
+                r[f"{name}_eq16"],
+                asymptote if asymptote.startswith("untested") else judge(r[f"{name}_eq16"], low, high),
+                note="paper value: d ln k/d ln F of eq. 16 (the zeta of claim (a)) over the row's loads", **shared)]
 
 
 def _d(combination):
     r, c = _context(combination)
-    return _slope_row(r, c, combination.study.fit.slopes, "d", "slope_low",
-                      "low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)")
+    return _slope_rows(r, c, combination.study.fit.slopes, "d", "slope_low",
+                       "low-force slope d ln k/d ln F = 1/(H+1) (eq. 11)")
 
 
 def _e(combination):
     r, c = _context(combination)
-    out = [_slope_row(r, c, combination.study.fit.slopes, "e", "slope_high",
-                      "high-force slope = 1/(m+1) (1/3: Hertz, eq. 9)")]
+    out = _slope_rows(r, c, combination.study.fit.slopes, "e", "slope_high",
+                      "high-force slope = 1/(m+1) (1/3: Hertz, eq. 9)")
     if "hertz_coefficient" in r and math.isfinite(r["hertz_coefficient"]):
         out.append(row(
             "e", f"body prefactor A of F = A k^(m+1) + B k^(H+1) equals eq. 7 (L/(6R): Hertz, eq. 10){c['body']}",
             r["hertz_coefficient"], r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"],
             r["hertz_coefficient_theory"],
-            verdict(r["hertz_coefficient_theory"], r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"]),
+            judge(r["hertz_coefficient_theory"], r["hertz_coefficient_ci_low"], r["hertz_coefficient_ci_high"]),
             sweep=c["sweep"], loads=c["loads"], note="normalised units F/(E*L^2), k/(E*L)", **c["where"]))
     return out
 
@@ -135,7 +159,7 @@ def _f(combination):
     get = r.get
     softer = (verdict_bound(1.0, get("k_over_hertz_below_Ftr_ci_low", math.nan),
                             get("k_over_hertz_below_Ftr_ci_high", math.nan), side="below")
-              if r["n_loads_below_Ftr"] else "untested: no resolved load below F_tr")
+              if r["n_loads_below_Ftr"] else untested(UNRESOLVED, "no resolved load below F_tr"))
     return row(
         "f", f"below F_tr roughness lowers k against the smooth body (Conclusions){c['body']}",
         get("k_over_hertz_below_Ftr", math.nan), get("k_over_hertz_below_Ftr_ci_low", math.nan),
@@ -164,8 +188,8 @@ def _g(inputs):
             values = sorted(set(sub[axis])) if len(sub) else []
             if len(values) < 2:
                 swept = len([r for r in study.radius if math.isfinite(r)] if axis == "radius" else study.h_rms)
-                why = (f"untested: {len(values)} {axis} value(s) with a resolved crossover" if swept >= 2
-                       else f"untested: one {axis} value only")
+                why = (untested(UNRESOLVED, f"{len(values)} {axis} value(s) with a resolved crossover") if swept >= 2
+                       else untested(NOT_SWEPT, f"one {axis} value only"))
                 out.append(row("g", statement, math.nan, math.nan, math.nan, theory_value, why, hurst=hurst))
                 continue
             others = [a for a in ("radius", "h_rms") if a != axis and len(set(sub[a])) >= 2]
@@ -177,7 +201,7 @@ def _g(inputs):
                 for _, r in sub.iterrows()])                                     # (combos, replicates)
             exponents = np.linalg.pinv(design)[1] @ np.log(boot)
             lo, hi = interval(exponents, level)
-            out.append(row("g", statement, float(point), lo, hi, theory_value, verdict(theory_value, lo, hi),
+            out.append(row("g", statement, float(point), lo, hi, theory_value, judge(theory_value, lo, hi),
                            hurst=hurst, sweep=f"{len(sub)} sphere combinations at H = {hurst:g}",
                            loads=f"{axis} = {', '.join(f'{v:g}' for v in values)}"))
     return out
@@ -190,7 +214,8 @@ def _h(inputs):
     statement = f"eq. 18: F_tr = lambda E* h^1.5 R^0.5 as H -> 0, lambda = {LAMBDA_EQ17:.2f} (eq. 17; GT: {LAMBDA_GT})"
     if not small or not len(cross):
         return [row("h", statement, math.nan, math.nan, math.nan, LAMBDA_EQ17,
-                    f"untested: the sweep's smallest H is {min(study.hurst):g} (needs H <= 0.2 with spheres)")]
+                    untested(NOT_SWEPT, f"the sweep's smallest H is {min(study.hurst):g} (needs H <= 0.2 with "
+                                        "spheres)"))]
     from ...models.greenwood_tripp import self_affine_sphere_curve
     from ..verdicts import fit_eq16
 
@@ -202,13 +227,14 @@ def _h(inputs):
         low, high = r["Ftr_ci_low"] / scale, r["Ftr_ci_high"] / scale
         where = {"hurst": hurst, "radius": r["radius"], "h_rms": r["h_rms"]}
         predicted = r["Ftr_pred_estimate"] / scale
-        unresolved = "untested: unresolved crossover, " + str(r["note"]).split("unresolved: ")[-1].split(";")[0]
+        unresolved = untested(UNRESOLVED,
+                              "unresolved crossover, " + str(r["note"]).split("unresolved: ")[-1].split(";")[0])
 
-        def judge(value):
-            return verdict(value, low, high) if math.isfinite(low) else unresolved
+        def judged(value):
+            return judge(value, low, high) if math.isfinite(low) else unresolved
 
         out.append(row(
-            "h", statement, r["Ftr_measured"] / scale, low, high, predicted, judge(predicted),
+            "h", statement, r["Ftr_measured"] / scale, low, high, predicted, judged(predicted),
             note=f"paper value: eq. 17 at H = {hurst:g} (tends to {LAMBDA_EQ17:.2f} as H -> 0; GT {LAMBDA_GT})",
             **where))
         # Greenwood-Tripp on the same spectrum and grid, its crossover by the same fit with H -> 0 (F ~ k)
@@ -217,7 +243,7 @@ def _h(inputs):
         out.append(row(
             "h", f"eq. 18 with Greenwood-Tripp's lambda ({LAMBDA_GT} in the paper; the same fit of GT's curve on "
                  "these surfaces gives the paper value column)", r["Ftr_measured"] / scale, low, high, lam,
-            judge(lam), note=f"GT mu = {gt.mu:.3g} (grows with the grid: no cutoff)", **where))
+            judged(lam), note=f"GT mu = {gt.mu:.3g} (grows with the grid: no cutoff)", **where))
     return out
 
 

@@ -14,6 +14,7 @@ import numpy as np
 
 from .. import axes
 from ..axes import AXES, optional_axes
+from ..statistics import OFF_PAPER, split_verdict, untested
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
            "combinations", "table_rows", "sphere", "flat", "with_crossover", "paper_setting", "at_theory", "all_of",
@@ -158,9 +159,9 @@ class Claim:
         (:func:`combinations`) that *applies* admits. Implies ``needs`` ``groups``.
     applies : callable
         ``applies(combination) -> str or None``, the rule of the combinations *estimate* is
-        tested on: ``None``, no row; ``""``, the rows' verdicts stand; otherwise the reason
-        (``"untested: ..."``) that replaces the verdict of every row of the combination, whose
-        measured values are kept. Rules: :func:`sphere`, :func:`flat`, :func:`with_crossover`,
+        tested on: ``None``, no row; ``""``, the rows' verdicts stand; otherwise the untested
+        verdict text (:func:`roughcontact.study.statistics.untested`) that replaces the verdict of
+        every row of the combination, whose measured values are kept. Rules: :func:`sphere`, :func:`flat`, :func:`with_crossover`,
         :func:`paper_setting`, :func:`at_theory`, combined by :func:`all_of`. Default: spheres.
 
     Notes
@@ -207,11 +208,15 @@ def __getattr__(name: str):
 
 
 def row(claim, statement, measured, low, high, paper, verdict_text, *, sweep="", loads="", note="", **where) -> dict:
-    """One row of the claims table; *verdict_text* is ``"verdict: reason"``; *where* the
-    combination's axes (missing ones NaN)."""
+    """One row of the claims table; *verdict_text* is ``"verdict: reason"``, an untested one made by
+    :func:`roughcontact.study.statistics.untested` (its named reason is the ``untested_because``
+    column; any other untested text raises ``ValueError``: an ``error`` row); *where* the
+    combination's axes (missing ones NaN). The *note* says what the measured value is; it states
+    no verdict (a second comparison is a row of its own)."""
+    word, because, reason = split_verdict(verdict_text)
     return {"claim": claim, "statement": statement, **{k: where.get(k, math.nan) for k in AXES},
             "measured": measured, "ci_low": low, "ci_high": high, "paper_value": paper,
-            "verdict": verdict_text.split(":")[0], "reason": verdict_text.partition(": ")[2],
+            "verdict": word, "untested_because": because, "reason": reason,
             "sweep": sweep, "loads": loads, "note": note}
 
 
@@ -233,7 +238,7 @@ def off_theory(r, length: float) -> str:
            for name, value in axes.off_paper(r, length).items() if AXES[name].role != "body"]
     if not off:
         return ""
-    return "untested: eqs. 11-17 are for an elastic, purely self-affine surface; here " + ", ".join(off)
+    return untested(OFF_PAPER, "eqs. 11-17 are for an elastic, purely self-affine surface; here " + ", ".join(off))
 
 
 def combinations(inputs: ClaimInputs, kinds=("sphere", "flat")):
@@ -284,8 +289,10 @@ def _error_row(claim: Claim, error: Exception, where: dict) -> dict:
 
 
 def _untested(rows: list, reason: str) -> list:
-    """*rows* with the verdict replaced by the untested *reason* (``"untested: ..."``)."""
-    return [{**r, "verdict": reason.split(":")[0], "reason": reason.partition(": ")[2]} for r in rows]
+    """*rows* with the verdict replaced by the untested verdict text *reason*
+    (:func:`roughcontact.study.statistics.untested`)."""
+    word, because, text = split_verdict(reason)
+    return [{**r, "verdict": word, "untested_because": because, "reason": text} for r in rows]
 
 
 def table_rows(claim: Claim, inputs: ClaimInputs) -> list:
@@ -307,10 +314,11 @@ def table_rows(claim: Claim, inputs: ClaimInputs) -> list:
                 continue
             rows = claim.estimate(combination)
             rows = [rows] if isinstance(rows, dict) else list(rows)
+            rows = _untested(rows, reason) if reason else rows
         except Exception as error:   # noqa: BLE001
             out.append(_error_row(claim, error, combination.axes))
             continue
-        out += _untested(rows, reason) if reason else rows
+        out += rows
     return out
 
 

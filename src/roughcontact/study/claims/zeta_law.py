@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 
-from ..statistics import verdict, verdict_bound
+from ..statistics import NO_PREDICTION, NOT_SWEPT, UNRESOLVED, judge, untested, verdict_bound
 from .registry import Claim, flat_zeta_rows, register, row
 
 #: the paper's values of the parameters of the candidate ζ(H) laws, where eq. 13 is of that form
@@ -22,12 +22,14 @@ def _c_prime(inputs):
 
     n = inputs.study.grid.n
     flat = flat_zeta_rows(inputs.zeta)
+    swept = len(flat)
     flat = flat[np.isfinite(flat["zeta_ci_low"].to_numpy(float))] if len(flat) else flat
     statement = "zeta(H) follows a law whose form the data choose (eq. 13: 1.7/(H+1))"
     if len(flat) < MIN_HURST:
+        # fewer H with flat runs than a law needs (not swept), or some without a zeta interval (unresolved)
         return [row("c'", statement, math.nan, math.nan, math.nan, math.nan,
-                    f"untested: {len(flat)} H value(s) with flat runs and a zeta interval "
-                    f"(a law needs {MIN_HURST})")]
+                    untested(NOT_SWEPT if swept < MIN_HURST else UNRESOLVED,
+                             f"{len(flat)} H value(s) with flat runs and a zeta interval (a law needs {MIN_HURST})"))]
     hurst = flat["hurst"].to_numpy(float)
     law = fit_zeta_law(hurst, flat["zeta"], flat["zeta_ci_low"], flat["zeta_ci_high"],
                        inputs.zeta_replicates.sel(hurst=hurst).values, level=inputs.study.fit.zeta.confidence)
@@ -38,8 +40,8 @@ def _c_prime(inputs):
     out = []
     for name, value in law.parameters.items():
         paper = EQ13_PARAMETERS.get(law.form, {}).get(name, math.nan)
-        text = (verdict(paper, law.ci_low[name], law.ci_high[name]) if math.isfinite(paper)
-                else "untested: eq. 13 is not of this form")
+        text = (judge(paper, law.ci_low[name], law.ci_high[name]) if math.isfinite(paper)
+                else untested(NO_PREDICTION, "eq. 13 is not of this form"))
         out.append(row("c'", f"zeta(H) = {law.form} chosen by the data: parameter {name}", value,
                        law.ci_low[name], law.ci_high[name], paper, text, sweep=sweep, note=note))
     out.append(row(
