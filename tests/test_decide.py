@@ -1,0 +1,182 @@
+"""The scorecard's decision (roughcontact.study.decision): recommended, tied, worse, not scored."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+
+from roughcontact.models import paper
+from roughcontact.models import scorecard as registry
+from roughcontact.study import decision, scorecard
+from roughcontact.study.config import resolve_config
+from roughcontact.study.statistics import bootstrap_indices
+from roughcontact.study.study_settings import StudySettings
+
+FORCE = np.geomspace(1e-5, 1e-2, 6)
+K_SHAPE = FORCE ** 0.6          # any positive stiffness curve: the decision reads ratios only
+LEVEL = 0.95
+
+
+def _ensemble(scatter: float, seeds: int = 6, seed: int = 1):
+    """k per seed and load (seed s scaled by 1 + scatter·N(0, 1)) and its bootstrap means."""
+    rng = np.random.default_rng(seed)
+    k = (1 + scatter * rng.standard_normal(seeds))[:, None] * K_SHAPE[None, :]
+    k_boot = k[bootstrap_indices(seeds, 400)].mean(1)
+    return k, k_boot
+
+
+def _row(name, factor, k, k_boot, combination="c", **extra):
+    """A scorecard row of a model ``factor × k̄`` on one branch (every load above the crossover),
+    with its bootstrap replicates, computed by the scorecard's own function."""
+    k_mean = k.mean(0)
+    use = np.ones(FORCE.size, dtype=bool)
+    boot = {}
+    row = {"model": name, "combination": combination, "not_modelled": "", decision.OUTSIDE: "",
+           **scorecard._systematic(factor * k_mean, k_mean, k_boot, ~use, "low", LEVEL, boot),
+           **scorecard._systematic(factor * k_mean, k_mean, k_boot, use, "high", LEVEL, boot), **extra}
+    return row, boot
+
+
+def _decide(*specs, scatter=0.0, **kwargs):
+    k, k_boot = _ensemble(scatter)
+    built = [_row(name, factor, k, k_boot, **extra) for name, factor, extra in specs]
+    rows = decision.decide([r for r, _ in built], [b for _, b in built], LEVEL, **kwargs)
+    return {r["model"]: r for r in rows}
+
+
+def test_the_exact_model_is_recommended():
+    rows = _decide(("exact", 1.0, {}), ("off", 1.1, {}), scatter=0.05)
+    assert rows["exact"]["decision"] == "recommended", rows["exact"]
+
+
+def test_a_model_10_percent_off_is_not_tied_with_the_exact_one():
+    rows = _decide(("exact", 1.0, {}), ("off", 1.1, {}), scatter=0.05)
+    assert rows["off"]["decision"] == "worse", rows["off"]
+
+
+def test_the_score_of_a_uniform_offset_is_the_offset():
+    """Identical seeds: k̄ on every resample, so S = |1.1 − 1| = 0.1 exactly."""
+    rows = _decide(("exact", 1.0, {}), ("off", 1.1, {}))
+    assert rows["off"]["decision_score"] == pytest.approx(0.1, rel=1e-12), "S of a 10 % offset"
+
+
+def test_the_paired_difference_of_identical_seeds_is_a_point():
+    rows = _decide(("exact", 1.0, {}), ("off", 1.1, {}))
+    assert rows["off"]["difference_ci_low"] == pytest.approx(0.1, rel=1e-12), "D = 0.1 on every resample"
+
+
+def test_two_models_within_the_sampling_band_are_tied():
+    """10 % scatter over 6 seeds: a band of several per cent; +0.2 % and −0.3 % are inside it."""
+    rows = _decide(("a", 1.002, {}), ("b", 0.997, {}), scatter=0.10)
+    assert {rows["a"]["decision"], rows["b"]["decision"]} == {"recommended", "tied"}, rows
+
+
+def test_a_grid_error_larger_than_half_the_difference_ties_them():
+    """D = 0.1 and ĝ = 0.06: D_low = 0.1 ≤ 2ĝ = 0.12, the grid could swap the two."""
+    grid = {"grid_error_low": math.nan, "grid_error_high": 0.06}
+    rows = _decide(("exact", 1.0, grid), ("off", 1.1, grid))
+    assert rows["off"]["decision"] == "tied", rows["off"]
+
+
+def test_the_grid_error_is_added_to_the_score():
+    grid = {"grid_error_low": math.nan, "grid_error_high": 0.06}
+    rows = _decide(("exact", 1.0, grid), ("off", 1.1, grid))
+    assert rows["off"]["decision_score"] == pytest.approx(0.16, rel=1e-12), "|0.1| + 0.06"
+
+
+def test_the_grid_error_is_said_measured_or_not():
+    rows = _decide(("exact", 1.0, {"grid_error_high": 0.01}), ("off", 1.1, {}))
+    assert [rows["exact"]["grid_error_measured"], rows["off"]["grid_error_measured"]] == [True, False]
+
+
+@pytest.mark.parametrize("column, text", [("not_modelled", "hardness = 0.5"),
+                                          (decision.OUTSIDE, "hurst = 1.4 outside [0, 1]")])
+def test_an_unscored_row_is_never_recommended(column, text):
+    """The exact model is not modelled / out of range: the 10 % model is recommended instead."""
+    rows = _decide(("exact", 1.0, {column: text}), ("off", 1.1, {}))
+    assert rows["exact"]["decision"] == "not scored", rows["exact"]
+    assert rows["off"]["recommended"], rows["off"]
+
+
+def test_no_scored_row_no_recommendation():
+    rows = _decide(("exact", 1.0, {"not_modelled": "cutoff = 0.1"}))
+    assert not rows["exact"]["recommended"], rows["exact"]
+
+
+def test_without_replicates_the_score_intervals_decide():
+    """No bootstrap replicates (a committed table): identical seeds give point intervals 0 and 0.1."""
+    k, k_boot = _ensemble(0.0)
+    rows = decision.decide([_row("exact", 1.0, k, k_boot)[0], _row("off", 1.1, k, k_boot)[0]], None, LEVEL)
+    assert rows[1]["decision"] == "worse", rows[1]
+
+
+def test_the_sorted_table_puts_the_recommended_row_first():
+    rows = _decide(("off", 1.1, {}), ("exact", 1.0, {}), ("far", 1.3, {}))
+    table = decision.sort(pd.DataFrame(list(rows.values())))
+    assert list(table["model"]) == ["exact", "off", "far"], table
+
+
+def test_the_matrix_marks_the_recommended_model():
+    rows = _decide(("exact", 1.0, {}), ("off", 1.1, {}))
+    cells = decision.matrix(pd.DataFrame(list(rows.values())))
+    assert cells.loc["c", "exact"] == "★ 0.0 %", cells
+
+
+def test_a_range_names_why_a_value_is_outside():
+    model = registry.Model("m", "m", lambda f, s: None, ranges=(registry.Range("hurst", 0.0, 1.0, "src"),))
+    assert model.outside({"hurst": 1.4}) == "hurst = 1.4 outside [0, 1] (src)"
+
+
+def test_a_value_inside_the_range_is_not_flagged():
+    model = registry.Model("m", "m", lambda f, s: None, ranges=(registry.Range("hurst", 0.0, 1.0),))
+    assert model.outside({"hurst": 1.0, "radius": 3.0}) == ""
+
+
+# --- end to end: the scorecard of one synthetic combination at H = 1.4 ---------------------------
+
+HURST, RADIUS, H_RMS, ZETA = 1.4, 0.5, 9e-3, 0.8
+CFG = StudySettings.of(resolve_config({
+    "grid": {"n": 129}, "hurst": [HURST], "radius": [RADIUS], "h_rms": [H_RMS], "seeds": 4,
+    "forces": {"sphere": {"from": 1e-5, "to": 1e-2, "count": 6}},
+    "fit": {"zeta": {"min_cells": 20, "bootstrap": 200}, "slopes": {"high_min_ratio": 3.0}}}))
+
+
+@pytest.fixture(scope="module")
+def out_of_range_table():
+    """Every seed equal to eq. 16 with the fitted ζ: eq16_fitted is exact, but H = 1.4 lies outside
+    its stated range."""
+    k16 = paper.stiffness_from_force(FORCE, radius=RADIUS, hurst=HURST, h_rms=H_RMS, length=1.0, e_star=1.0,
+                                     zeta=ZETA)
+    k = np.repeat(k16[None, :], 4, 0)
+    cells = np.full_like(k, 100)
+    coords = {"hurst": [HURST], "radius": [RADIUS], "exponent": [2.0], "h_rms": [H_RMS], "rolloff": [1.0],
+              "cutoff": [0.0], "hardness": [math.inf]}
+    dims = (*coords, "seed", "force")
+    shape = (1,) * len(coords)
+    ds = xr.Dataset({"stiffness": (dims, k.reshape(shape + k.shape)),
+                     "contact_cells": (dims, cells.reshape(shape + cells.shape))},
+                    coords={**coords, "seed": np.arange(4), "force": FORCE})
+    table, _ = scorecard.scorecard({"sphere": ds}, pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    return table
+
+
+def test_the_exact_model_outside_its_range_is_flagged(out_of_range_table):
+    row = out_of_range_table[out_of_range_table["model"] == "eq16_fitted"].iloc[0]
+    assert row[decision.OUTSIDE].startswith("hurst = 1.4 outside [0, 1]"), row[decision.OUTSIDE]
+
+
+def test_the_exact_model_outside_its_range_is_not_recommended(out_of_range_table):
+    row = out_of_range_table[out_of_range_table["model"] == "eq16_fitted"].iloc[0]
+    assert row["decision"] == "not scored", row["decision"]
+
+
+def test_exactly_one_row_is_recommended(out_of_range_table):
+    assert int(out_of_range_table["recommended"].sum()) == 1, out_of_range_table[["model", "decision"]]
+
+
+def test_the_recommended_row_is_a_scored_one(out_of_range_table):
+    row = out_of_range_table[out_of_range_table["recommended"]].iloc[0]
+    assert row[decision.OUTSIDE] == "" and row["not_modelled"] == "", row
