@@ -180,3 +180,28 @@ def test_exactly_one_row_is_recommended(out_of_range_table):
 def test_the_recommended_row_is_a_scored_one(out_of_range_table):
     row = out_of_range_table[out_of_range_table["recommended"]].iloc[0]
     assert row[decision.OUTSIDE] == "" and row["not_modelled"] == "", row
+
+
+# --- the "which model when" table of the models guide --------------------------------------------
+
+def test_the_guide_holds_the_table_the_committed_pages_give():
+    from roughcontact.study import which_model
+
+    assert which_model.update_guide(check=True), "rerun: PYTHONPATH=src python -m roughcontact.study.which_model"
+
+
+def test_each_committed_combination_with_a_scored_model_has_one_recommendation():
+    from roughcontact.study import which_model
+
+    decided = which_model.decide_pages(which_model.read_pages())
+    scored = decided[decided["decision"] != "not scored"]
+    counts = scored.groupby(["preset", "combination"])["decision"].apply(lambda d: int((d == "recommended").sum()))
+    assert set(counts) == {1}, counts[counts != 1]
+
+
+def test_a_committed_row_above_h_1_is_not_scored():
+    from roughcontact.study import which_model
+
+    decided = which_model.decide_pages(which_model.read_pages())
+    rows = decided[decided["combination"].str.startswith("H1.4_") & (decided["model"] == "eq16_paper")]
+    assert len(rows) and set(rows["decision"]) == {"not scored"}, rows[["combination", "decision"]]
