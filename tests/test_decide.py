@@ -205,3 +205,30 @@ def test_a_committed_row_above_h_1_is_not_scored():
     decided = which_model.decide_pages(which_model.read_pages())
     rows = decided[decided["combination"].str.startswith("H1.4_") & (decided["model"] == "eq16_paper")]
     assert len(rows) and set(rows["decision"]) == {"not scored"}, rows[["combination", "decision"]]
+
+
+def _scan(hurst):
+    """A scan's merged runs (k = 1) and eq16_paper's prediction (k = 1.2), its fit at *hurst*."""
+    force = np.geomspace(1e-6, 1e-3, 4)
+    runs = xr.Dataset({"stiffness": (("radius", "tile", "force"), np.ones((1, 3, 4))),
+                       "contact_cells": (("radius", "tile", "force"), np.full((1, 3, 4), 100)),
+                       **{v: (("radius", "force"), np.ones((1, 4))) for v in ("k_mean", "k_ci_low", "k_ci_high")}},
+                      coords={"radius": [0.5], "force": force, "force_normalized": ("force", force)})
+    models = xr.Dataset({"stiffness": (("model", "radius", "force"), np.full((1, 1, 4), 1.2))},
+                        coords={"model": ["eq16_paper"], "radius": [0.5], "force": force,
+                                "force_normalized": ("force", force)})
+    return {"sphere": runs}, {"sphere": models, "spectrum": xr.Dataset(attrs={"tile_length": 1.0, "hurst": hurst})}
+
+
+def test_a_scan_fitted_above_h_1_flags_the_self_affine_model():
+    from roughcontact.study.measured.scorecard import measured_scorecard
+
+    table = measured_scorecard(*_scan(1.3), name="scan", min_cells=10)
+    assert table["outside_range"].iloc[0].startswith("hurst = 1.3 outside [0, 1]"), table["outside_range"].iloc[0]
+
+
+def test_a_scan_fitted_inside_the_range_is_not_flagged():
+    from roughcontact.study.measured.scorecard import measured_scorecard
+
+    table = measured_scorecard(*_scan(0.8), name="scan", min_cells=10)
+    assert table["outside_range"].iloc[0] == "", table["outside_range"].iloc[0]
