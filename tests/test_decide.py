@@ -144,23 +144,59 @@ CFG = StudySettings.of(resolve_config({
     "fit": {"zeta": {"min_cells": 20, "bootstrap": 200}, "slopes": {"high_min_ratio": 3.0}}}))
 
 
-@pytest.fixture(scope="module")
-def out_of_range_table():
-    """Every seed equal to eq. 16 with the fitted ζ: eq16_fitted is exact, but H = 1.4 lies outside
-    its stated range."""
-    k16 = paper.stiffness_from_force(FORCE, radius=RADIUS, hurst=HURST, h_rms=H_RMS, length=1.0, e_star=1.0,
+def _table(hurst, g=None):
+    """The scorecard of one combination whose every seed equals eq. 16 with the fitted ζ (eq16_fitted
+    exact); *g*: a grid error ``k_coarse/k − 1 = g`` at every load (``None``: not measured)."""
+    k16 = paper.stiffness_from_force(FORCE, radius=RADIUS, hurst=hurst, h_rms=H_RMS, length=1.0, e_star=1.0,
                                      zeta=ZETA)
     k = np.repeat(k16[None, :], 4, 0)
     cells = np.full_like(k, 100)
-    coords = {"hurst": [HURST], "radius": [RADIUS], "exponent": [2.0], "h_rms": [H_RMS], "rolloff": [1.0],
+    coords = {"hurst": [hurst], "radius": [RADIUS], "exponent": [2.0], "h_rms": [H_RMS], "rolloff": [1.0],
               "cutoff": [0.0], "hardness": [math.inf]}
     dims = (*coords, "seed", "force")
     shape = (1,) * len(coords)
     ds = xr.Dataset({"stiffness": (dims, k.reshape(shape + k.shape)),
                      "contact_cells": (dims, cells.reshape(shape + cells.shape))},
                     coords={**coords, "seed": np.arange(4), "force": FORCE})
-    table, _ = scorecard.scorecard({"sphere": ds}, pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]}), CFG)
+    grid = None if g is None else pd.DataFrame({**{a: v[0] for a, v in coords.items()}, "force_normalized": FORCE,
+                                                "grid_error": g})
+    table, _ = scorecard.scorecard({"sphere": ds}, pd.DataFrame({"hurst": [hurst], "zeta": [ZETA]}), CFG, grid)
     return table
+
+
+@pytest.fixture(scope="module")
+def out_of_range_table():
+    """eq16_fitted is exact, but H = 1.4 lies outside its stated range."""
+    return _table(HURST)
+
+
+@pytest.fixture(scope="module")
+def grid_table():
+    """H = 0.7 (inside every self-affine range) with a 5 % grid error at every load."""
+    return _table(0.7, 0.05)
+
+
+def test_the_exact_model_with_a_grid_error_is_recommended(grid_table):
+    row = grid_table[grid_table["recommended"]].iloc[0]
+    assert row["model"] == "eq16_fitted", grid_table[["model", "decision", "decision_score"]]
+
+
+def test_the_score_of_the_exact_model_is_the_grid_error(grid_table):
+    """No systematic deviation, |g| = 0.05 at every load: S = 0 + 0.05."""
+    row = grid_table[grid_table["model"] == "eq16_fitted"].iloc[0]
+    assert row["decision_score"] == pytest.approx(0.05, rel=1e-12), row["decision_score"]
+
+
+def test_a_measured_grid_error_is_said_so(grid_table):
+    assert bool(grid_table["grid_error_measured"].all()), grid_table["grid_error_measured"]
+
+
+def test_an_unmeasured_grid_error_is_said_so(out_of_range_table):
+    assert not bool(out_of_range_table["grid_error_measured"].any()), out_of_range_table["grid_error_measured"]
+
+
+def test_the_page_says_the_grid_error_is_not_measured(out_of_range_table):
+    assert "NOT measured" in scorecard.scorecard_lead(out_of_range_table), "lead"
 
 
 def test_the_exact_model_outside_its_range_is_flagged(out_of_range_table):
@@ -232,3 +268,15 @@ def test_a_scan_fitted_inside_the_range_is_not_flagged():
 
     table = measured_scorecard(*_scan(0.8), name="scan", min_cells=10)
     assert table["outside_range"].iloc[0] == "", table["outside_range"].iloc[0]
+
+
+def test_the_page_shows_the_matrix_above_the_long_table(out_of_range_table):
+    from roughcontact.study.tables import html_table
+
+    page = html_table(out_of_range_table, title="t", lead="l", above=decision.matrix_html(out_of_range_table))
+    assert page.index("★") < page.index("<h2>Every row</h2>"), "the recommended mark above the rows"
+
+
+def test_the_matrix_marks_the_out_of_range_model_not_scored(out_of_range_table):
+    cells = decision.matrix(out_of_range_table)
+    assert cells.iloc[0]["eq16_fitted"] == "n.s.", cells
