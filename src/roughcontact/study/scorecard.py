@@ -267,7 +267,7 @@ def scorecard_lead(table=None) -> str:
             "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
             "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
             "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
-            "deviations; rank 1 is the best model of its combination; paper_setting says whether every "
+            "deviations; rank orders the scored rows by max_rel_dev alone (rank 1 the smallest; the recommended model is the rule's, above); paper_setting says whether every "
             f"optional axis ({optional}) is at the paper's value; not_modelled names the optional axes, with "
             "their values, at which the combination is off the paper's value and which the model does not "
             "model (its prediction ignores them; each model's modelled axes follow its summary at the end): such a "

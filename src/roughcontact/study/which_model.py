@@ -86,10 +86,14 @@ def _unscored(model: str, combination: str) -> str:
 
 
 def decide_pages(table):
-    """*table* (:func:`read_pages`) with ``decision`` per row (module docstring)."""
+    """*table* (:func:`read_pages`) with ``decision`` per row (module docstring); a page written
+    from a ``models.csv`` with the decision keeps its own (the full rule)."""
     out = []
     for (_, _), group in table.groupby(["preset", "combination"], sort=True):
         group = group.copy()
+        if "decision" in group and group["decision"].fillna("").astype(bool).all():
+            out.append(group.assign(unscored=""))
+            continue
         why = [_unscored(m, c) for m, c in zip(group["model"], group["combination"])]
         scored = [not w and math.isfinite(s) for w, s in zip(why, group["max_rel_dev"])]
         decision = ["not scored"] * len(group)
@@ -135,7 +139,8 @@ def which_model_table(pages: Path = PAGES) -> str:
         "or the combination lies outside the model's stated range (e.g. H > 1 for the self-affine models); "
         "\"no scored model\" counts combinations where no model is scored (e.g. a hardness, which no model "
         "models). A fresh `models.csv` decides on the systematic deviations with a paired bootstrap and "
-        "the grid error (below, \"The decision\").", "", *lines])
+        "the grid error (below, \"The decision\"); a page written from such a file keeps its own decision.", "",
+        *lines])
 
 
 def _hurst_of(combination: str) -> float:
