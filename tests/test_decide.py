@@ -280,3 +280,15 @@ def test_the_page_shows_the_matrix_above_the_long_table(out_of_range_table):
 def test_the_matrix_marks_the_out_of_range_model_not_scored(out_of_range_table):
     cells = decision.matrix(out_of_range_table)
     assert cells.iloc[0]["eq16_fitted"] == "n.s.", cells
+
+
+def test_the_recommended_row_lists_the_tied_models():
+    rows = _decide(("a", 1.002, {}), ("b", 0.997, {}), ("far", 1.5, {}), scatter=0.10)
+    best = [r for r in rows.values() if r["recommended"]][0]
+    assert best["tied_models"] == next(m for m in ("a", "b") if m != best["model"]), best
+
+
+def test_a_grid_table_without_this_combination_is_not_measured():
+    grid = {"grid_error_low": math.nan, "grid_error_high": math.nan}
+    rows = _decide(("exact", 1.0, grid), ("off", 1.1, grid))
+    assert not rows["exact"]["grid_error_measured"], rows["exact"]

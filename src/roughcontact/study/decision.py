@@ -26,8 +26,9 @@ model's stated range, :attr:`roughcontact.models.scorecard.Model.ranges`, or wit
 Columns added to ``models.csv``: ``outside_range`` (why the combination lies outside the model's
 stated range; empty inside), ``decision_score`` (``S_m``), ``difference_ci_low`` /
 ``difference_ci_high`` (the paired interval of ``S_m − S_r``; 0 for ``r``), ``grid_error_measured``
-(bool), ``recommended`` (bool, exactly one row per combination with a scored model),
-``tied_with_recommended`` (bool) and ``decision`` (``recommended``, ``tied``, ``worse``,
+(bool: a finite grid error on a branch), ``recommended`` (bool, exactly one row per combination
+with a scored model), ``tied_with_recommended`` (bool), ``tied_models`` (on the recommended row:
+the tied models, comma-separated) and ``decision`` (``recommended``, ``tied``, ``worse``,
 ``not scored``); ``rank`` (by ``max_rel_dev``) is kept. :func:`sort` orders the table by
 combination, then decision, then score; :func:`matrix_html` is the compact matrix above the long
 table of the report's page.
@@ -140,10 +141,13 @@ def decide(rows: list, replicates: list | None = None, level: float = 0.95) -> l
             decision = "tied" if low <= 2 * max(g, g_r) else "worse"
         else:
             decision = "not scored"
+        measured = any(math.isfinite(_number(row.get(f"grid_error_{b}"))) for b in ("low", "high"))
         out.append({**row, "decision_score": s, "difference_ci_low": low, "difference_ci_high": high,
-                    "grid_error_measured": "grid_error_low" in row or "grid_error_high" in row,
-                    "recommended": decision == "recommended", "tied_with_recommended": decision == "tied",
-                    "decision": decision})
+                    "grid_error_measured": measured, "recommended": decision == "recommended",
+                    "tied_with_recommended": decision == "tied", "decision": decision})
+    tied = ", ".join(r["model"] for r in out if r["decision"] == "tied")
+    for r in out:
+        r["tied_models"] = tied if r["recommended"] else ""
     return out
 
 
@@ -199,10 +203,17 @@ def matrix(table, models=None):
 
 
 def grid_note(table) -> str:
-    """One sentence: whether the scores include a measured grid error."""
-    measured = bool(len(table)) and "grid_error_measured" in table and bool(table["grid_error_measured"].all())
-    if measured:
+    """One sentence: whether the scores include a measured grid error (all, none or some combinations)."""
+    if not len(table) or "grid_error_measured" not in table:
+        measured, total = 0, 0
+    else:
+        per = table.groupby("combination")["grid_error_measured"].any()
+        measured, total = int(per.sum()), int(per.size)
+    if total and measured == total:
         return "The grid error is measured (grid.coarse) and included in S and in the ties."
+    if measured:
+        return (f"The grid error is measured (grid.coarse) for {measured} of {total} combinations only; on the "
+                "others (grid_error_measured false) S and the ties hold the sampling error only.")
     return ("The grid error is NOT measured for this study (no grid.coarse): S and the ties hold the sampling "
             "error only, and a reader cannot tell the grid's share of a deviation.")
 

@@ -332,7 +332,7 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
                      above=decision.matrix_html(table, list(registry.models())),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
                                       "systematic_low_total_verdict", "systematic_high_total_verdict"),
-                     first=("combination", "model", "decision", "decision_score", "difference_ci_low",
+                     first=("combination", "model", "decision", "tied_models", "decision_score", "difference_ci_low",
                             "difference_ci_high", "rank", unmodelled.COLUMN, decision.OUTSIDE, "max_rel_dev", "max_rel_dev_ci_low",
                             "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "inside_band_total",
                             "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
