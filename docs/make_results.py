@@ -126,8 +126,9 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
                   "Largest relative deviation `|k_model/k_BEM - 1|` over the resolved loads of the ensemble "
                   "mean, with its 95 % bootstrap-over-seeds interval; rank orders by it (1 the smallest)."
                   + (" decision: the recommended model of its combination, the models tied with it and the worse "
-                     "ones, by the rule of roughcontact.study.decision (decision_score S = max over the branches of "
-                     "|systematic deviation| + grid error; grid_error_measured: whether the grid error is in it)."
+                     "ones, by the rule of roughcontact.study.decision (decision_score S = the rms of "
+                     "|k_model/k_BEM - 1| + grid error over the worse branch's loads; grid_error_measured: whether "
+                     "the grid error is in it)."
                      if decided else ""),
                   "", _table(models[columns]), ""]
     sticky = results / "stickiness" / "stickiness.csv"

@@ -28,22 +28,20 @@ def _ensemble(scatter: float, seeds: int = 6, seed: int = 1):
     return k, k_boot
 
 
-def _row(name, factor, k, k_boot, combination="c", **extra):
-    """A scorecard row of a model ``factor × k̄`` on one branch (every load above the crossover),
-    with its bootstrap replicates, computed by the scorecard's own function."""
+def _row(name, factor, k, k_boot, combination="c", g=None, **extra):
+    """A scorecard row of a model ``factor × k̄`` on one branch (every load above the crossover) and
+    the decision's inputs; *g*: a grid error at every load (``None``: not measured)."""
     k_mean = k.mean(0)
     use = np.ones(FORCE.size, dtype=bool)
-    boot = {}
-    row = {"model": name, "combination": combination, "not_modelled": "", decision.OUTSIDE: "",
-           **scorecard._systematic(factor * k_mean, k_mean, k_boot, ~use, "low", LEVEL, boot),
-           **scorecard._systematic(factor * k_mean, k_mean, k_boot, use, "high", LEVEL, boot), **extra}
-    return row, boot
+    row = {"model": name, "combination": combination, "not_modelled": "", decision.OUTSIDE: "", **extra}
+    grid = None if g is None else np.full(FORCE.size, g)
+    return row, decision.inputs(factor * k_mean, k_mean, k_boot, use, {"low": ~use, "high": use}, grid)
 
 
-def _decide(*specs, scatter=0.0, **kwargs):
+def _decide(*specs, scatter=0.0):
     k, k_boot = _ensemble(scatter)
     built = [_row(name, factor, k, k_boot, **extra) for name, factor, extra in specs]
-    rows = decision.decide([r for r, _ in built], [b for _, b in built], LEVEL, **kwargs)
+    rows = decision.decide([r for r, _ in built], [b for _, b in built], LEVEL)
     return {r["model"]: r for r in rows}
 
 
@@ -76,19 +74,17 @@ def test_two_models_within_the_sampling_band_are_tied():
 
 def test_a_grid_error_larger_than_half_the_difference_ties_them():
     """D = 0.1 and ĝ = 0.06: D_low = 0.1 ≤ 2ĝ = 0.12, the grid could swap the two."""
-    grid = {"grid_error_low": math.nan, "grid_error_high": 0.06}
-    rows = _decide(("exact", 1.0, grid), ("off", 1.1, grid))
+    rows = _decide(("exact", 1.0, {"g": 0.06}), ("off", 1.1, {"g": 0.06}))
     assert rows["off"]["decision"] == "tied", rows["off"]
 
 
 def test_the_grid_error_is_added_to_the_score():
-    grid = {"grid_error_low": math.nan, "grid_error_high": 0.06}
-    rows = _decide(("exact", 1.0, grid), ("off", 1.1, grid))
-    assert rows["off"]["decision_score"] == pytest.approx(0.16, rel=1e-12), "|0.1| + 0.06"
+    rows = _decide(("exact", 1.0, {"g": 0.06}), ("off", 1.1, {"g": -0.06}))
+    assert rows["off"]["decision_score"] == pytest.approx(0.16, rel=1e-12), "|0.1| + |−0.06| at every load"
 
 
 def test_the_grid_error_is_said_measured_or_not():
-    rows = _decide(("exact", 1.0, {"grid_error_high": 0.01}), ("off", 1.1, {}))
+    rows = _decide(("exact", 1.0, {"g": 0.01}), ("off", 1.1, {}))
     assert [rows["exact"]["grid_error_measured"], rows["off"]["grid_error_measured"]] == [True, False]
 
 
@@ -106,10 +102,35 @@ def test_no_scored_row_no_recommendation():
     assert not rows["exact"]["recommended"], rows["exact"]
 
 
-def test_without_replicates_the_score_intervals_decide():
-    """No bootstrap replicates (a committed table): identical seeds give point intervals 0 and 0.1."""
+def test_a_row_without_inputs_is_not_scored():
     k, k_boot = _ensemble(0.0)
-    rows = decision.decide([_row("exact", 1.0, k, k_boot)[0], _row("off", 1.1, k, k_boot)[0]], None, LEVEL)
+    rows = decision.decide([_row("exact", 1.0, k, k_boot)[0], _row("off", 1.1, k, k_boot)[0]],
+                           [None, _row("off", 1.1, k, k_boot)[1]], LEVEL)
+    assert rows[0]["decision"] == "not scored", rows[0]
+
+
+def _small_load_miss():
+    """Exact at the Hertz end, 50 % off at the smallest load (2 % scatter of the seeds)."""
+    k, k_boot = _ensemble(0.02)
+    k_mean = k.mean(0)
+    use = np.ones(FORCE.size, dtype=bool)
+    branches = {"low": ~use, "high": use}
+    off = k_mean * np.where(np.arange(FORCE.size) == 0, 1.5, 1.0)
+    rows = decision.decide([{"model": "exact", "combination": "c"}, {"model": "off", "combination": "c"}],
+                           [decision.inputs(k_mean, k_mean, k_boot, use, branches),
+                            decision.inputs(off, k_mean, k_boot, use, branches)], LEVEL)
+    return rows
+
+
+def test_a_miss_at_one_small_load_counts_in_the_rms():
+    """Every resolved load counts alike: S = 0.5/√6 (an inverse-variance weighted mean, dominated by
+    the precise large loads, would hide it)."""
+    rows = _small_load_miss()
+    assert rows[1]["decision_score"] == pytest.approx(0.5 / math.sqrt(FORCE.size), rel=1e-12), "rms of one 50 %"
+
+
+def test_a_miss_at_one_small_load_is_worse():
+    rows = _small_load_miss()
     assert rows[1]["decision"] == "worse", rows[1]
 
 
@@ -289,6 +310,5 @@ def test_the_recommended_row_lists_the_tied_models():
 
 
 def test_a_grid_table_without_this_combination_is_not_measured():
-    grid = {"grid_error_low": math.nan, "grid_error_high": math.nan}
-    rows = _decide(("exact", 1.0, grid), ("off", 1.1, grid))
+    rows = _decide(("exact", 1.0, {"g": math.nan}), ("off", 1.1, {"g": math.nan}))
     assert not rows["exact"]["grid_error_measured"], rows["exact"]

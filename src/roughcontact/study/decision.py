@@ -1,37 +1,41 @@
 """The scorecard's decision: one stated rule picks the recommended model of each combination.
 
-Rule (:data:`RULE`). For a model ``m`` of a sphere combination, with ``s_{m,b}`` its systematic
-deviation on branch ``b`` (``systematic_low``/``systematic_high``: the inverse-variance weighted
-mean of ``k_model/k_BEM − 1`` below/above the crossover force, :mod:`roughcontact.study.scorecard`)
-and ``g_b`` the grid error of that branch (``grid_error_low``/``grid_error_high``, measured with
-``grid.coarse``; 0 where it is not measured, and then every table and page says so),
+Rule (:data:`RULE`). For a model ``m`` of a sphere combination, with ``d_F = k_model/k_BEM − 1``
+its deviation from the ensemble mean at each resolved load ``F`` and ``g_F`` the grid error
+there (``|k̄_coarse/k̄ − 1|`` measured with ``grid.coarse``, :mod:`roughcontact.study.grid_error`;
+0 where it is not measured, and then every table and page says so), the score is the larger of
+the two branches' (below/above the crossover force of eq. 17) root-mean-square deviation, each
+load's deviation enlarged by the grid error there,
 
-    S_m = max_b ( |s_{m,b}| + g_b )          (``decision_score``; over the branches with resolved loads)
+    S_m = max_b sqrt( mean_{F ∈ b} (|d_F| + g_F)² )        (``decision_score``)
 
-is the largest error the model can have on either branch that neither the seeds' sampling nor
-the grid explains away. Among the *scored* rows of the combination (``not_modelled`` and
+the largest rms error on either branch that the grid could hide. Every resolved load counts
+alike (an inverse-variance weight, as in ``systematic_*``, would let the Hertz end, where every
+model agrees, decide). Among the *scored* rows of the combination (``not_modelled`` and
 ``outside_range`` empty, ``S_m`` finite) the recommended model ``r`` minimises ``S_m`` (the
 registry's order breaks an exact tie). Another scored model ``m`` is *tied* with ``r`` when its
-disadvantage is not significant: with ``D_j = S_m^(j) − S_r^(j)`` over the bootstrap's resamples
-``j`` of the seeds (the *same* resamples for both models: a paired bootstrap) and
-``[D_low, D_high]`` its percentile interval at the study's confidence level,
+disadvantage is not significant: with ``D_j = S_m^(j) − S_r^(j)``, ``S^(j)`` the score against the
+ensemble mean of the bootstrap's resample ``j`` of the seeds (the *same* resamples for both
+models: a paired bootstrap), and ``[D_low, D_high]`` its percentile interval at the study's
+confidence level,
 
-    tied  ⇔  D_low ≤ 2 max(ĝ_m, ĝ_r),      ĝ = max_b g_b,
+    tied  ⇔  D_low ≤ 2 max(ĝ_m, ĝ_r),      ĝ = max_b sqrt( mean_{F ∈ b} g_F² ),
 
-since a shift of the reference by at most ``g`` changes a difference of two absolute deviations
-by at most ``2g``. Otherwise it is ``worse``. A row that is not scored (not modelled, outside its
-model's stated range, :attr:`roughcontact.models.scorecard.Model.ranges`, or without a score) is
-``not scored`` and never recommended.
+since a reference off by at most ``g_F`` moves each model's rms by at most ``ĝ`` (the triangle
+inequality), so their difference by at most ``2ĝ``. Otherwise it is ``worse``. A row that is not
+scored (not modelled, outside its model's stated range,
+:attr:`roughcontact.models.scorecard.Model.ranges`, or without a score) is ``not scored`` and
+never recommended.
 
 Columns added to ``models.csv``: ``outside_range`` (why the combination lies outside the model's
 stated range; empty inside), ``decision_score`` (``S_m``), ``difference_ci_low`` /
 ``difference_ci_high`` (the paired interval of ``S_m − S_r``; 0 for ``r``), ``grid_error_measured``
-(bool: a finite grid error on a branch), ``recommended`` (bool, exactly one row per combination
-with a scored model), ``tied_with_recommended`` (bool), ``tied_models`` (on the recommended row:
-the tied models, comma-separated) and ``decision`` (``recommended``, ``tied``, ``worse``,
-``not scored``); ``rank`` (by ``max_rel_dev``) is kept. :func:`sort` orders the table by
-combination, then decision, then score; :func:`matrix_html` is the compact matrix above the long
-table of the report's page.
+(bool: a finite grid error at a resolved load), ``recommended`` (bool, exactly one row per
+combination with a scored model), ``tied_with_recommended`` (bool), ``tied_models`` (on the
+recommended row: the tied models, comma-separated) and ``decision`` (``recommended``, ``tied``,
+``worse``, ``not scored``); ``rank`` (by ``max_rel_dev``) is kept. :func:`sort` orders the table
+by combination, then decision, then score; :func:`matrix_html` is the compact matrix above the
+long table of the report's page.
 """
 from __future__ import annotations
 
@@ -42,17 +46,19 @@ import numpy as np
 
 from .statistics import interval
 
-__all__ = ["RULE", "DECISIONS", "OUTSIDE", "score", "decide", "sort", "matrix", "matrix_html", "grid_note"]
+__all__ = ["RULE", "DECISIONS", "OUTSIDE", "inputs", "score", "decide", "sort", "matrix", "matrix_html",
+           "grid_note"]
 
 #: the column naming why a row lies outside its model's stated range
 OUTSIDE = "outside_range"
 #: the values of the ``decision`` column, in the order of the sorted table
 DECISIONS = ("recommended", "tied", "worse", "not scored")
 #: the rule in one sentence, for the page's lead and the guide
-RULE = ("Decision rule: per combination, the recommended model (★) minimises S = max over the two branches of "
-        "(|systematic deviation| + grid error of the branch) among the scored rows (not not_modelled, not "
-        "outside_range); a model is tied (≈) with it when the lower end of the paired bootstrap-over-seeds "
-        "interval of S_model − S_recommended is at most twice the larger grid error, else worse.")
+RULE = ("Decision rule: per combination, the recommended model (★) minimises S = max over the two branches "
+        "(below/above the crossover) of the rms over the resolved loads of (|k_model/k_BEM - 1| + grid error "
+        "at the load) among the scored rows (not not_modelled, not outside_range); a model is tied (≈) with it "
+        "when the lower end of the paired bootstrap-over-seeds interval of S_model − S_recommended is at most "
+        "twice the larger rms grid error, else worse.")
 _MARK = {"recommended": "★", "tied": "≈", "worse": "", "not scored": "n.s."}
 
 
@@ -64,55 +70,74 @@ def _number(value) -> float:
     return value
 
 
-def score(row: dict, replicates: dict | None = None):
-    """``S`` of one scorecard row and its bootstrap replicates (module docstring).
+def inputs(k_model, k_mean, k_boot, use, branches: dict, g=None) -> dict:
+    """What the decision reads of one model on one combination.
 
     Parameters
     ----------
-    row : dict
-        A row of the scorecard with ``systematic_low``/``systematic_high``, ``n_loads_low``/
-        ``n_loads_high`` and, where measured, ``grid_error_low``/``grid_error_high``.
-    replicates : dict of str to numpy.ndarray, optional
-        Branch -> the systematic deviation on each bootstrap resample (the same resamples for
-        every model of the combination).
+    k_model, k_mean : numpy.ndarray
+        The model's and the ensemble mean's stiffness at every load.
+    k_boot : numpy.ndarray
+        The ensemble mean on each bootstrap resample of the seeds, ``(resample, load)``.
+    use : numpy.ndarray of bool
+        The resolved loads where the model has a value.
+    branches : dict of str to numpy.ndarray of bool
+        Branch name -> its loads (subsets of *use*).
+    g : numpy.ndarray, optional
+        The grid error ``k̄_coarse/k̄ − 1`` at every load (NaN: none there); ``None``: not measured.
 
     Returns
     -------
-    tuple of (float, numpy.ndarray or None, float)
-        ``S`` (NaN without a branch with resolved loads), its replicates (``None`` without
-        *replicates*) and ``ĝ = max_b g_b`` (0 where not measured).
+    dict
+        ``dev`` (resolved loads), ``boot`` (resample × resolved load), ``g`` (``|g|``, 0 where
+        unknown), ``measured`` (bool) and ``branches`` (masks over the resolved loads).
     """
-    terms, boot, g_max = [], [], 0.0
-    for branch in ("low", "high"):
-        value = _number(row.get(f"systematic_{branch}"))
-        if not math.isfinite(value) or _number(row.get(f"n_loads_{branch}", 1)) < 1:
+    use = np.asarray(use, dtype=bool)
+    grid = np.zeros(int(use.sum())) if g is None else np.abs(np.asarray(g, dtype=float)[use])
+    return {"dev": k_model[use] / k_mean[use] - 1, "boot": k_model[use] / k_boot[:, use] - 1,
+            "g": np.nan_to_num(grid, nan=0.0), "measured": bool(g is not None and np.isfinite(grid).any()),
+            "branches": {b: np.asarray(m, dtype=bool)[use] for b, m in branches.items()}}
+
+
+def score(inp: dict):
+    """``S``, its bootstrap replicates and ``ĝ`` of one model (module docstring).
+
+    Parameters
+    ----------
+    inp : dict
+        :func:`inputs`.
+
+    Returns
+    -------
+    tuple of (float, numpy.ndarray, float)
+        ``S`` (NaN without a branch with loads), ``S`` on each resample, ``ĝ``.
+    """
+    values, boots, g_hat = [], [], 0.0
+    for mask in inp["branches"].values():
+        if not mask.any():
             continue
-        g = _number(row.get(f"grid_error_{branch}"))
-        g = g if math.isfinite(g) else 0.0
-        g_max = max(g_max, g)
-        terms.append(abs(value) + g)
-        if replicates is not None and branch in replicates:
-            boot.append(np.abs(np.asarray(replicates[branch], dtype=float)) + g)
-    if not terms:
-        return math.nan, None, g_max
-    return max(terms), (np.max(boot, axis=0) if boot and len(boot) == len(terms) else None), g_max
+        g = inp["g"][mask]
+        values.append(float(np.sqrt(np.mean((np.abs(inp["dev"][mask]) + g) ** 2))))
+        boots.append(np.sqrt(np.mean((np.abs(inp["boot"][:, mask]) + g) ** 2, axis=1)))
+        g_hat = max(g_hat, float(np.sqrt(np.mean(g ** 2))))
+    if not values:
+        return math.nan, None, g_hat
+    return max(values), np.max(boots, axis=0), g_hat
 
 
 def _scored(row: dict) -> bool:
     return not row.get("not_modelled", "") and not row.get(OUTSIDE, "")
 
 
-def decide(rows: list, replicates: list | None = None, level: float = 0.95) -> list:
+def decide(rows: list, inputs_of: list, level: float = 0.95) -> list:
     """The decision columns of the rows of *one* combination (module docstring).
 
     Parameters
     ----------
     rows : list of dict
         The scorecard's rows of one combination, in the registry's order.
-    replicates : list of (dict or None), optional
-        Per row, :func:`score`'s *replicates* (branch -> systematic deviation per resample).
-        Without them (or for a pair without), a model is tied when the intervals
-        ``[systematic_*_ci_low, systematic_*_ci_high]`` give overlapping score intervals.
+    inputs_of : list of (dict or None)
+        Per row, :func:`inputs` (the same bootstrap resamples for every row); ``None``: no score.
     level : float
         The confidence level of the paired interval.
 
@@ -121,8 +146,7 @@ def decide(rows: list, replicates: list | None = None, level: float = 0.95) -> l
     list of dict
         The rows, each with the columns of the module docstring added.
     """
-    replicates = replicates if replicates is not None else [None] * len(rows)
-    scores = [score(row, boot) for row, boot in zip(rows, replicates)]
+    scores = [score(inp) if inp is not None else (math.nan, None, 0.0) for inp in inputs_of]
     eligible = [i for i, row in enumerate(rows) if _scored(row) and math.isfinite(scores[i][0])]
     best = min(eligible, key=lambda i: scores[i][0]) if eligible else None
     out = []
@@ -132,16 +156,12 @@ def decide(rows: list, replicates: list | None = None, level: float = 0.95) -> l
         if i == best:
             decision, low, high = "recommended", 0.0, 0.0
         elif i in eligible:
-            s_r, boot_r, g_r = scores[best]
-            if boot is not None and boot_r is not None:
-                low, high = interval(boot - boot_r, level)
-            else:                                   # no replicates: the score intervals' overlap
-                low = _score_bound(row, "low") - _score_bound(rows[best], "high")
-                high = _score_bound(row, "high") - _score_bound(rows[best], "low")
+            _, boot_r, g_r = scores[best]
+            low, high = interval(boot - boot_r, level)
             decision = "tied" if low <= 2 * max(g, g_r) else "worse"
         else:
             decision = "not scored"
-        measured = any(math.isfinite(_number(row.get(f"grid_error_{b}"))) for b in ("low", "high"))
+        measured = bool(inputs_of[i] is not None and inputs_of[i]["measured"])
         out.append({**row, "decision_score": s, "difference_ci_low": low, "difference_ci_high": high,
                     "grid_error_measured": measured, "recommended": decision == "recommended",
                     "tied_with_recommended": decision == "tied", "decision": decision})
@@ -149,20 +169,6 @@ def decide(rows: list, replicates: list | None = None, level: float = 0.95) -> l
     for r in out:
         r["tied_models"] = tied if r["recommended"] else ""
     return out
-
-
-def _score_bound(row: dict, end: str) -> float:
-    """The low or high end of ``S``'s interval from the branches' intervals (no replicates)."""
-    bounds = []
-    for branch in ("low", "high"):
-        lo, hi = (_number(row.get(f"systematic_{branch}_ci_{e}")) for e in ("low", "high"))
-        if not (math.isfinite(lo) and math.isfinite(hi)):
-            continue
-        g = _number(row.get(f"grid_error_{branch}"))
-        g = g if math.isfinite(g) else 0.0
-        smallest = 0.0 if lo <= 0 <= hi else min(abs(lo), abs(hi))
-        bounds.append((smallest if end == "low" else max(abs(lo), abs(hi))) + g)
-    return max(bounds) if bounds else math.nan
 
 
 def sort(table):

@@ -37,8 +37,8 @@ combination, over the same resolved loads:
   widened by that mean (``differs``: a model error that neither sampling nor grid explains).
 
 Decision (:mod:`roughcontact.study.decision`): per combination, the recommended model minimises
-``S = max_b(|systematic_b| + grid_error_b)`` (the grid error 0 where not measured, and the page
-says so) among the scored rows; the others are ``tied`` (paired bootstrap over the seeds) or
+``S = max_b sqrt(mean_{F ∈ b}(|k_model/k_BEM − 1| + |g_F|)²)`` (``g`` 0 where not measured, and
+the page says so) among the scored rows; the others are ``tied`` (paired bootstrap over the seeds) or
 ``worse``; a row outside its model's stated range (``outside_range``,
 :attr:`roughcontact.models.scorecard.Model.ranges`) is flagged and never recommended. The table
 is sorted by combination, then decision.
@@ -121,22 +121,18 @@ def _branch_weights(k_boot, k_mean, use) -> np.ndarray:
     return 1.0 / np.maximum(relative.var(axis=0, ddof=1), np.finfo(float).eps ** 2)
 
 
-def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float, replicates: dict | None = None) -> dict:
+def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict:
     """The systematic deviation of a model on one branch: the mean of ``k_model/k_BEM − 1`` over the
     loads *use*, each weighted by the inverse variance of the ensemble mean there (its bootstrap),
     with the interval of the same mean over the bootstrap's ensembles and the verdict on 0
-    (``differs``: the deviation is significant); the mean on each of the bootstrap's ensembles is
-    stored in *replicates* under *branch* (the decision's paired bootstrap)."""
+    (``differs``: the deviation is significant)."""
     keys = [f"systematic_{branch}", f"systematic_{branch}_ci_low", f"systematic_{branch}_ci_high"]
     if use.sum() < 1:
         return {**dict.fromkeys(keys, math.nan), f"systematic_{branch}_verdict": "untested: no resolved load",
                 f"n_loads_{branch}": 0}
     weight = _branch_weights(k_boot, k_mean, use)
     value = float(np.sum(weight * (k_model[use] / k_mean[use] - 1)) / weight.sum())
-    boot = (k_model[use] / k_boot[:, use] - 1) @ weight / weight.sum()
-    if replicates is not None:
-        replicates[branch] = boot
-    low, high = interval(boot, level)
+    low, high = interval((k_model[use] / k_boot[:, use] - 1) @ weight / weight.sum(), level)
     return {keys[0]: value, keys[1]: low, keys[2]: high, f"systematic_{branch}_verdict": verdict(0.0, low, high),
             f"n_loads_{branch}": int(use.sum())}
 
@@ -223,11 +219,10 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
             low, high = interval(np.abs(k_model[use] / k_boot[:, use] - 1).max(-1), level)
             inside = (dev[use] >= band[0][use]) & (dev[use] <= band[1][use])
             branches = {"low": use & (force_norm < f_tr), "high": use & (force_norm >= f_tr)}
-            boot = {}
-            systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level, boot),
-                          **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level, boot)}
+            systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level),
+                          **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level)}
             grid = {} if g is None else _with_grid(dev, band, g, use, branches, k_boot, k_mean, systematic)
-            combo_boot.append(boot)
+            combo_boot.append(decision.inputs(k_model, k_mean, k_boot, use, branches, g))
             combo_rows.append(unmodelled.unscored({
                 "model": name, **{a: combo[a] for a in runs.AXES["sphere"]}, "combination": label,
                 "max_rel_dev": float(np.abs(dev[use]).max()), "max_rel_dev_ci_low": low,
@@ -304,9 +299,12 @@ def _figure(path, label: str, curve, table) -> None:
             missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
             if missing:                      # not scored: dashed, the axes it ignores named
                 text += ", not modelled: " + missing
+            if len(mark) and "decision" in mark and mark["decision"].iloc[0] in ("recommended", "tied"):
+                text += " ★" if mark["decision"].iloc[0] == "recommended" else " ≈"
             ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
                         label=name + text)
-    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1", title=label)
+    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1",
+           title=label + ("" if "grid_error" in curve else " (grid error not measured)"))
     ax.legend(fontsize=7)
     fig.tight_layout()
     save_png(fig, path)

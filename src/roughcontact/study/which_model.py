@@ -138,7 +138,7 @@ def which_model_table(pages: Path = PAGES) -> str:
         "not scored (never recommended) when its model does not model an optional axis the combination sets "
         "or the combination lies outside the model's stated range (e.g. H > 1 for the self-affine models); "
         "\"no scored model\" counts combinations where no model is scored (e.g. a hardness, which no model "
-        "models). A fresh `models.csv` decides on the systematic deviations with a paired bootstrap and "
+        "models). A fresh `models.csv` decides on the rms deviation per branch with a paired bootstrap and "
         "the grid error (below, \"The decision\"); a page written from such a file keeps its own decision.", "",
         *lines])
 
