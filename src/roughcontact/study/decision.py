@@ -172,7 +172,19 @@ def decide(rows: list, inputs_of: list, level: float = 0.95) -> list:
 
 
 def sort(table):
-    """*table* ordered by combination, then :data:`DECISIONS`, then ``decision_score`` (index reset)."""
+    """The scorecard in the order of its page.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A scorecard with the decision columns (returned as is without them).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Ordered by combination, then :data:`DECISIONS`, then ``decision_score``, then model
+        (index reset).
+    """
     if not len(table) or "decision" not in table:
         return table
     order = table["decision"].map({d: i for i, d in enumerate(DECISIONS)})
@@ -209,7 +221,19 @@ def matrix(table, models=None):
 
 
 def grid_note(table) -> str:
-    """One sentence: whether the scores include a measured grid error (all, none or some combinations)."""
+    """Whether the scores include a measured grid error.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A scorecard with ``grid_error_measured``.
+
+    Returns
+    -------
+    str
+        One sentence: measured for every combination, for some of them (counted), or NOT
+        measured (then S and the ties hold the sampling error only).
+    """
     if not len(table) or "grid_error_measured" not in table:
         measured, total = 0, 0
     else:
@@ -225,7 +249,21 @@ def grid_note(table) -> str:
 
 
 def matrix_html(table, models=None) -> str:
-    """:func:`matrix` as an HTML fragment (a heading, the rule, :func:`grid_note` and the table)."""
+    """The compact matrix of the report's page.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A scorecard with the decision columns.
+    models : sequence of str, optional
+        The columns' order (:func:`matrix`).
+
+    Returns
+    -------
+    str
+        An HTML fragment: a heading, :data:`RULE`, :func:`grid_note` and :func:`matrix` as a table
+        (★ and ≈ cells shaded), closed by the heading of the long table; ``""`` without decisions.
+    """
     if not len(table) or "decision" not in table:
         return ""
     grid = matrix(table, models)

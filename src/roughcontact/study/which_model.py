@@ -55,7 +55,19 @@ def _markdown_table(lines: list) -> list:
 
 
 def read_pages(pages: Path = PAGES):
-    """The "Model scorecard" tables of the results pages in *pages*, one DataFrame, column ``preset``."""
+    """The "Model scorecard" tables of the results pages.
+
+    Parameters
+    ----------
+    pages : pathlib.Path
+        The directory of the pages (``docs/results/presets``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per table row of every page with such a table, the column ``preset`` the page's
+        name; ``rank`` and the ``max_rel_dev`` columns as numbers (NaN where empty).
+    """
     import pandas as pd
 
     frames = []
@@ -86,8 +98,20 @@ def _unscored(model: str, combination: str) -> str:
 
 
 def decide_pages(table):
-    """*table* (:func:`read_pages`) with ``decision`` per row (module docstring); a page written
-    from a ``models.csv`` with the decision keeps its own (the full rule)."""
+    """The decision of the committed rows (module docstring).
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        :func:`read_pages`.
+
+    Returns
+    -------
+    pandas.DataFrame
+        *table* with ``decision`` (``recommended``, ``tied``, ``worse``, ``not scored``) and
+        ``unscored`` (why not scored); a page written from a ``models.csv`` with the decision
+        keeps its own (the full rule).
+    """
     out = []
     for (_, _), group in table.groupby(["preset", "combination"], sort=True):
         group = group.copy()
@@ -116,7 +140,19 @@ def _counts(models) -> str:
 
 
 def which_model_table(pages: Path = PAGES) -> str:
-    """The Markdown of the "which model when" table (with its explanation) from *pages*."""
+    """The "which model when" table.
+
+    Parameters
+    ----------
+    pages : pathlib.Path
+        The directory of the results pages.
+
+    Returns
+    -------
+    str
+        Markdown: the explanation, then one row per preset and H with the combinations, the
+        recommended models and the tied ones (counts of combinations).
+    """
     decided = decide_pages(read_pages(pages))
     decided = decided.assign(hurst=[_hurst_of(c) for c in decided["combination"]])
     lines = ["| preset | H | combinations | recommended (combinations) | tied with it (combinations) "
@@ -149,8 +185,22 @@ def _hurst_of(combination: str) -> float:
 
 
 def update_guide(guide: Path = GUIDE, pages: Path = PAGES, *, check: bool = False) -> bool:
-    """Write :func:`which_model_table` between :data:`START` and :data:`END` of *guide*;
-    return whether the guide already held it (``check``: only compare)."""
+    """Write :func:`which_model_table` between :data:`START` and :data:`END` of the guide.
+
+    Parameters
+    ----------
+    guide : pathlib.Path
+        ``docs/guide/models.md``.
+    pages : pathlib.Path
+        The directory of the results pages.
+    check : bool
+        Only compare, do not write.
+
+    Returns
+    -------
+    bool
+        Whether the guide already held the table.
+    """
     text = Path(guide).read_text(encoding="utf-8")
     head, rest = text.split(START, 1)
     _, tail = rest.split(END, 1)
