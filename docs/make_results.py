@@ -26,6 +26,8 @@ FIGURE = {"zeta": ["zeta.png"], "zeta-law": ["zeta.png"], "zeta-law-fine": ["zet
           "adhesion": ["../adhesion_figures/pull_off.png"]}
 SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
                  "rms_rel_dev", "n_loads"]
+#: the scorecard's decision (roughcontact.study.decision), shown where models.csv has it
+DECISION_COLUMNS = ["decision", "decision_score", "grid_error_measured", "not_modelled", "outside_range"]
 #: Fig. 3 at the paper's setting, the figure of a preset that has it
 PAPER_FIG3 = "fig3_H0.7_R0.5_h0.009.png"
 CLAIM_COLUMNS = ["claim", "statement", "measured", "ci_low", "ci_high", "paper_value", "verdict", "reason", "note",
@@ -115,11 +117,20 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
         "",
     ]
     if (results / "models.csv").is_file() and (results / "models.csv").stat().st_size > 1:
-        models = pd.read_csv(results / "models.csv").sort_values(["combination", "rank"])
+        models = pd.read_csv(results / "models.csv")
+        decided = "decision" in models
+        if not decided:
+            models = models.sort_values(["combination", "rank"])     # a decided table comes sorted
+        columns = SCORE_COLUMNS[:2] + [c for c in DECISION_COLUMNS if c in models] + SCORE_COLUMNS[2:]
         lines += ["## Model scorecard", "",
                   "Largest relative deviation `|k_model/k_BEM - 1|` over the resolved loads of the ensemble "
-                  "mean, with its 95 % bootstrap-over-seeds interval; rank 1 is the best model of its combination.",
-                  "", _table(models[SCORE_COLUMNS]), ""]
+                  "mean, with its 95 % bootstrap-over-seeds interval; rank orders by it (1 the smallest)."
+                  + (" decision: the recommended model of its combination, the models tied with it and the worse "
+                     "ones, by the rule of roughcontact.study.decision (decision_score S = the rms of "
+                     "|k_model/k_BEM - 1| + grid error over the worse branch's loads; grid_error_measured: whether "
+                     "the grid error is in it)."
+                     if decided else ""),
+                  "", _table(models[columns]), ""]
     sticky = results / "stickiness" / "stickiness.csv"
     if sticky.is_file():
         lines += ["## Stickiness of flat surfaces (claim q)", "",

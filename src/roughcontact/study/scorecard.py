@@ -35,6 +35,13 @@ combination, over the same resolved loads:
   of the systematic deviation), and ``systematic_low_total_verdict`` /
   ``systematic_high_total_verdict``: the verdict on 0 of the systematic deviation's interval
   widened by that mean (``differs``: a model error that neither sampling nor grid explains).
+
+Decision (:mod:`roughcontact.study.decision`): per combination, the recommended model minimises
+``S = max_b sqrt(mean_{F ∈ b}(|k_model/k_BEM − 1| + |g_F|)²)`` (``g`` 0 where not measured, and
+the page says so) among the scored rows; the others are ``tied`` (paired bootstrap over the seeds) or
+``worse``; a row outside its model's stated range (``outside_range``,
+:attr:`roughcontact.models.scorecard.Model.ranges`) is flagged and never recommended. The table
+is sorted by combination, then decision.
 """
 from __future__ import annotations
 
@@ -46,7 +53,7 @@ import numpy as np
 
 from ..models import paper
 from ..models import scorecard as registry
-from . import axes, provenance, runs
+from . import axes, decision, provenance, runs
 from . import not_modelled as unmodelled
 from .ensemble import resolved
 from .plotting import pyplot, save_png
@@ -202,7 +209,7 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
         label = combo_label(combo)
         f_tr = _crossover(combo)
         g = _grid_errors(grid_error, combo, force_norm)
-        dev_of = {}
+        dev_of, combo_rows, combo_boot = {}, [], []
         for name, k_model in registry.predict(sub["force"].values, combo.surface()).items():
             use = use_load & np.isfinite(k_model)
             dev = k_model / k_mean - 1
@@ -215,15 +222,18 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
             systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level),
                           **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level)}
             grid = {} if g is None else _with_grid(dev, band, g, use, branches, k_boot, k_mean, systematic)
-            rows.append(unmodelled.unscored({
+            combo_boot.append(decision.inputs(k_model, k_mean, k_boot, use, branches, g))
+            combo_rows.append(unmodelled.unscored({
                 "model": name, **{a: combo[a] for a in runs.AXES["sphere"]}, "combination": label,
                 "max_rel_dev": float(np.abs(dev[use]).max()), "max_rel_dev_ci_low": low,
                 "max_rel_dev_ci_high": high, "rms_rel_dev": float(np.sqrt(np.mean(dev[use] ** 2))),
                 "n_loads": int(use.sum()), "force_min": float(force_norm[use].min()),
                 "force_max": float(force_norm[use].max()), "paper_setting": combo.paper_setting,
                 unmodelled.COLUMN: unmodelled.not_modelled(name, combo, L),
+                decision.OUTSIDE: registry.models()[name].outside(combo),
                 "inside_band": float(inside.mean()), "crossover_force": f_tr, **systematic, **grid,
             }))
+        rows.extend(decision.decide(combo_rows, combo_boot, level))
         curves[label] = xr.Dataset(
             {**{name: ("force", dev, {"long_name": f"k_{name}/k_BEM - 1", "units": "1"})
                 for name, dev in dev_of.items()},
@@ -237,18 +247,22 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
     table = pd.DataFrame(rows)
     if len(table):
         table["rank"] = unmodelled.rank(table, "combination")
+        table = decision.sort(table)
     return table, curves
 
 
-def scorecard_lead() -> str:
-    """The lead paragraph of the scorecard page of the report (the registered models' summaries)."""
+def scorecard_lead(table=None) -> str:
+    """The lead paragraph of the scorecard page of the report (the registered models' summaries,
+    :data:`roughcontact.study.decision.RULE` and, given the *table*, whether its grid error is measured)."""
     summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
                           for model in registry.models().values())
     optional = ", ".join(a.name for a in axes.optional_axes())
-    return ("Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
+    grid = "" if table is None else decision.grid_note(table) + " "
+    return (f"{decision.RULE} {grid}"
+            "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
             "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
             "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
-            "deviations; rank 1 is the best model of its combination; paper_setting says whether every "
+            "deviations; rank orders the scored rows by max_rel_dev alone (rank 1 the smallest; the recommended model is the rule's, above); paper_setting says whether every "
             f"optional axis ({optional}) is at the paper's value; not_modelled names the optional axes, with "
             "their values, at which the combination is off the paper's value and which the model does not "
             "model (its prediction ignores them; each model's modelled axes follow its summary at the end): such a "
@@ -260,7 +274,10 @@ def scorecard_lead() -> str:
             "bound |k_coarse/k_BEM - 1| over those loads, grid_resolved the fraction of loads where it is at "
             "most half the band, inside_band_total the fraction inside the band widened by the grid error, and "
             "the *_total_verdict columns the systematic verdicts with the grid error added to the interval "
-            f"(differs: a model error). {summaries}. models.csv holds every digit.")
+            "(differs: a model error). outside_range names why a combination lies outside the model's stated range "
+            "of validity (such a row is flagged, keeps its deviations and rank, and is never recommended); "
+            "decision_score is S, difference_ci_low/high the paired interval of S - S_recommended, "
+            f"grid_error_measured whether S includes a measured grid error. {summaries}. models.csv holds every digit.")
 
 
 def _figure(path, label: str, curve, table) -> None:
@@ -282,9 +299,12 @@ def _figure(path, label: str, curve, table) -> None:
             missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
             if missing:                      # not scored: dashed, the axes it ignores named
                 text += ", not modelled: " + missing
+            if len(mark) and "decision" in mark and mark["decision"].iloc[0] in ("recommended", "tied"):
+                text += " ★" if mark["decision"].iloc[0] == "recommended" else " ≈"
             ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
                         label=name + text)
-    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1", title=label)
+    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1",
+           title=label + ("" if "grid_error" in curve else " (grid error not measured)"))
     ax.legend(fontsize=7)
     fig.tight_layout()
     save_png(fig, path)
@@ -306,14 +326,16 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, out_csv)
     write_groups(out_nc, curves, attrs)
-    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(),
+    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(table),
+                     above=decision.matrix_html(table, list(registry.models())),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
                                       "systematic_low_total_verdict", "systematic_high_total_verdict"),
-                     first=("combination", "model", "rank", unmodelled.COLUMN, "max_rel_dev", "max_rel_dev_ci_low",
+                     first=("combination", "model", "decision", "tied_models", "decision_score", "difference_ci_low",
+                            "difference_ci_high", "rank", unmodelled.COLUMN, decision.OUTSIDE, "max_rel_dev", "max_rel_dev_ci_low",
                             "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "inside_band_total",
                             "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
                             "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",
-                            "systematic_high_total_verdict", "n_loads"))
+                            "systematic_high_total_verdict", "grid_error_measured", "n_loads"))
     names = runs.sphere_names(study, adhesive=False)
     if len(names) != len(figures):
         raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")

@@ -39,8 +39,12 @@ def _cell_text(value) -> str:
     return str(value)
 
 
-def html_table(rows, *, title: str, lead: str, verdict_columns=("verdict",), first=()) -> str:
+def html_table(rows, *, title: str, lead: str, verdict_columns=("verdict",), first=(), above: str = "") -> str:
     """One HTML page: *title*, a *lead* paragraph and *rows* (a pandas DataFrame) as a table.
+
+    *above*: an HTML fragment, trusted and written as is, between the lead and the table (the
+    scorecard's decision matrix, :func:`roughcontact.study.decision.matrix_html`); the table of
+    *rows* has the class ``rows``, so a reader (or a test) counts its rows apart from such a fragment.
 
     The columns named in *first* come first, in that order, then the others. Cells of the
     *verdict_columns* are coloured by :data:`VERDICT_COLOURS` and carry the class
@@ -69,8 +73,8 @@ def html_table(rows, *, title: str, lead: str, verdict_columns=("verdict",), fir
               f"{html.escape(str(stamp['git_commit']))}, written {html.escape(str(stamp['created_utc']))}")
     return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
             f"<style>{_STYLE}</style></head><body><h1>{html.escape(title)}</h1>"
-            f'<p class="lead">{html.escape(lead)}</p>'
-            f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+            f'<p class="lead">{html.escape(lead)}</p>{above}'
+            f'<table class="rows"><thead><tr>{head}</tr></thead><tbody>{"".join(body)}</tbody></table>'
             f"<footer>{footer}</footer></body></html>\n")
 
 

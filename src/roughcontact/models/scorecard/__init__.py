@@ -13,9 +13,9 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
-from .registry import MODELS, Model, Surface, register
+from .registry import MODELS, SELF_AFFINE, Model, Range, Surface, register
 
-__all__ = ["MODELS", "Model", "Surface", "register", "models", "predict"]
+__all__ = ["MODELS", "Model", "Range", "SELF_AFFINE", "Surface", "register", "models", "predict"]
 
 #: the modules of the seven models of Pohrt & Popov's comparison and this package's, in the
 #: order of the tables and figures; further modules of this package follow in name order

@@ -3,7 +3,7 @@ contact's scale (:mod:`roughcontact.models.superposition`)."""
 from __future__ import annotations
 
 from .. import superposition
-from .registry import Model, Surface, register
+from .registry import Model, Range, Surface, register
 
 
 def contact_scale(force, s: Surface):
@@ -24,4 +24,6 @@ register(Model(
     "contact_scale: this package's model, eqs. 10 and 12 joined by a p-norm with the roughness seen at the "
     "contact's scale, constants calibrated on named presets", contact_scale, "roughcontact.models.superposition",
     # reads the exponent, and the roll-off and cutoff through the grid's spectrum; elastic only
-    axes=("exponent", "rolloff", "cutoff")))
+    axes=("exponent", "rolloff", "cutoff"),
+    # the constants' calibration set (superposition.CALIBRATED): H 0.4, 0.7, 1.0
+    ranges=(Range("hurst", 0.4, 1.0, "calibrated on H 0.4-1.0"),)))

@@ -6,7 +6,7 @@ import numpy as np
 
 from ..asperities import asperity_parameters
 from ..greenwood_tripp import greenwood_tripp_curve, self_affine_sphere_curve
-from .registry import Model, Surface, register
+from .registry import SELF_AFFINE, Model, Surface, register
 
 #: central separations d* (units of GT's σ) of the curve: F from ~1e-7 to ~20 E*L² on the paper's sphere
 DEPTHS_STAR = np.linspace(3.5, -1.5, 11)
@@ -64,4 +64,4 @@ def greenwood_tripp(force, s: Surface):
 register(Model("greenwood_tripp", "greenwood_tripp: Greenwood & Tripp (1967) on the grid's spectral moments",
                greenwood_tripp, "doi:10.1115/1.3607616",
                # declines (None) off the paraboloid and with a roll-off or a cutoff; elastic only
-               axes=("exponent", "rolloff", "cutoff")))
+               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE))

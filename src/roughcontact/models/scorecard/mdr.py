@@ -3,7 +3,7 @@ doi:10.1103/PhysRevE.76.036710) on seeded 1D profiles of the self-affine spectru
 from __future__ import annotations
 
 from .. import mdr as mdr_model
-from .registry import Model, Surface, register
+from .registry import SELF_AFFINE, Model, Surface, register
 
 #: realisations of the MDR ensemble (relative standard error of k ≈ 0.2–1 % on the paper's sphere)
 REALIZATIONS = 1000
@@ -26,4 +26,4 @@ register(Model("mdr", "mdr: the method of dimensionality reduction, 1000 seeded 
                       "foundation", mdr, "doi:10.1103/PhysRevE.76.036710",
                # declines (None) off the paraboloid; the profiles' spectrum has the roll-off and
                # cutoff; an elastic Winkler foundation
-               axes=("exponent", "rolloff", "cutoff")))
+               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE))

@@ -3,7 +3,7 @@ Persson, JPCM 20, 215214 (2008)) from a spectrum, under the paraboloid or over a
 from __future__ import annotations
 
 from .. import persson as persson_model
-from .registry import Model, Surface, register
+from .registry import SELF_AFFINE, Model, Surface, register
 
 
 def persson(force, s: Surface):
@@ -24,4 +24,4 @@ register(Model("persson", "persson: Persson's interfacial law from the grid's sp
                           "the paraboloid", persson, "doi:10.1063/1.1388626",
                # declines (None) off the paraboloid; the grid's spectrum has the roll-off and
                # cutoff; elastic only
-               axes=("exponent", "rolloff", "cutoff")))
+               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE))

@@ -1,5 +1,6 @@
 """The registry of the scorecard's models: what a model reads (:class:`Surface`), what it is
-(:class:`Model`, with the optional sweep axes it models) and :func:`register`.
+(:class:`Model`, with the optional sweep axes it models and its stated range of validity,
+:class:`Range`) and :func:`register`.
 
 The optional sweep axes (:mod:`roughcontact.study.axes`: ``exponent``, ``rolloff``, ``cutoff``,
 ``hardness``, ``work_of_adhesion`` and any registered later) are named here by string only: the
@@ -12,7 +13,7 @@ import math
 import types
 from typing import Callable, Mapping
 
-__all__ = ["Surface", "Model", "MODELS", "register", "PERSSON_BINS_PER_DECADE"]
+__all__ = ["Surface", "Range", "Model", "MODELS", "register", "PERSSON_BINS_PER_DECADE", "SELF_AFFINE"]
 
 #: logarithmic bins per decade of a spectrum for the models that integrate over it (the grid's
 #: shells merged above the lowest modes: 130-220 bins for 129²-1025², Persson's stiffness within
@@ -97,6 +98,40 @@ class Surface:
 
 
 @dataclasses.dataclass(frozen=True)
+class Range:
+    """A model's stated range of one parameter: ``low ≤ value ≤ high``.
+
+    Attributes
+    ----------
+    name : str
+        A field of :class:`Surface` (``hurst``, ``h_rms``, ``radius``, ...) or an optional axis
+        by name, as the scorecards pass them (:meth:`Model.outside`).
+    low, high : float
+        The closed bounds (``-inf``/``inf``: none).
+    source : str
+        Where the range is stated (the paper's equation, the calibration's presets).
+    """
+
+    name: str
+    low: float
+    high: float
+    source: str = ""
+
+    def violated(self, value: float) -> str:
+        """``""`` if *value* lies in the range (or is NaN: not known), else why it does not
+        (``"hurst = 1.4 outside [0, 1] (eq. 13)"``)."""
+        if math.isnan(value) or self.low <= value <= self.high:
+            return ""
+        why = f" ({self.source})" if self.source else ""
+        return f"{self.name} = {value:g} outside [{self.low:g}, {self.high:g}]{why}"
+
+
+#: the range of the self-affine fractal surface eqs. 11-17 of Pohrt & Popov are written for
+#: (fractal dimension D = 3 - H between 2 and 3); the bound 0 is never reached by a sweep
+SELF_AFFINE = (Range("hurst", 0.0, 1.0, "self-affine fractal, 0 < H <= 1"),)
+
+
+@dataclasses.dataclass(frozen=True)
 class Model:
     """One model of the scorecard.
 
@@ -119,6 +154,12 @@ class Model:
         (returns ``None`` off its paper value). On a combination off the paper value of an
         axis the model does not declare, the scorecards keep its deviations but do not score
         it (:meth:`undeclared`; column ``not_modelled``).
+    ranges : tuple of Range
+        The model's stated range of validity (e.g. :data:`SELF_AFFINE`, or the parameters its
+        constants were calibrated on): a combination or a scan outside it keeps its row and its
+        deviations, but the row names why in the column ``outside_range``
+        (:meth:`outside`) and the row is never the recommended model
+        (:mod:`roughcontact.study.decision`). Empty: no stated range.
     """
 
     name: str
@@ -126,11 +167,32 @@ class Model:
     predict: Callable
     reference: str = ""
     axes: tuple[str, ...] = ()
+    ranges: tuple[Range, ...] = ()
 
     def __post_init__(self):
         if isinstance(self.axes, str) or not all(isinstance(a, str) for a in self.axes):
             raise TypeError(f"model {self.name!r}: axes must be a tuple of axis names, got {self.axes!r}")
         object.__setattr__(self, "axes", tuple(self.axes))
+        if not all(isinstance(r, Range) for r in self.ranges):
+            raise TypeError(f"model {self.name!r}: ranges must be a tuple of Range, got {self.ranges!r}")
+        object.__setattr__(self, "ranges", tuple(self.ranges))
+
+    def outside(self, values: Mapping[str, float]) -> str:
+        """Why a combination or scan lies outside the model's stated :attr:`ranges`.
+
+        Parameters
+        ----------
+        values : Mapping[str, float]
+            Parameter name -> value (a sweep combination, or a scan's fitted ``hurst`` and
+            ``h_rms``); a parameter the mapping lacks is not checked.
+
+        Returns
+        -------
+        str
+            ``"; "``-joined :meth:`Range.violated` texts; ``""`` inside every range.
+        """
+        return "; ".join(why for r in self.ranges if r.name in values
+                         for why in [r.violated(float(values[r.name]))] if why)
 
     def undeclared(self, off_paper: Mapping[str, float]) -> dict[str, float]:
         """The optional axes off the paper's value that the model does not declare.

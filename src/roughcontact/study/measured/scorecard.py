@@ -14,6 +14,10 @@ merged runs are off the paper's setting (a coordinate of the merged group; a mea
 paraboloid without roll-off, cutoff or hardness, so today none) and which the model does not
 declare; such a row keeps its deviations but has no ``rank``.
 
+``outside_range``: why the scan's fitted H (``hurst`` of the spectrum fit) lies outside the
+model's stated range (:attr:`roughcontact.models.scorecard.Model.ranges`; empty inside): the row
+is flagged, keeps its deviations and rank, and is not a model to recommend for this scan.
+
 Stiffnesses are compared in N/m at the same forces (N).
 """
 from __future__ import annotations
@@ -22,6 +26,7 @@ import math
 
 import numpy as np
 
+from ...models import scorecard as registry
 from .. import axes
 from .. import not_modelled as unmodelled
 from ..ensemble import resolved
@@ -37,7 +42,8 @@ MEASURED_SCORECARD_LEAD = (
     "the same deviations, inside_band the fraction of those loads where the model lies inside the bootstrap "
     "interval of the mean over the tiles; not_modelled names the optional axes off the paper's value that "
     "the model does not model (a measured run is at the paper's value of every optional axis, so it is "
-    "empty): such a row has no rank. The CSV beside this page holds every digit.")
+    "empty): such a row has no rank; outside_range names why the scan's fitted H lies outside the model's stated "
+    "range of validity (the row is flagged, not hidden, and not a model to recommend). The CSV beside this page holds every digit.")
 
 
 def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: int):
@@ -49,6 +55,7 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
     rows = []
     spectrum = predicted.get("spectrum")
     length = float(spectrum.attrs.get("tile_length", math.nan)) if spectrum is not None else math.nan
+    fitted = {"hurst": float(spectrum.attrs.get("hurst", math.nan)) if spectrum is not None else math.nan}
     for kind in ("sphere", "flat"):
         if kind not in merged or kind not in predicted:
             continue
@@ -78,7 +85,9 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
                              "inside_band": float(inside.mean()) if banded.any() else math.nan,
                              "n_loads": int(ok.sum()), "force_min_N": float(force[ok].min()),
                              "force_max_N": float(force[ok].max()), "tiles": int(runs.sizes[ensemble]),
-                             unmodelled.COLUMN: unmodelled.not_modelled(model, setting, length) if setting else ""})
+                             unmodelled.COLUMN: unmodelled.not_modelled(model, setting, length) if setting else "",
+                             "outside_range": registry.models()[model].outside(fitted)
+                             if model in registry.models() else ""})
     table = pd.DataFrame(rows)
     if len(table):
         table["rank"] = unmodelled.rank(table, ["kind", "radius"])
@@ -94,5 +103,5 @@ def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv
                                min_cells=StudySettings.of(study).fit.zeta.min_cells)
     write_csv(table, out_csv)
     write_html_table(table, out_html, title=f"Model scorecard of the scan {name}", lead=MEASURED_SCORECARD_LEAD,
-                     verdict_columns=(), first=("kind", "radius", "model", "rank", unmodelled.COLUMN, "max_rel_dev",
+                     verdict_columns=(), first=("kind", "radius", "model", "rank", unmodelled.COLUMN, "outside_range", "max_rel_dev",
                                                 "rms_rel_dev", "inside_band", "n_loads"))
