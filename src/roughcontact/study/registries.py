@@ -12,6 +12,7 @@ directory, while the runs, whose ``params`` are their own settings and
 """
 from __future__ import annotations
 
+import ast
 import hashlib
 import importlib.util
 import math
@@ -22,13 +23,12 @@ __all__ = ["REGISTRIES", "listing", "code_fingerprint", "ANALYSIS_CODE"]
 #: the registries ``roughcontact list`` knows
 REGISTRIES = ("axes", "models", "claims")
 
-#: the modules (or packages) each analysis rule runs, for :func:`code_fingerprint`
+#: the entry modules of each analysis rule, for :func:`code_fingerprint` (which follows their imports)
 ANALYSIS_CODE = {
-    "models": ("roughcontact.models", "roughcontact.study.scorecard", "roughcontact.study.statistics",
-               "roughcontact.study.grid_error", "roughcontact.study.axes"),
-    "claims": ("roughcontact.study.claims", "roughcontact.study.statistics", "roughcontact.study.verdicts",
-               "roughcontact.study.axes", "roughcontact.models.paper"),
-    "figures": ("roughcontact.study.figures", "roughcontact.study.plotting", "roughcontact.models.paper"),
+    "models": ("roughcontact.study.scorecard", "roughcontact.study.measured.scorecard",
+               "roughcontact.study.measured.spectrum"),
+    "claims": ("roughcontact.study.claims",),
+    "figures": ("roughcontact.study.figures",),
 }
 
 
@@ -67,27 +67,77 @@ def listing(kind: str) -> list[dict]:
     raise ValueError(f"no registry {kind!r}; allowed: {', '.join(REGISTRIES)}")
 
 
-def _sources(module: str) -> list[Path]:
-    """The ``.py`` files of *module* (every file below a package's folder)."""
+def _file_of(module: str) -> Path | None:
+    """The source file of *module* (a package's ``__init__.py``), ``None`` where there is none."""
     spec = importlib.util.find_spec(module)
-    if spec is None or spec.origin is None:
-        raise ValueError(f"no module {module!r} to fingerprint")
-    origin = Path(spec.origin)
-    if spec.submodule_search_locations:   # a package: all of its folder
-        return sorted(p for p in origin.parent.rglob("*.py"))
-    return [origin]
+    return None if spec is None or spec.origin is None else Path(spec.origin)
+
+
+def _imports(path: Path, module: str) -> set[str]:
+    """The ``roughcontact`` modules the source *path* of *module* imports (anywhere in it: a lazy
+    import inside a function counts), by name; ``from package import name`` counts the submodule
+    ``package.name`` where there is one, else the package."""
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    out = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            out.update(alias.name for alias in node.names if alias.name.startswith("roughcontact"))
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                parts = package.split(".")
+                base = ".".join(parts[:len(parts) - node.level + 1])
+                source = f"{base}.{node.module}" if node.module else base
+            else:
+                source = node.module or ""
+            if not source.startswith("roughcontact"):
+                continue
+            for alias in node.names:
+                name = f"{source}.{alias.name}"
+                out.add(name if importlib.util.find_spec(source) and _is_module(name) else source)
+    return out
+
+
+def _is_module(name: str) -> bool:
+    try:
+        return importlib.util.find_spec(name) is not None
+    except (ImportError, ValueError):   # a name that is not a module (a function of the package)
+        return False
+
+
+#: the packages whose modules are imported by discovery (the registries), not by name: every module
+#: of their folder counts where the package is imported
+DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.axes")
+
+
+def _closure(entries) -> set[Path]:
+    """The source files of *entries* and of every ``roughcontact`` module they import, transitively;
+    a registry's package (:data:`DISCOVERED`) with every module of its folder."""
+    seen, files, todo = set(), set(), list(entries)
+    while todo:
+        module = todo.pop()
+        if module in seen:
+            continue
+        seen.add(module)
+        path = _file_of(module)
+        if path is None:
+            continue
+        files.add(path)
+        if module in DISCOVERED:   # every module of the registry's package: found by discovery
+            todo += [f"{module}.{p.stem}" for p in path.parent.glob("*.py") if p.name != "__init__.py"]
+        todo += sorted(_imports(path, module))
+    return files
 
 
 def code_fingerprint(rule: str) -> str:
-    """The SHA-256 (16 hex digits) of the source of the modules the analysis *rule* runs
-    (:data:`ANALYSIS_CODE`, a new module in one of their packages included), by path relative to
-    the package and content; ``ValueError`` for a rule it does not know."""
+    """The SHA-256 (16 hex digits) of the source the analysis *rule* runs: its entry modules
+    (:data:`ANALYSIS_CODE`) and every ``roughcontact`` module they import, transitively (a
+    package with all the modules of its folder, so a new model or claim module counts), by path
+    relative to the package and content; ``ValueError`` for a rule it does not know."""
     if rule not in ANALYSIS_CODE:
         raise ValueError(f"no analysis rule {rule!r} to fingerprint; known: {', '.join(ANALYSIS_CODE)}")
     digest = hashlib.sha256()
-    root = Path(importlib.util.find_spec("roughcontact").origin).parent
-    files = sorted({path for module in ANALYSIS_CODE[rule] for path in _sources(module)})
-    for path in files:
+    root = _file_of("roughcontact").parent
+    for path in sorted(_closure(ANALYSIS_CODE[rule])):
         digest.update(str(path.relative_to(root)).encode())
         digest.update(b"\0")
         digest.update(path.read_bytes())
