@@ -67,6 +67,23 @@ def _pick(values, preferred):
     return preferred if preferred in values else values[len(values) // 2]
 
 
+def shown_combination(study) -> str | None:
+    """The name of the sphere combination of Figs. 1, 2 and 4 (H, h_rms, R near the paper's
+    0.7, 9e-3, 0.5; the paper's setting of the optional axes), whose Fig. 3 the report's
+    landing page shows; None without sphere combinations."""
+    study = StudySettings.of(study)
+    combos = _sphere_combos(study)
+    if not combos:
+        return None
+    finite = [r for r in study.radius if math.isfinite(r)]
+    want = {"hurst": _pick(study.hurst, 0.7), "h_rms": _pick(study.h_rms, 9e-3),
+            "radius": _pick(finite, 0.5) if finite else None}
+    for combo in combos:
+        if not combo["variant"] and all(combo[a] == v for a, v in want.items()):
+            return combo["name"]
+    return combos[0]["name"]
+
+
 @dataclasses.dataclass(frozen=True)
 class Inputs:
     """What the figures draw from: the study's settings, the sphere ensemble (or None),
