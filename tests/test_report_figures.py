@@ -58,3 +58,27 @@ def test_measured_stiffness_figure_is_faceted(with_models):
         assert set(models) <= labels if with_models else not set(models) & labels
     finally:
         pyplot().close(fig)
+
+
+def test_pull_off_figure_is_faceted(tmp_path, monkeypatch):
+    """Ten Hurst exponents: the pull-off figure has at most MAX_CURVES labelled curves a panel
+    and every exponent on one of them."""
+    import pandas as pd
+
+    from roughcontact.study.adhesion import figures as adhesion_figures
+
+    hursts = [round(0.1 * i, 1) for i in range(1, 11)]
+    table = pd.DataFrame([{"kind": "sphere", "hurst": h, "johnson_parameter": j, "pull_off_ratio": 0.5,
+                           "pull_off_ratio_ci_low": 0.4, "pull_off_ratio_ci_high": 0.6}
+                          for h in hursts for j in (0.1, 1.0)])
+    figures = []
+    monkeypatch.setattr(adhesion_figures, "save_png", lambda fig, path: figures.append(fig))
+    adhesion_figures._pull_off(pyplot(), table, tmp_path / "pull_off.png")
+    (fig,) = figures
+    try:
+        drawn = [ax for ax in fig.axes if ax.get_legend() is not None]
+        entries = [[t.get_text() for t in ax.get_legend().get_texts()] for ax in drawn]
+        assert all(len(e) <= MAX_CURVES for e in entries), entries
+        assert {f"H = {h:g}" for h in hursts} <= {t for e in entries for t in e}
+    finally:
+        pyplot().close(fig)

@@ -243,30 +243,39 @@ def zeta(plt, inputs: Inputs, _key):
 
 
 def collapse(plt, inputs: Inputs, _key):
-    """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16."""
+    """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16: one
+    panel per Hurst exponent and group of combinations (at most ``MAX_CURVES`` curves a panel,
+    the master curves included), one colour per combination."""
     import numpy as np
+
+    from .plotting import MAX_CURVES, chunks, panel_grid
 
     study = inputs.study
     L, E = study.grid.length, study.e_star
-    fig, ax = plt.subplots(figsize=(6, 4.6))
     y = np.geomspace(0.05, 30, 300)
-    curves = set()
-    for combo in _sphere_combos(study):
-        hurst, m = combo["hurst"], combo["exponent"]
-        j = study.hurst.index(hurst)
-        if (hurst, m) not in curves:
-            curves.add((hurst, m))
-            ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "-" if m == 2 else "--", color=f"C{j}", lw=1,
-                    label=f"eq. 16, H = {hurst:g}, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
-        zf = inputs.zeta_used(hurst)
-        ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
-        ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
-        sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
-        ok = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
-        ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{j}", alpha=0.7)
-    ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
-           title="all sphere runs (ensemble means, >= min_cells) over eq. 16")
-    ax.legend(fontsize=6)
+    facets = []
+    for hurst in study.hurst:
+        mine = [c for c in _sphere_combos(study) if c["hurst"] == hurst]
+        exponents = sorted({c["exponent"] for c in mine})
+        facets += [(hurst, exponents, group) for group in chunks(mine, MAX_CURVES - len(exponents)) if group]
+    fig, panels = panel_grid(plt, len(facets), width=5.0, height=4.0, max_columns=3, sharex=True, sharey=True)
+    for ax, (hurst, exponents, group) in zip(panels, facets):
+        for m in exponents:
+            ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "k-" if m == 2 else "k--", lw=1,
+                    label=f"eq. 16, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
+        for i, combo in enumerate(group):
+            m = combo["exponent"]
+            zf = inputs.zeta_used(hurst)
+            ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
+            ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
+            sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
+            ok = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
+            label = f"R = {combo['radius']:g}, h_rms = {combo['h_rms']:g}" + (f", {combo['variant']}" if combo["variant"] else "")
+            ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{i % 10}",
+                    alpha=0.8, label=label)
+        ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr", title=f"H = {hurst:g}")
+        ax.legend(fontsize=6)
+    fig.suptitle("all sphere runs (ensemble means, >= min_cells) over eq. 16", fontsize=9)
     fig.tight_layout()
     return fig
 

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from ..plotting import pyplot, save_png
+from ..plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
 from ..study_settings import StudySettings
 
 __all__ = ["make_adhesion_figures"]
@@ -60,20 +60,25 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path) -> 
 
 
 def _pull_off(plt, table, path) -> None:
-    fig, ax = plt.subplots(figsize=(5.6, 4.2))
     spheres = table[table["kind"] == "sphere"] if len(table) else table
-    for j, (hurst, rows) in enumerate(spheres.groupby("hurst") if len(spheres) else []):
-        y = rows["pull_off_ratio"].to_numpy(float)
-        err = np.abs(np.array([y - rows["pull_off_ratio_ci_low"], rows["pull_off_ratio_ci_high"] - y]))
-        ax.errorbar(rows["johnson_parameter"], y, yerr=np.nan_to_num(err), fmt="o", color=f"C{j}", capsize=2, ms=4,
-                    label=f"H = {hurst:g}")
-    ax.axhline(1.0, color="k", lw=0.8, ls=":", label="smooth sphere (JKR)")
-    ax.set(xscale="log", xlabel="h_rms / δ_c (Johnson)", ylabel="pull-off / JKR's −(3/2)πwR",
-           title="pull-off of rough spheres (95 % interval over seeds)")
-    if len(spheres):
-        ax.legend(fontsize=7)
-    else:
-        ax.text(0.5, 0.5, "no adhesive sphere runs", ha="center", transform=ax.transAxes)
+    series = list(spheres.groupby("hurst")) if len(spheres) else []
+    # at most MAX_CURVES - 1 Hurst exponents a panel (JKR's line is on every panel)
+    groups = chunks(enumerate(series), MAX_CURVES - 1)
+    fig, panels = panel_grid(plt, len(groups), width=5.6, height=4.2, max_columns=2, sharey=True)
+    for ax, group in zip(panels, groups):
+        for j, (hurst, rows) in group:
+            y = rows["pull_off_ratio"].to_numpy(float)
+            err = np.abs(np.array([y - rows["pull_off_ratio_ci_low"], rows["pull_off_ratio_ci_high"] - y]))
+            ax.errorbar(rows["johnson_parameter"], y, yerr=np.nan_to_num(err), fmt="o", color=f"C{j % 10}", capsize=2,
+                        ms=4, label=f"H = {hurst:g}")
+        ax.axhline(1.0, color="k", lw=0.8, ls=":", label="smooth sphere (JKR)")
+        ax.set(xscale="log", xlabel="h_rms / δ_c (Johnson)", ylabel="pull-off / JKR's −(3/2)πwR",
+               title="pull-off of rough spheres (95 % interval over seeds)")
+        ax.title.set_fontsize(9)
+        if group:
+            ax.legend(fontsize=7)
+        else:
+            ax.text(0.5, 0.5, "no adhesive sphere runs", ha="center", transform=ax.transAxes)
     fig.tight_layout()
     save_png(fig, path)
 
