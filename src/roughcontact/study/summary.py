@@ -24,7 +24,7 @@ DIGITS = 4
 #: the verdict words, in the order of the counts' columns
 VERDICTS = ("consistent", "differs", "untested", "error")
 
-_STYLE = ("font-family: system-ui, sans-serif; font-size: 13px;")
+_STYLE = "font-family: system-ui, sans-serif; font-size: 13px;"
 _TABLE = 'style="border-collapse: collapse; margin: 4px 0 12px 0;"'
 _CELL = "border: 1px solid #bbb; padding: 2px 6px; text-align: left;"
 
@@ -41,7 +41,14 @@ def fmt(value, digits: int = DIGITS) -> str:
 
 
 def _interval(low, high) -> str:
-    return f"[{fmt(low)}, {fmt(high)}]" if fmt(low) and fmt(high) else "no interval"
+    return f"[{fmt(low)}, {fmt(high)}]" if fmt(low) and fmt(high) else "—"
+
+
+def _value_interval(value, low, high) -> str:
+    """*value* [*low*, *high*]; the value alone without an interval, "—" without a value."""
+    if not fmt(value):
+        return "—"
+    return f"{fmt(value)} {_interval(low, high)}" if fmt(low) and fmt(high) else fmt(value)
 
 
 def _verdict_word(text) -> str:
@@ -132,7 +139,7 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
     parts.append("<h2>Crossover force F_tr / (E* L²): measured (95 % interval) against eq. 17</h2>")
     rows = []
     for _, r in crossover.iterrows():
-        rows.append([_combination(r), fmt(r.get("Ftr_measured")), _interval(r.get("Ftr_ci_low"), r.get("Ftr_ci_high")),
+        rows.append([_combination(r), fmt(r.get("Ftr_measured")) or "—", _interval(r.get("Ftr_ci_low"), r.get("Ftr_ci_high")),
                      fmt(r.get("Ftr_pred_fit")), fmt(r.get("Ftr_pred_estimate")), _verdict_cell(r.get("verdict_fit"))])
     parts.append(_table(["combination", "F_tr measured", "95 % interval", "eq. 17, fitted ζ",
                          "eq. 17, ζ = 1.7/(H+1)", "verdict"], rows))
@@ -151,9 +158,9 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
     for r in recommended_models(models):
         rows.append([_combination(r), f'<td class="model" style="{_CELL}"><b>{html.escape(str(r["model"]))}</b></td>',
                      fmt(r.get("max_rel_dev")),
-                     f"{fmt(r.get('systematic_low'))} {_interval(r.get('systematic_low_ci_low'), r.get('systematic_low_ci_high'))}",
+                     _value_interval(r.get("systematic_low"), r.get("systematic_low_ci_low"), r.get("systematic_low_ci_high")),
                      _verdict_cell(r.get("systematic_low_verdict")),
-                     f"{fmt(r.get('systematic_high'))} {_interval(r.get('systematic_high_ci_low'), r.get('systematic_high_ci_high'))}",
+                     _value_interval(r.get("systematic_high"), r.get("systematic_high_ci_low"), r.get("systematic_high_ci_high")),
                      _verdict_cell(r.get("systematic_high_verdict"))])
     parts.append(_table(["combination", "model", "max_rel_dev", "systematic, F < F_tr", "verdict",
                          "systematic, F > F_tr", "verdict"], rows))
