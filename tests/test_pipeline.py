@@ -43,6 +43,7 @@ def run(tmp_path_factory):
     work = tmp_path_factory.mktemp("tiny")
     proc = _snakemake(["--configfile", str(TINY), "--cores", "2"], work)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    (work / "console.log").write_text(proc.stdout + proc.stderr)  # what the user sees
     rep = _snakemake(["--configfile", str(TINY), "--report", "results/report.html"], work)
     assert rep.returncode == 0, rep.stderr[-3000:]
     cfg = config.resolve_config(config.load_config(TINY))
@@ -256,6 +257,13 @@ def test_cli_help_is_plain_text(capsys):
         cli.main(["--help"])
     out = capsys.readouterr().out
     assert "``" not in out and ":func:" not in out, out
+
+
+def test_no_warning_reaches_the_console(run):
+    """`snakemake --cores 2` on the tiny preset prints no Python warning (matplotlib's or other)."""
+    work, _ = run
+    console = (work / "console.log").read_text()
+    assert "Warning:" not in console, [line for line in console.splitlines() if "Warning" in line]
 
 
 def test_logs_and_run_provenance(run):

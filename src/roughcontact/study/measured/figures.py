@@ -132,7 +132,10 @@ def draw_stiffness(plt, merged_file, study: StudySettings, spectrum_file=None):
 def draw_stiffness_figure(plt, groups: dict, models: dict, study: StudySettings):
     """:func:`draw_stiffness` from the groups already read (``sphere``/``flat`` datasets)."""
     panels = stiffness_panels(groups, models)
-    fig, axes = panel_grid(plt, len(panels), width=4.4, height=3.6, max_columns=3, constrained_layout=True)
+    # one row per surface where its models take more than one panel, else three panels a row
+    per_surface = max(sum(1 for p in panels if p[:2] == panel[:2]) for panel in panels) if panels else 1
+    fig, axes = panel_grid(plt, len(panels), width=4.4, height=3.6,
+                           max_columns=per_surface if per_surface > 1 else 3, constrained_layout=True)
     for ax, panel in zip(axes, panels):
         draw_stiffness_panel(ax, groups, models, study, panel)
     return fig
