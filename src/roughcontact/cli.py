@@ -392,8 +392,9 @@ def _flagged(err: ConfigError, flags: dict | None = None) -> str:
 
 
 def plain_text(doc: str, width: int = 79) -> str:
-    """*doc* (reST) as plain text for ``--help``: ````literal```` and ``:role:`target``` markup
-    dropped (a role's ``~`` path shortened to its last name), each paragraph re-wrapped."""
+    """*doc* (reST) as plain text for ``--help``: the double backquotes of literals and the roles
+    (``:func:`` and the like) dropped, a role's target starting with a tilde shortened to its last
+    name, each paragraph re-wrapped to *width* columns."""
     import re
     import textwrap
 
