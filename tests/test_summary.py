@@ -37,3 +37,12 @@ def test_four_significant_digits():
     assert summary.fmt(0.123456789) == "0.1235"
     assert summary.fmt(1.2345678e11) == "1.235e+11"
     assert summary.fmt(float("nan")) == "" and summary.fmt(float("inf")) == "inf"
+
+
+def test_no_recommended_row_says_so():
+    table = _models(recommended=[False, False, True, False])
+    assert [r["model"] for r in summary.recommended_models(table)] == [summary.NO_RECOMMENDATION, "eq16_paper"]
+    html = summary.summary_html(pd.DataFrame({"claim": ["a"], "statement": ["s"], "verdict": ["consistent"]}),
+                                pd.DataFrame(), pd.DataFrame(columns=["hurst", "zeta", "zeta_ci_low", "zeta_ci_high",
+                                                                      "zeta_estimate"]), table, None)
+    assert summary.NO_RECOMMENDATION in html and "0.1235" in html

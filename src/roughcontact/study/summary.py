@@ -16,7 +16,7 @@ import math
 from . import provenance
 from .tables import VERDICT_COLOURS
 
-__all__ = ["DIGITS", "fmt", "summary_html", "write_summary", "recommended_models"]
+__all__ = ["DIGITS", "NO_RECOMMENDATION", "fmt", "summary_html", "write_summary", "recommended_models"]
 
 #: significant digits of every number on the landing page
 DIGITS = 4
@@ -83,26 +83,37 @@ def verdict_counts(claims):
     return out
 
 
+#: the model column of a combination whose scorecard recommends no model (no scored row)
+NO_RECOMMENDATION = "none (no scored model)"
+
+
 def recommended_models(models):
     """One row of *models* (``models.csv``) per sphere combination: the recommended model.
 
     The ``recommended`` column decides where the table has one (true on the recommended row,
-    or the recommended model's name); else the rank-1 model (the smallest ``max_rel_dev``)."""
+    or the recommended model's name; no true row: :data:`NO_RECOMMENDATION`, its numbers
+    empty); else the rank-1 model (the smallest ``max_rel_dev``)."""
     rows = []
     for _, group in models.groupby("combination", sort=False):
-        pick = None
         if "recommended" in group.columns:
-            flags = group["recommended"]
-            mask = flags.astype(str).str.lower().isin(("true", "1", "yes"))
-            named = group[group["model"].astype(str) == str(flags.dropna().iloc[0])] if flags.notna().any() else group.iloc[:0]
-            if mask.any():
-                pick = group[mask].iloc[0]
-            elif len(named):
-                pick = named.iloc[0]
-        if pick is None:
-            ranked = group.sort_values(["rank", "max_rel_dev"] if "rank" in group.columns else ["max_rel_dev"])
-            pick = ranked.iloc[0]
-        rows.append(pick)
+            flags = group["recommended"].astype(str).str.strip().str.lower()
+            if set(flags) <= {"true", "false", "1", "0", "nan", "", "none"}:
+                chosen = group[flags.isin(("true", "1"))]
+            else:  # the recommended model's name
+                chosen = group[group["model"].astype(str).str.lower().isin(set(flags))]
+            if len(chosen):
+                rows.append(chosen.iloc[0])
+            else:
+                empty = group.iloc[0].copy()
+                for column in empty.index:
+                    if column == "model":
+                        empty[column] = NO_RECOMMENDATION
+                    elif column in ("max_rel_dev", "rms_rel_dev") or column.startswith("systematic_"):
+                        empty[column] = float("nan") if not column.endswith("_verdict") else ""
+                rows.append(empty)
+            continue
+        ranked = group.sort_values(["rank", "max_rel_dev"] if "rank" in group.columns else ["max_rel_dev"])
+        rows.append(ranked.iloc[0])
     return rows
 
 
@@ -150,8 +161,8 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
     parts.append(_table(["H", "ζ fitted", "95 % interval", "eq. 13", "source"], rows))
     # 5. the recommended model per sphere combination
     parts.append("<h2>Recommended model per sphere combination</h2>")
-    basis = ("the scorecard's recommendation" if "recommended" in models.columns
-             else "rank 1: the smallest largest deviation max_rel_dev")
+    basis = ("the scorecard's decision (its recommended column; the model scorecard gives the rule)"
+             if "recommended" in models.columns else "rank 1: the smallest largest deviation max_rel_dev")
     parts.append(f"<p>Chosen by {html.escape(basis)}; the systematic deviation of k from the ensemble "
                  "below and above the crossover force (mean relative deviation, 95 % interval, verdict).</p>")
     rows = []
