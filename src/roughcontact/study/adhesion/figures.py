@@ -1,8 +1,8 @@
 """The report's adhesion figures: load–retract paths and the pull-off against roughness.
 
 * ``paths``: per adhesive sphere combination, the force against the approach of every seed,
-  loading (force-controlled, ``stiffness.nc``) and retracting (``adhesion.nc``), with JKR's pull-off
-  ``−(3/2)πwR`` as a line;
+  loading (force-controlled, ``stiffness.nc``, solid) and retracting (``adhesion.nc``, dashed), one
+  colour each, with JKR's pull-off ``−(3/2)πwR`` as a line;
 * ``pull_off``: the pull-off over JKR's against Johnson's parameter ``h_rms/δ_c`` with the
   intervals over seeds, one marker per Hurst exponent.
 
@@ -38,11 +38,13 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path) -> 
     fig, panels = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.4 * rows), squeeze=False)
     for ax, combo in zip(panels.flat, shown):
         sub, run = ds.sel(combo), loaded.sel(combo)
+        # the seeds are replicates: one colour for loading and one for retracting, every seed drawn
+        # (not a colour per seed: eight seeds would be sixteen curves to tell apart)
         for i, seed in enumerate(sub["seed"].values):
-            color = f"C{i % 10}"
-            ax.plot(run["depth"].sel(seed=seed) / L, run["force"].values / (E * L**2), "-", color=color, lw=0.8)
+            ax.plot(run["depth"].sel(seed=seed) / L, run["force"].values / (E * L**2), "-", color="C0", lw=0.8,
+                    alpha=0.7, label="loading, every seed" if i == 0 else None)
             ax.plot(sub["retract_depth"].sel(seed=seed) / L, sub["retract_force"].sel(seed=seed) / (E * L**2), "--",
-                    color=color, lw=0.8)
+                    color="C3", lw=0.8, alpha=0.7, label="retracting, every seed" if i == 0 else None)
         jkr = -1.5 * math.pi * combo["work_of_adhesion"] * combo["radius"] / (E * L**2)
         ax.axhline(jkr, color="k", lw=0.8, ls=":", label="JKR −(3/2)πwR")
         ax.axhline(0, color="0.6", lw=0.5)
@@ -54,7 +56,7 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path) -> 
         ax.axis("off")
     if not shown:
         panels[0][0].text(0.5, 0.5, "no adhesive sphere runs", ha="center")
-    fig.suptitle("loading (solid) and retracting (dashed), every seed", fontsize=9)
+    fig.suptitle("loading (solid, blue) and retracting (dashed, red), every seed", fontsize=9)
     fig.tight_layout()
     save_png(fig, path)
 
