@@ -144,7 +144,10 @@ def fig2(plt, inputs: Inputs, _key):
 
 def fig3(plt, inputs: Inputs, key):
     """Fig. 3 for one sphere combination: the BEM ensemble, eq. 16 (any body),
-    both asymptotes and the crossover force predicted and measured (95 % interval)."""
+    both asymptotes and the crossover force predicted and measured (95 % interval); beside it,
+    where there are any, the curves beyond the paper (Greenwood-Tripp at the paper's setting, the
+    loading tangent of a plastic run) with the BEM ensemble and eq. 16 again, so that no panel
+    holds more than seven curves."""
     import numpy as np
 
     combo = key[1]
@@ -157,16 +160,24 @@ def fig3(plt, inputs: Inputs, key):
     err = np.nan_to_num(sub["k_sem"].values / (E * L))
     res = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
     zf = inputs.zeta_used(hurst)
-    fig, ax = plt.subplots(figsize=(6, 4.6))
-    ax.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
-                label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
-    if (~res).any():
-        ax.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
-                    label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
-    if "loading_k_mean" in sub and math.isfinite(combo["hardness"]):
-        ax.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
-                label="loading tangent (plastic path)")
+    plastic = "loading_k_mean" in sub and math.isfinite(combo["hardness"])
+    beyond = plastic or axes.paper_setting(combo, L)  # a second panel: the curves beyond the paper
+    fig, panels = plt.subplots(1, 2 if beyond else 1, figsize=(11, 4.6) if beyond else (6, 4.6), squeeze=False,
+                               sharex=True, sharey=True)
+    ax, other = panels[0][0], (panels[0][1] if beyond else None)
     Fg = np.geomspace(F.min() / 3, F.max() * 3, 200)
+    for target in (ax, other) if beyond else (ax,):
+        target.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
+                        label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
+        if (~res).any():
+            target.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
+                            label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
+    if beyond:
+        other.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf, exponent=m) / (E * L),
+                   "k-", lw=1.5, label=f"eq. 16, fitted zeta = {zf:.3g}")
+    if plastic:
+        other.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
+                   label="loading tangent (plastic path)")
     body = "Hertz, eq. 9" if m == 2 else f"smooth body m = {m:g}, eq. 7"
     for zeta, style, text in ((zf, "k-", f"eq. 16, fitted zeta = {zf:.3g}"),
                               (float(paper.zeta_estimate(hurst)), "k:", "eq. 16, zeta = 1.7/(H+1)")):
@@ -181,8 +192,8 @@ def fig3(plt, inputs: Inputs, key):
 
         gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
         shown = (gt.force >= Fg[0] * E * L**2) & (gt.force <= Fg[-1] * E * L**2)
-        ax.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
-                label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
+        other.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
+                   label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
     cross = inputs.crossover
     if len(cross):
         row = cross
@@ -198,9 +209,12 @@ def fig3(plt, inputs: Inputs, key):
                            label=f"F_tr measured = {r['Ftr_measured']:.2g} "
                                  f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
                 ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
-    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
-           title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {combo['variant']}".strip())
+    title = f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {combo['variant']}".strip()
+    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)", title=title)
     ax.legend(fontsize=6.5, loc="upper left")
+    if beyond:
+        other.set(xscale="log", yscale="log", xlabel="F / (E* L²)", title="beyond the paper")
+        other.legend(fontsize=6.5, loc="upper left")
     fig.tight_layout()
     return fig
 

@@ -144,7 +144,7 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
     # 2. Fig. 3
     if fig3_png is not None:
         parts.append(f"<h2>Fig. 3: stiffness against force{html.escape(fig3_title)}</h2>")
-        parts.append(f'<img class="rc-fig3" alt="Fig. 3" style="max-width: 640px; width: 100%;" '
+        parts.append(f'<img class="rc-fig3" alt="Fig. 3" style="max-width: 900px; width: 100%;" '
                      f'src="{_png_data_uri(fig3_png)}">')
     # 3. the crossover force against eq. 17
     parts.append("<h2>Crossover force F_tr / (E* L²): measured (95 % interval) against eq. 17</h2>")
