@@ -32,6 +32,7 @@ localrules:
     claims,
     models,
     figures,
+    summary,
     merge_coarse,
     grid_error,
     adhesion,
@@ -60,6 +61,7 @@ rule all:
                 rules.claims.output,
                 rules.models.output,
                 rules.figures.output,
+                rules.summary.output,
             ]
             if STUDY.generated
             else []

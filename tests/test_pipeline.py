@@ -27,6 +27,7 @@ from roughcontact.study import runfile
 from roughcontact.models import scorecard as registry
 from roughcontact.study import runs
 from roughcontact.study import settings
+from roughcontact.study.summary import NO_RECOMMENDATION
 
 ROOT = Path(__file__).resolve().parents[1]
 TINY = ROOT / "presets/tiny.yaml"
@@ -43,6 +44,7 @@ def run(tmp_path_factory):
     work = tmp_path_factory.mktemp("tiny")
     proc = _snakemake(["--configfile", str(TINY), "--cores", "2"], work)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    (work / "console.log").write_text(proc.stdout + proc.stderr)  # what the user sees
     rep = _snakemake(["--configfile", str(TINY), "--report", "results/report.html"], work)
     assert rep.returncode == 0, rep.stderr[-3000:]
     cfg = config.resolve_config(config.load_config(TINY))
@@ -229,6 +231,61 @@ def test_report_shows_its_tables_on_the_page(run, link, table, cell):
             browser.close()
     assert count == rows, f"{count} rows ({cell}) on the page for {rows} rows of {table}"
     assert header, f"the {table} page has no table header"
+
+
+@pytest.mark.skipif(_chromium() is None, reason="no Chromium on this machine (.ci/run installs it)")
+def test_report_landing_page_is_the_answer(run):
+    """In headless Chromium the report's first page shows, without a click, the verdict words,
+    the recommended model of every sphere combination and Fig. 3 (an image on screen), with no
+    SEVERE console message; the report holds no CSV data link (every table is an HTML page)."""
+    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright (the test extra) is not installed")
+    work, _ = run
+    html = (work / "results/report.html").read_text(errors="replace")
+    assert "data:text/csv" not in html, "a table is a CSV data link"
+    models = pd.read_csv(work / "results/models.csv")
+    best = set(models.loc[models["rank"] == 1, "model"])
+    severe = []
+    with sync_api.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=_chromium(), args=["--no-sandbox"])
+        try:
+            page = browser.new_page(viewport={"width": 1400, "height": 1000})
+            page.on("console", lambda msg: severe.append(msg.text) if msg.type == "error" else None)
+            page.goto((work / "results/report.html").resolve().as_uri())
+            summary = page.locator(".rc-summary")
+            summary.wait_for(timeout=20_000)
+            text = summary.inner_text()
+            # the verdicts on screen as the page opens (the report centres tall text: its top cut off)
+            top = page.locator(".rc-summary table").first.evaluate("t => t.getBoundingClientRect().top")
+            image = page.locator("img.rc-fig3")
+            image.scroll_into_view_if_needed()
+            visible = image.is_visible()
+            width = image.evaluate("img => img.naturalWidth")
+            shown_models = summary.locator("td.model").all_inner_texts()
+        finally:
+            browser.close()
+    for word in ("consistent", "differs", "untested"):
+        assert word in text, f"{word!r} is not on the first page"
+    assert shown_models and set(shown_models) <= set(models["model"]) | {NO_RECOMMENDATION}, shown_models
+    if "recommended" not in models.columns:
+        assert set(shown_models) <= best, (shown_models, best)
+    assert 0 <= top < 1000, f"the verdict table is not on screen as the page opens (top at {top} px)"
+    assert visible and width > 100, "Fig. 3 is not shown on the first page"
+    assert not severe, severe
+
+
+def test_cli_help_is_plain_text(capsys):
+    """`roughcontact --help` shows plain text: no reST markup (``literal``, :role:`...`)."""
+    with pytest.raises(SystemExit):
+        cli.main(["--help"])
+    out = capsys.readouterr().out
+    assert "``" not in out and ":func:" not in out, out
+
+
+def test_no_warning_reaches_the_console(run):
+    """`snakemake --cores 2` on the tiny preset prints no Python warning (matplotlib's or other)."""
+    work, _ = run
+    console = (work / "console.log").read_text()
+    assert "Warning:" not in console, [line for line in console.splitlines() if "Warning" in line]
 
 
 def test_logs_and_run_provenance(run):

@@ -86,7 +86,8 @@ def _add_output_options(parser) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     """The ``roughcontact`` argument parser (subcommands :data:`COMMANDS`)."""
-    p = argparse.ArgumentParser(prog="roughcontact", description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="roughcontact", description=plain_text(__doc__),
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="command", required=True)
 
     ind = sub.add_parser("indent", help="one rough-sphere (or flat, --radius inf) indentation -> NetCDF",
@@ -388,6 +389,21 @@ def _flagged(err: ConfigError, flags: dict | None = None) -> str:
     if flag is None:
         return message
     return message.replace(f"config key '{err.key}'", f"{flag} ({err.key})", 1)
+
+
+def plain_text(doc: str, width: int = 79) -> str:
+    """*doc* (reST) as plain text for ``--help``: the double backquotes of literals and the roles
+    (``:func:`` and the like) dropped, a role's target starting with a tilde shortened to its last
+    name, each paragraph re-wrapped to *width* columns."""
+    import re
+    import textwrap
+
+    text = re.sub(r":[a-z]+:`~?([^`]*)`", lambda m: m.group(1).rsplit(".", 1)[-1] if m.group(0).count("~")
+                  else m.group(1), doc)
+    text = re.sub(r"``([^`]*)``", r"\1", text)
+    text = re.sub(r"`([^`]*)`", r"\1", text)
+    paragraphs = [" ".join(par.split()) for par in text.strip().split("\n\n")]
+    return "\n\n".join(textwrap.fill(par, width, break_on_hyphens=False) for par in paragraphs if par)
 
 
 def main(argv=None) -> int:

@@ -7,8 +7,9 @@ rule adhesion:
         runs=adhesive_run_files,
     output:
         nc="results/adhesion/adhesion.nc",
-        csv=report(
-            "results/adhesion/pull_off.csv",
+        csv="results/adhesion/pull_off.csv",
+        html=report(
+            "results/adhesion/pull_off.html",
             caption="../report/pull_off_table.rst",
             category="Adhesion",
             labels={"table": "pull-off"},

@@ -47,8 +47,9 @@ rule grid_error:
         fine=rules.merge.output.stiffness,
         coarse=rules.merge_coarse.output.stiffness,
     output:
-        csv=report(
-            "results/grid_error.csv",
+        csv="results/grid_error.csv",
+        html=report(
+            "results/grid_error.html",
             caption="../report/grid_error_table.rst",
             category="Tables",
             labels={"table": "grid error"},
@@ -67,8 +68,9 @@ rule fit_zeta:
     input:
         stiffness=rules.merge.output.stiffness,
     output:
-        csv=report(
-            "results/zeta.csv",
+        csv="results/zeta.csv",
+        html=report(
+            "results/zeta.html",
             caption="../report/zeta_table.rst",
             category="Tables",
             labels={"table": "zeta(H)"},
@@ -89,8 +91,9 @@ rule crossover:
         stiffness=rules.merge.output.stiffness,
         zeta=rules.fit_zeta.output.csv,
     output:
-        csv=report(
-            "results/crossover.csv",
+        csv="results/crossover.csv",
+        html=report(
+            "results/crossover.html",
             caption="../report/crossover_table.rst",
             category="Tables",
             labels={"table": "crossover"},
@@ -110,8 +113,9 @@ rule exponents:
     input:
         stiffness=rules.merge.output.stiffness,
     output:
-        csv=report(
-            "results/exponents.csv",
+        csv="results/exponents.csv",
+        html=report(
+            "results/exponents.html",
             caption="../report/exponents_table.rst",
             category="Tables",
             labels={"table": "local exponents"},
@@ -143,12 +147,7 @@ rule claims:
         pull_off=pull_off_table,
         stickiness=stickiness_table,
     output:
-        csv=report(
-            "results/claims.csv",
-            caption="../report/claims_table.rst",
-            category="Tables",
-            labels={"table": "claims (CSV)"},
-        ),
+        csv="results/claims.csv",
         html=report(
             "results/claims.html",
             caption="../report/claims_page.rst",
@@ -172,12 +171,7 @@ rule models:
         zeta=rules.fit_zeta.output.csv,
         grid_error=grid_error_table,
     output:
-        csv=report(
-            "results/models.csv",
-            caption="../report/models_table.rst",
-            category="Tables",
-            labels={"table": "model scorecard (CSV)"},
-        ),
+        csv="results/models.csv",
         nc="results/models.nc",
         html=report(
             "results/models.html",

@@ -30,3 +30,29 @@ rule figures:
         code=CODE["figures"],  # the figures' code
     script:
         "../scripts/figures.py"
+
+
+# The report's landing page: verdict counts, headline numbers and one Fig. 3, inlined by
+# workflow/report/workflow.rst (study.summary).
+rule summary:
+    input:
+        claims=rules.claims.output.csv,
+        crossover=rules.crossover.output.csv,
+        zeta=rules.fit_zeta.output.csv,
+        models=rules.models.output.csv,
+        figures=rules.figures.output,
+    output:
+        html=report(
+            "results/summary.html",
+            caption=f"{CAPTION_DIR}/summary.rst",
+            category="0. Answer",
+            labels={"page": "summary"},
+        ),
+    log:
+        "logs/summary.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+    script:
+        "../scripts/summary.py"

@@ -109,8 +109,9 @@ rule measured_spectrum:
     input:
         surface=rules.measured_surface.output.nc,
     output:
-        csv=report(
-            "results/measured_spectrum/{topo}.csv",
+        csv="results/measured_spectrum/{topo}.csv",
+        html=report(
+            "results/measured_spectrum/{topo}.html",
             caption="../report/measured_fit_table.rst",
             category="Measured: {topo}",
             labels={"table": "spectrum fit"},

@@ -28,8 +28,9 @@ rule stickiness:
         runs=stickiness_run_files,
     output:
         nc="results/stickiness/stickiness.nc",
-        csv=report(
-            "results/stickiness/stickiness.csv",
+        csv="results/stickiness/stickiness.csv",
+        html=report(
+            "results/stickiness/stickiness.html",
             caption="../report/stickiness_table.rst",
             category="Adhesion",
             labels={"table": "stickiness"},

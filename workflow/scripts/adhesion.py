@@ -1,7 +1,9 @@
 """Snakemake `adhesion` job: the adhesive run files -> results/adhesion/adhesion.nc and pull_off.csv."""
 from roughcontact.study.adhesion.merge import run_adhesion
 from roughcontact.study.logs import log_to
+from roughcontact.study.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
     run_adhesion(snakemake.params.cfg, snakemake.input.runs, snakemake.output.nc, snakemake.output.csv)
+    csv_to_html(snakemake.output.csv, snakemake.output.html, "pull_off")

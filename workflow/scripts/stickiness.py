@@ -1,7 +1,9 @@
 """Snakemake `stickiness` job: the stickiness run files -> results/stickiness/stickiness.nc and stickiness.csv."""
 from roughcontact.study.logs import log_to
 from roughcontact.study.stickiness.merge import run_stickiness_merge
+from roughcontact.study.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
     run_stickiness_merge(snakemake.params.sweep, snakemake.input.runs, snakemake.output.nc, snakemake.output.csv)
+    csv_to_html(snakemake.output.csv, snakemake.output.html, "stickiness")

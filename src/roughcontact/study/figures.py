@@ -67,6 +67,23 @@ def _pick(values, preferred):
     return preferred if preferred in values else values[len(values) // 2]
 
 
+def shown_combination(study) -> str | None:
+    """The name of the sphere combination of Figs. 1, 2 and 4 (H, h_rms, R near the paper's
+    0.7, 9e-3, 0.5; the paper's setting of the optional axes), whose Fig. 3 the report's
+    landing page shows; None without sphere combinations."""
+    study = StudySettings.of(study)
+    combos = _sphere_combos(study)
+    if not combos:
+        return None
+    finite = [r for r in study.radius if math.isfinite(r)]
+    want = {"hurst": _pick(study.hurst, 0.7), "h_rms": _pick(study.h_rms, 9e-3),
+            "radius": _pick(finite, 0.5) if finite else None}
+    for combo in combos:
+        if not combo["variant"] and all(combo[a] == v for a, v in want.items()):
+            return combo["name"]
+    return combos[0]["name"]
+
+
 @dataclasses.dataclass(frozen=True)
 class Inputs:
     """What the figures draw from: the study's settings, the sphere ensemble (or None),
@@ -127,7 +144,10 @@ def fig2(plt, inputs: Inputs, _key):
 
 def fig3(plt, inputs: Inputs, key):
     """Fig. 3 for one sphere combination: the BEM ensemble, eq. 16 (any body),
-    both asymptotes and the crossover force predicted and measured (95 % interval)."""
+    both asymptotes and the crossover force predicted and measured (95 % interval); beside it,
+    where there are any, the curves beyond the paper (Greenwood-Tripp at the paper's setting, the
+    loading tangent of a plastic run) with the BEM ensemble and eq. 16 again, so that no panel
+    holds more than seven curves."""
     import numpy as np
 
     combo = key[1]
@@ -140,16 +160,24 @@ def fig3(plt, inputs: Inputs, key):
     err = np.nan_to_num(sub["k_sem"].values / (E * L))
     res = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
     zf = inputs.zeta_used(hurst)
-    fig, ax = plt.subplots(figsize=(6, 4.6))
-    ax.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
-                label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
-    if (~res).any():
-        ax.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
-                    label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
-    if "loading_k_mean" in sub and math.isfinite(combo["hardness"]):
-        ax.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
-                label="loading tangent (plastic path)")
+    plastic = "loading_k_mean" in sub and math.isfinite(combo["hardness"])
+    beyond = plastic or axes.paper_setting(combo, L)  # a second panel: the curves beyond the paper
+    fig, panels = plt.subplots(1, 2 if beyond else 1, figsize=(11, 4.6) if beyond else (6, 4.6), squeeze=False,
+                               sharex=True, sharey=True)
+    ax, other = panels[0][0], (panels[0][1] if beyond else None)
     Fg = np.geomspace(F.min() / 3, F.max() * 3, 200)
+    for target in (ax, other) if beyond else (ax,):
+        target.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
+                        label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
+        if (~res).any():
+            target.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
+                            label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
+    if beyond:
+        other.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf, exponent=m) / (E * L),
+                   "k-", lw=1.5, label=f"eq. 16, fitted zeta = {zf:.3g}")
+    if plastic:
+        other.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
+                   label="loading tangent (plastic path)")
     body = "Hertz, eq. 9" if m == 2 else f"smooth body m = {m:g}, eq. 7"
     for zeta, style, text in ((zf, "k-", f"eq. 16, fitted zeta = {zf:.3g}"),
                               (float(paper.zeta_estimate(hurst)), "k:", "eq. 16, zeta = 1.7/(H+1)")):
@@ -164,8 +192,8 @@ def fig3(plt, inputs: Inputs, key):
 
         gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
         shown = (gt.force >= Fg[0] * E * L**2) & (gt.force <= Fg[-1] * E * L**2)
-        ax.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
-                label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
+        other.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
+                   label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
     cross = inputs.crossover
     if len(cross):
         row = cross
@@ -181,9 +209,12 @@ def fig3(plt, inputs: Inputs, key):
                            label=f"F_tr measured = {r['Ftr_measured']:.2g} "
                                  f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
                 ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
-    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)",
-           title=f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {combo['variant']}".strip())
+    title = f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {combo['variant']}".strip()
+    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)", title=title)
     ax.legend(fontsize=6.5, loc="upper left")
+    if beyond:
+        other.set(xscale="log", yscale="log", xlabel="F / (E* L²)", title="beyond the paper")
+        other.legend(fontsize=6.5, loc="upper left")
     fig.tight_layout()
     return fig
 
@@ -226,30 +257,39 @@ def zeta(plt, inputs: Inputs, _key):
 
 
 def collapse(plt, inputs: Inputs, _key):
-    """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16."""
+    """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16: one
+    panel per Hurst exponent and group of combinations (at most ``MAX_CURVES`` curves a panel,
+    the master curves included), one colour per combination."""
     import numpy as np
+
+    from .plotting import MAX_CURVES, chunks, panel_grid
 
     study = inputs.study
     L, E = study.grid.length, study.e_star
-    fig, ax = plt.subplots(figsize=(6, 4.6))
     y = np.geomspace(0.05, 30, 300)
-    curves = set()
-    for combo in _sphere_combos(study):
-        hurst, m = combo["hurst"], combo["exponent"]
-        j = study.hurst.index(hurst)
-        if (hurst, m) not in curves:
-            curves.add((hurst, m))
-            ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "-" if m == 2 else "--", color=f"C{j}", lw=1,
-                    label=f"eq. 16, H = {hurst:g}, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
-        zf = inputs.zeta_used(hurst)
-        ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
-        ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
-        sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
-        ok = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
-        ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{j}", alpha=0.7)
-    ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr",
-           title="all sphere runs (ensemble means, >= min_cells) over eq. 16")
-    ax.legend(fontsize=6)
+    facets = []
+    for hurst in study.hurst:
+        mine = [c for c in _sphere_combos(study) if c["hurst"] == hurst]
+        exponents = sorted({c["exponent"] for c in mine})
+        facets += [(hurst, exponents, group) for group in chunks(mine, MAX_CURVES - len(exponents)) if group]
+    fig, panels = panel_grid(plt, len(facets), width=5.0, height=4.0, max_columns=3, sharex=True, sharey=True)
+    for ax, (hurst, exponents, group) in zip(panels, facets):
+        for m in exponents:
+            ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "k-" if m == 2 else "k--", lw=1,
+                    label=f"eq. 16, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
+        for i, combo in enumerate(group):
+            m = combo["exponent"]
+            zf = inputs.zeta_used(hurst)
+            ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
+            ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
+            sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
+            ok = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
+            label = f"R = {combo['radius']:g}, h_rms = {combo['h_rms']:g}" + (f", {combo['variant']}" if combo["variant"] else "")
+            ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{i % 10}",
+                    alpha=0.8, label=label)
+        ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr", title=f"H = {hurst:g}")
+        ax.legend(fontsize=6)
+    fig.suptitle("all sphere runs (ensemble means, >= min_cells) over eq. 16", fontsize=9)
     fig.tight_layout()
     return fig
 

@@ -6,7 +6,31 @@ from __future__ import annotations
 
 from . import provenance
 
-__all__ = ["pyplot", "save_png"]
+__all__ = ["MAX_CURVES", "chunks", "panel_grid", "pyplot", "save_png"]
+
+#: most curves on one panel: a figure with more is faceted into panels of at most this many
+MAX_CURVES = 7
+
+
+def chunks(items, size: int) -> list[list]:
+    """*items* in consecutive groups of at most *size* (at least one group, maybe empty)."""
+    items = list(items)
+    size = max(1, int(size))
+    return [items[i:i + size] for i in range(0, len(items), size)] or [[]]
+
+
+def panel_grid(plt, count: int, *, width: float, height: float, max_columns: int = 3, **kwargs):
+    """A figure with *count* panels (rows of at most *max_columns*): ``(fig, panels)``, the unused
+    panels switched off, *panels* a flat list of the first *count*."""
+    import math
+
+    cols = max(1, min(max_columns, count))
+    rows = max(1, math.ceil(count / cols))
+    fig, grid = plt.subplots(rows, cols, figsize=(width * cols, height * rows), squeeze=False, **kwargs)
+    flat = list(grid.flat)
+    for ax in flat[count:]:
+        ax.axis("off")
+    return fig, flat[:max(count, 1)]
 
 
 def pyplot():

@@ -13,7 +13,7 @@ import numbers
 
 from . import provenance
 
-__all__ = ["VERDICT_COLOURS", "html_table", "write_html_table"]
+__all__ = ["VERDICT_COLOURS", "TABLE_PAGES", "csv_to_html", "html_table", "write_html_table"]
 
 #: background colour of a verdict cell, by the verdict's first word (``error``: the claim's estimate raised)
 VERDICT_COLOURS = {"consistent": "#d6f5d6", "differs": "#f8d0d0", "untested": "#e6e6e6", "error": "#f5d76e"}
@@ -83,3 +83,42 @@ def write_html_table(rows, path, **kwargs) -> None:
     with provenance.atomic_path(path) as tmp:
         with open(tmp, "w", encoding="utf-8") as fh:
             fh.write(html_table(rows, **kwargs))
+
+
+#: the report's page of each CSV table the workflow writes: its title and lead paragraph
+TABLE_PAGES = {
+    "zeta": ("zeta(H)", "zeta(H) of eq. 11 fitted per Hurst exponent with its bootstrap-over-seeds interval, "
+                        "against 1.7/(H+1) (eq. 13). Every digit: results/zeta.csv."),
+    "crossover": ("Crossover force", "Per sphere combination: the crossover force measured by fitting eq. 16 with "
+                                     "its 95 % interval against eq. 17, the slopes below and above it and the "
+                                     "verdicts. Every digit: results/crossover.csv."),
+    "exponents": ("Local exponents", "The local exponent d ln k / d ln F along the load path per combination. "
+                                     "Every digit: results/exponents.csv."),
+    "grid_error": ("Grid error", "The stiffness on grid.coarse against the fine grid at every load. "
+                                 "Every digit: results/grid_error.csv."),
+    "pull_off": ("Pull-off", "The pull-off force of the adhesive runs over JKR's with the interval over seeds. "
+                             "Every digit: results/adhesion/pull_off.csv."),
+    "stickiness": ("Stickiness", "Pastewka & Robbins' stickiness: the loading slope dF/dA per (H, N) with its "
+                                 "interval over seeds. Every digit: results/stickiness/stickiness.csv."),
+    "spectrum_fit": ("Spectrum fit", "The self-affine fit of the scan's spectrum over its tiles: H, h_rms and the "
+                                     "rms slope with intervals. Every digit: the CSV file beside this page in "
+                                     "results/measured_spectrum/."),
+}
+
+
+def csv_to_html(csv_path, html_path, table: str) -> None:
+    """The CSV table *csv_path* as the report's page *html_path* (:func:`write_html_table`,
+    title and lead of :data:`TABLE_PAGES` [*table*]); the CSV stays as it is."""
+    import pandas as pd
+
+    rows = pd.read_csv(csv_path, keep_default_na=False, na_values=[""]) if _has_rows(csv_path) else pd.DataFrame()
+    title, lead = TABLE_PAGES[table]
+    verdicts = tuple(c for c in rows.columns if str(c) == "verdict" or str(c).endswith("_verdict")
+                     or str(c).startswith("verdict_"))
+    write_html_table(rows, html_path, title=title, lead=lead, verdict_columns=verdicts)
+
+
+def _has_rows(path) -> bool:
+    import os
+
+    return os.path.getsize(path) > 1

@@ -1,8 +1,8 @@
 """The report's adhesion figures: load–retract paths and the pull-off against roughness.
 
 * ``paths``: per adhesive sphere combination, the force against the approach of every seed,
-  loading (force-controlled, ``stiffness.nc``) and retracting (``adhesion.nc``), with JKR's pull-off
-  ``−(3/2)πwR`` as a line;
+  loading (force-controlled, ``stiffness.nc``, solid) and retracting (``adhesion.nc``, dashed), one
+  colour each, with JKR's pull-off ``−(3/2)πwR`` as a line;
 * ``pull_off``: the pull-off over JKR's against Johnson's parameter ``h_rms/δ_c`` with the
   intervals over seeds, one marker per Hurst exponent.
 
@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from ...models.adhesion import jkr_pull_off
-from ..plotting import pyplot, save_png
+from ..plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
 from ..study_settings import StudySettings
 
 __all__ = ["make_adhesion_figures"]
@@ -39,11 +39,13 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path) -> 
     fig, panels = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.4 * rows), squeeze=False)
     for ax, combo in zip(panels.flat, shown):
         sub, run = ds.sel(combo), loaded.sel(combo)
+        # the seeds are replicates: one colour for loading and one for retracting, every seed drawn
+        # (not a colour per seed: eight seeds would be sixteen curves to tell apart)
         for i, seed in enumerate(sub["seed"].values):
-            color = f"C{i % 10}"
-            ax.plot(run["depth"].sel(seed=seed) / L, run["force"].values / (E * L**2), "-", color=color, lw=0.8)
+            ax.plot(run["depth"].sel(seed=seed) / L, run["force"].values / (E * L**2), "-", color="C0", lw=0.8,
+                    alpha=0.7, label="loading, every seed" if i == 0 else None)
             ax.plot(sub["retract_depth"].sel(seed=seed) / L, sub["retract_force"].sel(seed=seed) / (E * L**2), "--",
-                    color=color, lw=0.8)
+                    color="C3", lw=0.8, alpha=0.7, label="retracting, every seed" if i == 0 else None)
         jkr = jkr_pull_off(radius=combo["radius"], e_star=E, work_of_adhesion=combo["work_of_adhesion"])[0] / (E * L**2)
         ax.axhline(jkr, color="k", lw=0.8, ls=":", label="JKR −(3/2)πwR")
         ax.axhline(0, color="0.6", lw=0.5)
@@ -55,26 +57,31 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path) -> 
         ax.axis("off")
     if not shown:
         panels[0][0].text(0.5, 0.5, "no adhesive sphere runs", ha="center")
-    fig.suptitle("loading (solid) and retracting (dashed), every seed", fontsize=9)
+    fig.suptitle("loading (solid, blue) and retracting (dashed, red), every seed", fontsize=9)
     fig.tight_layout()
     save_png(fig, path)
 
 
 def _pull_off(plt, table, path) -> None:
-    fig, ax = plt.subplots(figsize=(5.6, 4.2))
     spheres = table[table["kind"] == "sphere"] if len(table) else table
-    for j, (hurst, rows) in enumerate(spheres.groupby("hurst") if len(spheres) else []):
-        y = rows["pull_off_ratio"].to_numpy(float)
-        err = np.abs(np.array([y - rows["pull_off_ratio_ci_low"], rows["pull_off_ratio_ci_high"] - y]))
-        ax.errorbar(rows["johnson_parameter"], y, yerr=np.nan_to_num(err), fmt="o", color=f"C{j}", capsize=2, ms=4,
-                    label=f"H = {hurst:g}")
-    ax.axhline(1.0, color="k", lw=0.8, ls=":", label="smooth sphere (JKR)")
-    ax.set(xscale="log", xlabel="h_rms / δ_c (Johnson)", ylabel="pull-off / JKR's −(3/2)πwR",
-           title="pull-off of rough spheres (95 % interval over seeds)")
-    if len(spheres):
-        ax.legend(fontsize=7)
-    else:
-        ax.text(0.5, 0.5, "no adhesive sphere runs", ha="center", transform=ax.transAxes)
+    series = list(spheres.groupby("hurst")) if len(spheres) else []
+    # at most MAX_CURVES - 1 Hurst exponents a panel (JKR's line is on every panel)
+    groups = chunks(enumerate(series), MAX_CURVES - 1)
+    fig, panels = panel_grid(plt, len(groups), width=5.6, height=4.2, max_columns=2, sharey=True)
+    for ax, group in zip(panels, groups):
+        for j, (hurst, rows) in group:
+            y = rows["pull_off_ratio"].to_numpy(float)
+            err = np.abs(np.array([y - rows["pull_off_ratio_ci_low"], rows["pull_off_ratio_ci_high"] - y]))
+            ax.errorbar(rows["johnson_parameter"], y, yerr=np.nan_to_num(err), fmt="o", color=f"C{j % 10}", capsize=2,
+                        ms=4, label=f"H = {hurst:g}")
+        ax.axhline(1.0, color="k", lw=0.8, ls=":", label="smooth sphere (JKR)")
+        ax.set(xscale="log", xlabel="h_rms / δ_c (Johnson)", ylabel="pull-off / JKR's −(3/2)πwR",
+               title="pull-off of rough spheres (95 % interval over seeds)")
+        ax.title.set_fontsize(9)
+        if group:
+            ax.legend(fontsize=7)
+        else:
+            ax.text(0.5, 0.5, "no adhesive sphere runs", ha="center", transform=ax.transAxes)
     fig.tight_layout()
     save_png(fig, path)
 
