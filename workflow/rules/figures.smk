@@ -54,5 +54,6 @@ rule summary:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["summary"],  # the landing page's code
     script:
         "../scripts/summary.py"

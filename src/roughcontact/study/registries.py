@@ -29,6 +29,7 @@ ANALYSIS_CODE = {
                "roughcontact.study.measured.spectrum"),
     "claims": ("roughcontact.study.claims",),
     "figures": ("roughcontact.study.figures",),
+    "summary": ("roughcontact.study.summary",),
 }
 
 
