@@ -41,9 +41,9 @@ from .axes import AXES, kind_of
 from .limits import full_contact_slope
 from .measured.config import resolve_inputs
 from .study_settings import StudySettings
+from .coerce import coerce
 from .schema import (
     check_finite,
-    coerce,
     fill_defaults,
     key_text,
     load_schema,

@@ -1,4 +1,4 @@
-"""JSON-schema machinery of the configuration: load, coerce, describe, one-line errors.
+"""JSON-schema machinery of the configuration: load, describe, one-line errors.
 
 The schema is package data (:data:`SCHEMA_PATH`, ``config.schema.yaml`` beside this module);
 ``load_schema`` parses it once per modification of the file.  Nothing here
@@ -17,8 +17,8 @@ way.
 
 Numbers
 -------
-``coerce`` undoes what command lines and YAML 1.1 do to numbers.  Numbers
-must be finite (:func:`roughcontact._validate.is_finite_number`): JSON-schema
+:func:`roughcontact.study.coerce.coerce` first undoes what command lines and YAML 1.1 do to
+numbers.  Numbers must be finite (:func:`roughcontact._validate.is_finite_number`): JSON-schema
 bounds compare false against NaN, so ``check_finite`` walks the whole config
 and :func:`finite_error` rejects every NaN and infinity, except ``+inf`` where
 the schema node carries ``x-allow-inf: true`` (:data:`ALLOW_INF`; the radius
@@ -44,7 +44,6 @@ __all__ = [
     "ALLOW_INF",
     "SCHEMA_PATH",
     "check_finite",
-    "coerce",
     "fill_defaults",
     "finite_error",
     "key_text",
@@ -113,49 +112,6 @@ def _parse_schema(path: str, mtime_ns: int) -> dict:
 
     with open(path, encoding="utf-8") as fh:
         return yaml.load(fh, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-
-
-_INF_WORDS = {"inf", ".inf", "+inf", "+.inf", "infinity", "+infinity"}
-_NAN_WORDS = {"nan", ".nan"}
-
-
-def coerce(obj):
-    """Undo what command lines and YAML 1.1 do to numbers: ``--config`` passes
-    lists as strings, and PyYAML reads ``1e-5`` (no dot) and ``inf`` as strings.
-
-    Only ASCII text is read as a number.  ``inf`` and ``nan`` (any spelling)
-    become floats, so that the finiteness check names them; a numeral too large
-    for a float stays text (rejected as not a number) instead of becoming inf.
-    """
-    if isinstance(obj, Mapping):
-        return {k: coerce(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [coerce(v) for v in obj]
-    if isinstance(obj, str) and obj.isascii():
-        text = obj.strip()
-        if text.startswith("[") and text.endswith("]"):
-            import yaml
-
-            try:
-                return coerce(yaml.safe_load(text))
-            except (yaml.YAMLError, ValueError):  # not YAML, or an integer of more than 4300 digits
-                return obj
-        low = text.lower()
-        sign = -1.0 if low.startswith("-") else 1.0
-        if low.lstrip("-") in _INF_WORDS or low in _INF_WORDS:
-            return sign * math.inf
-        if low.lstrip("+-") in _NAN_WORDS:
-            return math.nan
-        try:
-            return int(text)
-        except ValueError:
-            pass
-        try:
-            value = float(text)
-        except ValueError:
-            return obj
-        return value if math.isfinite(value) else obj
-    return obj
 
 
 def printable(text: str) -> str:
