@@ -5,7 +5,7 @@ its deviation from the ensemble mean at each resolved load ``F`` and ``g_F`` the
 there (``|k̄_coarse/k̄ − 1|`` measured with ``grid.coarse``, :mod:`roughcontact.study.grid_error`;
 0 where it is not measured, and then every table and page says so), the score is the larger of
 the two branches' (below/above the crossover force of eq. 17) root-mean-square deviation, each
-load's deviation enlarged by the grid error there,
+load's deviation enlarged by the grid error there::
 
     S_m = max_b sqrt( mean_{F ∈ b} (|d_F| + g_F)² )        (``decision_score``)
 
@@ -17,7 +17,7 @@ registry's order breaks an exact tie). Another scored model ``m`` is *tied* with
 disadvantage is not significant: with ``D_j = S_m^(j) − S_r^(j)``, ``S^(j)`` the score against the
 ensemble mean of the bootstrap's resample ``j`` of the seeds (the *same* resamples for both
 models: a paired bootstrap), and ``[D_low, D_high]`` its percentile interval at the study's
-confidence level,
+confidence level::
 
     tied  ⇔  D_low ≤ 2 max(ĝ_m, ĝ_r),      ĝ = max_b sqrt( mean_{F ∈ b} g_F² ),
 
