@@ -29,9 +29,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from roughcontact.study import config
-from roughcontact.study import io as study_io
-from roughcontact.study import verdicts
+from roughcontact.study.config import resolve as config
+from roughcontact.study.files import io as study_io
+from roughcontact.study.analysis import verdicts
 
 COLUMNS = ["Ftr_measured", "Ftr_ci_low", "Ftr_ci_high", "Ftr_pred_fit", "verdict_fit",
            "Ftr_pred_estimate", "verdict_estimate"]

@@ -4,9 +4,9 @@
 
 Each WORKDIR is a directory one preset ran in (``presets/convergence-513.yaml``, ``-1025.yaml``,
 ``-2049.yaml`` and ``paper-fine.yaml`` for 2049², ``convergence-4097.yaml``): the same sphere at
-the same loads. The page holds the per-grid summary (:func:`roughcontact.study.convergence.summary`) and
+the same loads. The page holds the per-grid summary (:func:`roughcontact.study.analysis.convergence.summary`) and
 every study's stiffness against eq. 16 at each load
-(:func:`roughcontact.study.convergence.against_eq16`), with a figure. The prose
+(:func:`roughcontact.study.analysis.convergence.against_eq16`), with a figure. The prose
 of the page (the reading) lives in ``docs/results/convergence_reading.txt``, included verbatim.
 """
 from __future__ import annotations
@@ -17,7 +17,7 @@ from pathlib import Path
 import xarray as xr
 
 from make_results import _machine, _table
-from roughcontact.study import convergence
+from roughcontact.study.analysis import convergence
 
 DOCS = Path(__file__).resolve().parent
 SUMMARY_COLUMNS = ["n", "seeds", "zeta", "zeta_ci_low", "zeta_ci_high", "zeta_sphere", "zeta_sphere_ci_low",

@@ -26,7 +26,7 @@ FIGURE = {"zeta": ["zeta.png"], "zeta-law": ["zeta.png"], "zeta-law-fine": ["zet
           "adhesion": ["../adhesion_figures/pull_off.png"]}
 SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
                  "rms_rel_dev", "n_loads"]
-#: the scorecard's decision (roughcontact.study.decision), shown where models.csv has it
+#: the scorecard's decision (roughcontact.study.analysis.decision), shown where models.csv has it
 DECISION_COLUMNS = ["decision", "decision_score", "grid_error_measured", "not_modelled", "outside_range"]
 #: Fig. 3 at the paper's setting, the figure of a preset that has it
 PAPER_FIG3 = "fig3_H0.7_R0.5_h0.009.png"
@@ -126,7 +126,7 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
                   "Largest relative deviation `|k_model/k_BEM - 1|` over the resolved loads of the ensemble "
                   "mean, with its 95 % bootstrap-over-seeds interval; rank orders by it (1 the smallest)."
                   + (" decision: the recommended model of its combination, the models tied with it and the worse "
-                     "ones, by the rule of roughcontact.study.decision (decision_score S = the rms of "
+                     "ones, by the rule of roughcontact.study.analysis.decision (decision_score S = the rms of "
                      "|k_model/k_BEM - 1| + grid error over the worse branch's loads; grid_error_measured: whether "
                      "the grid error is in it)."
                      if decided else ""),

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import xarray as xr
 
-from roughcontact.study import io as study_io
+from roughcontact.study.files import io as study_io
 
 
 def assert_same_numbers(path_a, path_b) -> None:

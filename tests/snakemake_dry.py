@@ -62,9 +62,9 @@ def main(argv: list[str]) -> int:
     import snakemake.workflow  # noqa: F401
     import yaml  # noqa: F401
 
-    import roughcontact.study.config  # noqa: F401
-    import roughcontact.study.runs  # noqa: F401
-    import roughcontact.study.settings  # noqa: F401
+    import roughcontact.study.config.resolve  # noqa: F401
+    import roughcontact.study.runs.naming  # noqa: F401
+    import roughcontact.study.runs.jobs  # noqa: F401
 
     for directory in dirs:
         sys.stdout.flush()

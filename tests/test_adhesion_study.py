@@ -14,10 +14,12 @@ import xarray as xr
 import yaml
 
 from roughcontact.errors import ConfigError
-from roughcontact.study import claims, indent, provenance, settings
+from roughcontact.study import claims
+from roughcontact.study.runs import indent, jobs as settings
+from roughcontact.study.files import provenance
 from roughcontact.study.claims.adhesion import PRELOAD, SAMPLING_ALLOWANCE, method_error
-from roughcontact.study.config import load_config, study_settings
-from roughcontact.study.io import read_run
+from roughcontact.study.config.resolve import load_config, study_settings
+from roughcontact.study.files.io import read_run
 
 ROOT = Path(__file__).resolve().parents[1]
 TINY = load_config(ROOT / "presets" / "tiny.yaml")

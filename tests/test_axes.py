@@ -16,9 +16,9 @@ import yaml
 
 from roughcontact import errors
 from roughcontact.study.claims.registry import off_theory
-from roughcontact.study import config
-from roughcontact.study import io as study_io
-from roughcontact.study import runs
+from roughcontact.study.config import resolve as config
+from roughcontact.study.files import io as study_io
+from roughcontact.study.runs import naming as runs
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = {

@@ -1,4 +1,4 @@
-"""A sweep axis registered in one place (roughcontact.study.axes) reaches the schema, the
+"""A sweep axis registered in one place (roughcontact.study.config.axes) reaches the schema, the
 configuration, run names, job settings, the surface or solver arguments, the merged files'
 coordinates and the command line; the registry's own axes keep their names and hashes."""
 from __future__ import annotations
@@ -9,7 +9,9 @@ import pytest
 
 from roughcontact import errors
 from roughcontact.cli import build_parser
-from roughcontact.study import axes, config, provenance, runfile, runs, schema, settings
+from roughcontact.study.config import axes, resolve as config, schema
+from roughcontact.study.files import provenance, runfile
+from roughcontact.study.runs import naming as runs, jobs as settings
 
 BASE = {"hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 2}
 

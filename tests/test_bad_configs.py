@@ -11,7 +11,7 @@ import pytest
 import yaml
 
 from roughcontact import errors
-from roughcontact.study import config
+from roughcontact.study.config import resolve as config
 
 REPO = Path(__file__).resolve().parents[1]
 

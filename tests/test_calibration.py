@@ -6,10 +6,10 @@ import pytest
 import xarray as xr
 
 from roughcontact.models import superposition
-from roughcontact.study import calibration
-from roughcontact.study.config import resolve_config
-from roughcontact.study.io import write_groups
-from roughcontact.study.provenance import canonical_json
+from roughcontact.study.analysis import calibration
+from roughcontact.study.config.resolve import resolve_config
+from roughcontact.study.files.io import write_groups
+from roughcontact.study.files.provenance import canonical_json
 
 FORCES = np.logspace(-6, -2, 13)
 HURST = [0.5, 0.8]

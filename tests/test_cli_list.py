@@ -7,7 +7,7 @@ import pytest
 
 from roughcontact.cli import main
 from roughcontact.models import scorecard
-from roughcontact.study import axes
+from roughcontact.study.config import axes
 from roughcontact.study.claims import claims
 
 

@@ -2,7 +2,7 @@
 
 A synthetic 64² scan (0.1 µm pixels, written with SurfaceTopography's NetCDF writer as in
 ``tests/test_measured_pipeline.py``) pressed by the subcommand gives the file the pipeline's
-jobs (:func:`roughcontact.study.measured.prepare_surface`, :func:`~roughcontact.study.measured.run_job`)
+jobs (:func:`roughcontact.study.runs.measured.prepare_surface`, :func:`~roughcontact.study.runs.measured.run_job`)
 write for the same resolved config; each bad input exits 2 with one line and writes nothing.
 """
 from __future__ import annotations
@@ -16,8 +16,9 @@ ST = pytest.importorskip("SurfaceTopography")
 xr = pytest.importorskip("xarray")
 
 from roughcontact import cli, surfaces
-from roughcontact.study import config, measured, schema
-from roughcontact.study.study_settings import ForceRange, UnitSettings
+from roughcontact.study.config import resolve as config, schema
+from roughcontact.study.runs import measured
+from roughcontact.study.config.settings import ForceRange, UnitSettings
 
 E_STAR = 100.0   # GPa
 PIXEL = 0.1      # um

@@ -14,8 +14,9 @@ import yaml
 
 from roughcontact import cli
 from roughcontact import errors
-from roughcontact.study import config
-from roughcontact.study import runs, schema
+from roughcontact.study.config import resolve as config
+from roughcontact.study.runs import naming as runs
+from roughcontact.study.config import schema
 
 ROOT = Path(__file__).resolve().parents[1]
 TINY = yaml.safe_load((ROOT / "presets/tiny.yaml").read_text())

@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from roughcontact.study import convergence
-from roughcontact.study.io import write_groups
+from roughcontact.study.analysis import convergence
+from roughcontact.study.files.io import write_groups
 
 FORCES = np.array([1e-6, 1e-5, 1e-4])
 

@@ -1,4 +1,4 @@
-"""The scorecard's decision (roughcontact.study.decision): recommended, tied, worse, not scored."""
+"""The scorecard's decision (roughcontact.study.analysis.decision): recommended, tied, worse, not scored."""
 from __future__ import annotations
 
 import math
@@ -10,10 +10,10 @@ import xarray as xr
 
 from roughcontact.models import paper
 from roughcontact.models import scorecard as registry
-from roughcontact.study import decision, scorecard
-from roughcontact.study.config import resolve_config
-from roughcontact.study.statistics import bootstrap_indices
-from roughcontact.study.study_settings import StudySettings
+from roughcontact.study.analysis import decision, scorecard
+from roughcontact.study.config.resolve import resolve_config
+from roughcontact.study.analysis.statistics import bootstrap_indices
+from roughcontact.study.config.settings import StudySettings
 
 FORCE = np.geomspace(1e-5, 1e-2, 6)
 K_SHAPE = FORCE ** 0.6          # any positive stiffness curve: the decision reads ratios only
@@ -242,13 +242,13 @@ def test_the_recommended_row_is_a_scored_one(out_of_range_table):
 # --- the "which model when" table of the models guide --------------------------------------------
 
 def test_the_guide_holds_the_table_the_committed_pages_give():
-    from roughcontact.study import which_model
+    from roughcontact.study.report import which_model
 
-    assert which_model.update_guide(check=True), "rerun: PYTHONPATH=src python -m roughcontact.study.which_model"
+    assert which_model.update_guide(check=True), "rerun: PYTHONPATH=src python -m roughcontact.study.report.which_model"
 
 
 def test_each_committed_combination_with_a_scored_model_has_one_recommendation():
-    from roughcontact.study import which_model
+    from roughcontact.study.report import which_model
 
     decided = which_model.decide_pages(which_model.read_pages())
     scored = decided[decided["decision"] != "not scored"]
@@ -257,7 +257,7 @@ def test_each_committed_combination_with_a_scored_model_has_one_recommendation()
 
 
 def test_a_committed_row_above_h_1_is_not_scored():
-    from roughcontact.study import which_model
+    from roughcontact.study.report import which_model
 
     decided = which_model.decide_pages(which_model.read_pages())
     rows = decided[decided["combination"].str.startswith("H1.4_") & (decided["model"] == "eq16_paper")]
@@ -278,21 +278,21 @@ def _scan(hurst):
 
 
 def test_a_scan_fitted_above_h_1_flags_the_self_affine_model():
-    from roughcontact.study.measured.scorecard import measured_scorecard
+    from roughcontact.study.analysis.measured_scorecard import measured_scorecard
 
     table = measured_scorecard(*_scan(1.3), name="scan", min_cells=10)
     assert table["outside_range"].iloc[0].startswith("hurst = 1.3 outside [0, 1]"), table["outside_range"].iloc[0]
 
 
 def test_a_scan_fitted_inside_the_range_is_not_flagged():
-    from roughcontact.study.measured.scorecard import measured_scorecard
+    from roughcontact.study.analysis.measured_scorecard import measured_scorecard
 
     table = measured_scorecard(*_scan(0.8), name="scan", min_cells=10)
     assert table["outside_range"].iloc[0] == "", table["outside_range"].iloc[0]
 
 
 def test_the_page_shows_the_matrix_above_the_long_table(out_of_range_table):
-    from roughcontact.study.tables import html_table
+    from roughcontact.study.report.tables import html_table
 
     page = html_table(out_of_range_table, title="t", lead="l", above=decision.matrix_html(out_of_range_table))
     assert page.index("★") < page.index("<h2>Every row</h2>"), "the recommended mark above the rows"

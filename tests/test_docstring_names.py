@@ -39,10 +39,10 @@ def _resolve(name: str):
 
 
 def test_the_scan_finds_the_targets():
-    """The pattern finds a known target (roughcontact.bem.solve is named in study/indent.py): at
+    """The pattern finds a known target (roughcontact.bem.solve is named in study/runs/indent.py): at
     least 100 in the package (there were 300+ on 2026-11-27)."""
     targets = _targets()
-    assert ("roughcontact/study/indent.py", "roughcontact.bem.solve") in targets, targets[:5]
+    assert ("roughcontact/study/runs/indent.py", "roughcontact.bem.solve") in targets, targets[:5]
     assert len(targets) >= 100, len(targets)
 
 

@@ -7,11 +7,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from roughcontact.study import exponents
+from roughcontact.study.analysis import exponents
 from roughcontact.study.claims.exponents import exponent_rows
-from roughcontact.study.config import resolve_config
-from roughcontact.study.study_settings import StudySettings
-from roughcontact.study.statistics import bootstrap_indices
+from roughcontact.study.config.resolve import resolve_config
+from roughcontact.study.config.settings import StudySettings
+from roughcontact.study.analysis.statistics import bootstrap_indices
 
 FORCE = np.geomspace(1e-6, 1e-2, 13)
 

@@ -22,8 +22,8 @@ from roughcontact import bem
 from roughcontact import cli
 from roughcontact import errors
 from roughcontact import surfaces
-from roughcontact.study import config
-from roughcontact.study.schema import load_schema
+from roughcontact.study.config import resolve as config
+from roughcontact.study.config.schema import load_schema
 
 ROOT = Path(__file__).resolve().parents[1]
 BASE = config.load_config(ROOT / "config.yaml")

@@ -34,9 +34,9 @@ from workflow_paths import RUN_PATTERN
 from roughcontact import _validate
 from roughcontact import cli
 from roughcontact import errors
-from roughcontact.study import config
-from roughcontact.study import runs
-from roughcontact.study.schema import load_schema
+from roughcontact.study.config import resolve as config
+from roughcontact.study.runs import naming as runs
+from roughcontact.study.config.schema import load_schema
 
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = copy.deepcopy(load_schema(None))

@@ -1,4 +1,4 @@
-"""The grid error of an ensemble mean (roughcontact.study.grid_error) against ensembles built with a
+"""The grid error of an ensemble mean (roughcontact.study.analysis.grid_error) against ensembles built with a
 known grid error, Richardson extrapolation against a sequence with a known limit and order, and
 grid.realization_of from the configuration to the surface."""
 from __future__ import annotations
@@ -10,8 +10,9 @@ import pytest
 import xarray as xr
 
 from roughcontact import errors, surfaces
-from roughcontact.study import config, indent, runs, settings
-from roughcontact.study.grid_error import grid_error, richardson
+from roughcontact.study.config import resolve as config
+from roughcontact.study.runs import indent, naming as runs, jobs as settings
+from roughcontact.study.analysis.grid_error import grid_error, richardson
 from snakemake_dry import dry_run
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -109,7 +110,7 @@ def test_realization_of_a_coarser_grid_is_rejected():
 
 
 def test_command_line_says_a_missing_study_in_one_line(tmp_path, capsys):
-    from roughcontact.study.grid_error import main
+    from roughcontact.study.analysis.grid_error import main
 
     code = main([str(tmp_path / "coarse"), str(tmp_path / "fine"), "-o", str(tmp_path / "out.csv")])
     err = capsys.readouterr().err

@@ -4,8 +4,8 @@ from types import SimpleNamespace
 import pytest
 
 from roughcontact.errors import DomainTooSmallError, IndentError
-from roughcontact.study import indent
-from roughcontact.study.settings import JobSettings
+from roughcontact.study.runs import indent
+from roughcontact.study.runs.jobs import JobSettings
 
 SETTINGS = JobSettings(hurst=0.7, radius=0.5, h_rms=9e-3, seed=0, n=33, length=1.0, e_star=1.0, force_from=1e-5,
                        force_to=1e-3, force_count=5, tol=1e-8, stiffness_method="punch", rel_step=1e-4)

@@ -1,4 +1,4 @@
-"""The one load-path loop (roughcontact.study.path.LoadPath): each state recorded by its path
+"""The one load-path loop (roughcontact.study.runs.path.LoadPath): each state recorded by its path
 kind, one progress and log line per state, and a solver's failure translated once into an
 IndentError naming the run, the state and what to change."""
 from __future__ import annotations
@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from roughcontact.errors import ConvergenceError, IndentError
-from roughcontact.study.path import LoadPath
+from roughcontact.study.runs.path import LoadPath
 
 
 def test_each_state_is_recorded_and_reported_once():

@@ -1,4 +1,4 @@
-"""The scorecard's models from a spectrum fit (roughcontact.study.measured.models).
+"""The scorecard's models from a spectrum fit (roughcontact.study.analysis.measured_models).
 
 A fit of :func:`roughcontact.surfaces.self_affine` without a window has H and h_rms exact to
 ~1e-9 and the measured grid spectrum equal to ``self_affine_spectrum(n=...)`` to ~1e-9 (see
@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from roughcontact.models import scorecard as registry
-from roughcontact.study import scorecard
-from roughcontact.study.measured.models import crossover_force, predict
+from roughcontact.study.analysis import scorecard
+from roughcontact.study.analysis.measured_models import crossover_force, predict
 from roughcontact.models import paper
 from roughcontact.surfaces import self_affine
 from roughcontact.surfaces.spectrum_fit import fit_spectrum

@@ -1,4 +1,4 @@
-"""The measured stage (roughcontact.study.measured, workflow/rules/measured.smk).
+"""The measured stage (roughcontact.study.runs.measured, workflow/rules/measured.smk).
 
 A synthetic scan written with SurfaceTopography's NetCDF writer goes through the real
 ``snakemake`` (about 40 s on 2 cores), a power-law spectrum table through the same jobs in this
@@ -25,8 +25,10 @@ ST = pytest.importorskip("SurfaceTopography")
 
 from roughcontact import bem, surfaces
 from roughcontact.errors import ConfigError, IndentError, InputFileError
-from roughcontact.study import config, measured
-from roughcontact.study.io import read_groups
+from roughcontact.study.config import resolve as config
+from roughcontact.study.analysis.measured_merge import merge_surface
+from roughcontact.study.runs import measured
+from roughcontact.study.files.io import read_groups
 
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = Path(os.environ.get("ROUGHCONTACT_TOPOGRAPHIES", ROOT.parent / "shared" / "topographies"))
@@ -96,7 +98,7 @@ def test_config_resolves_paths_against_its_directory(tmp_path):
 
 
 def test_config_directory_is_that_of_the_last_file_naming_inputs(tmp_path):
-    from roughcontact.study.measured.config import config_directory
+    from roughcontact.study.config.measured import config_directory
 
     for sub, text in (("a", "topography: [x.nc]\n"), ("b", "spectrum: [p.csv]\n"), ("c", "hurst: [0.5]\n")):
         (tmp_path / sub).mkdir()
@@ -348,7 +350,7 @@ def test_spectrum_runs_and_merge(tmp_path):
         forces = np.geomspace(rng["from"], rng["to"], rng["count"]) * E_STAR * 3.2**2
         states = bem.load_path(z, forces, length=3.2, e_star=E_STAR, periodic=flat)
         np.testing.assert_allclose(out["stiffness"], [bem.stiffness(s) for s in states], rtol=1e-12)
-    measured.merge_surface(cfg, "spectrum", "psd", files, tmp_path / "psd.nc")
+    merge_surface(cfg, "spectrum", "psd", files, tmp_path / "psd.nc")
     groups = read_groups(tmp_path / "psd.nc")
     assert tuple(groups["sphere"]["stiffness"].dims) == ("radius", "seed", "force")
     assert groups["flat"]["seed"].values.tolist() == [0, 1]

@@ -12,8 +12,8 @@ from test_scorecard import CFG, FORCE, HURST, ZETA, _groups
 
 from roughcontact.models import paper
 from roughcontact.models import scorecard as registry
-from roughcontact.study import scorecard
-from roughcontact.study.measured.models import predict
+from roughcontact.study.analysis import scorecard
+from roughcontact.study.analysis.measured_models import predict
 from roughcontact.surfaces import self_affine
 from roughcontact.surfaces.spectrum_fit import fit_spectrum
 

@@ -18,7 +18,8 @@ from test_scorecard import CFG, FORCE, HURST, RADIUS, ZETA, _groups
 
 from roughcontact.models import paper
 from roughcontact.models import scorecard as registry
-from roughcontact.study import axes, not_modelled, scorecard
+from roughcontact.study.config import axes
+from roughcontact.study.analysis import not_modelled, scorecard
 
 ZETA_DF = pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]})
 #: a model 10 % above the ensemble: max_rel_dev 0.1 at every combination
@@ -214,7 +215,7 @@ def test_measured_rank_skips_not_modelled_rows():
 
 def test_measured_surface_is_at_the_paper_setting():
     """A measured scan's Surface (study.measured.models.surface_of) carries the paper's coordinates."""
-    from roughcontact.study.measured.models import surface_of
+    from roughcontact.study.analysis.measured_models import surface_of
     from roughcontact.surfaces import self_affine
     from roughcontact.surfaces.spectrum_fit import fit_spectrum
 
@@ -245,21 +246,21 @@ def _measured_groups(hardness=None):
 
 
 def test_measured_scorecard_at_the_paper_setting_ranks_every_model():
-    from roughcontact.study.measured.scorecard import measured_scorecard
+    from roughcontact.study.analysis.measured_scorecard import measured_scorecard
 
     table = measured_scorecard(*_measured_groups(), name="scan", min_cells=10)
     assert table["rank"].tolist() == [2.0, 1.0, 2.0, 1.0], table[["radius", "model", "rank"]].to_string()
 
 
 def test_measured_scorecard_names_an_undeclared_axis():
-    from roughcontact.study.measured.scorecard import measured_scorecard
+    from roughcontact.study.analysis.measured_scorecard import measured_scorecard
 
     table = measured_scorecard(*_measured_groups(hardness=0.5), name="scan", min_cells=10)
     assert table["not_modelled"].tolist() == ["hardness = 0.5"] * 4, table[["model", "not_modelled"]].to_string()
 
 
 def test_measured_scorecard_does_not_rank_not_modelled_rows():
-    from roughcontact.study.measured.scorecard import measured_scorecard
+    from roughcontact.study.analysis.measured_scorecard import measured_scorecard
 
     table = measured_scorecard(*_measured_groups(hardness=0.5), name="scan", min_cells=10)
     assert table["rank"].isna().all(), table[["model", "rank"]].to_string()

@@ -20,14 +20,14 @@ from workflow_paths import LOG_PATTERN, RUN_PATTERN
 from roughcontact import cli
 from roughcontact import errors
 from roughcontact.models import paper
-from roughcontact.study import config
-from roughcontact.study import indent
-from roughcontact.study import io as study_io
-from roughcontact.study import runfile
+from roughcontact.study.config import resolve as config
+from roughcontact.study.runs import indent
+from roughcontact.study.files import io as study_io
+from roughcontact.study.files import runfile
 from roughcontact.models import scorecard as registry
-from roughcontact.study import runs
-from roughcontact.study import settings
-from roughcontact.study.summary import NO_RECOMMENDATION
+from roughcontact.study.runs import naming as runs
+from roughcontact.study.runs import jobs as settings
+from roughcontact.study.report.summary import NO_RECOMMENDATION
 
 ROOT = Path(__file__).resolve().parents[1]
 TINY = ROOT / "presets/tiny.yaml"
@@ -156,7 +156,7 @@ def test_claims_table(run):
 
 def test_claims_name_why_they_are_untested(run):
     """claims.csv of the tiny preset: untested_because is a word of the vocabulary exactly on the untested rows."""
-    from roughcontact.study.statistics import UNTESTED_BECAUSE
+    from roughcontact.study.analysis.statistics import UNTESTED_BECAUSE
 
     work, _ = run
     claims = pd.read_csv(work / "results/claims.csv", keep_default_na=False, na_values=[""])

@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from roughcontact.study import config
-from roughcontact.study.measured import figures as measured_figures
-from roughcontact.study.plotting import MAX_CURVES, chunks, pyplot
-from roughcontact.study.study_settings import StudySettings
+from roughcontact.study.config import resolve as config
+from roughcontact.study.report import measured as measured_figures
+from roughcontact.study.report.plotting import MAX_CURVES, chunks, pyplot
+from roughcontact.study.config.settings import StudySettings
 
 pytest.importorskip("matplotlib")
 
@@ -65,7 +65,7 @@ def test_pull_off_figure_is_faceted(tmp_path, monkeypatch):
     and every exponent on one of them."""
     import pandas as pd
 
-    from roughcontact.study.adhesion import figures as adhesion_figures
+    from roughcontact.study.report import adhesion as adhesion_figures
 
     hursts = [round(0.1 * i, 1) for i in range(1, 11)]
     table = pd.DataFrame([{"kind": "sphere", "hurst": h, "johnson_parameter": j, "pull_off_ratio": 0.5,

@@ -1,5 +1,5 @@
-"""The one atomic NetCDF write (roughcontact.study.provenance.write_netcdf) and the one reader of
-run files of every kind (roughcontact.study.io.read_run): what each checks and the MergeError
+"""The one atomic NetCDF write (roughcontact.study.files.provenance.write_netcdf) and the one reader of
+run files of every kind (roughcontact.study.files.io.read_run): what each checks and the MergeError
 that names the file, what is wrong and what to do."""
 from __future__ import annotations
 
@@ -10,10 +10,10 @@ import pytest
 import xarray as xr
 
 from roughcontact.errors import MergeError
-from roughcontact.study import provenance, runfile
-from roughcontact.study.io import read_run
-from roughcontact.study.measured.jobs import MeasuredJob
-from roughcontact.study.settings import JobSettings
+from roughcontact.study.files import provenance, runfile
+from roughcontact.study.files.io import read_run
+from roughcontact.study.runs.measured import MeasuredJob
+from roughcontact.study.runs.jobs import JobSettings
 
 GENERATED = JobSettings(hurst=0.7, radius=0.5, h_rms=9e-3, seed=3, n=33, length=1.0, e_star=1.0, force_from=1e-3,
                         force_to=0.3, force_count=4, tol=1e-8, stiffness_method="punch", rel_step=1e-3)
@@ -104,8 +104,8 @@ def test_a_measured_run_is_checked_on_its_normalised_force_grid(tmp_path):
 
 def test_gather_places_each_run_by_its_coordinates(tmp_path):
     """Two runs (seeds 3 and 4) given in reverse order land at seed 3, 4 of the merged array;
-    their commits are collected once (roughcontact.study.merge.gather on a KindLayout)."""
-    from roughcontact.study.merge import KindLayout, gather
+    their commits are collected once (roughcontact.study.analysis.merge.gather on a KindLayout)."""
+    from roughcontact.study.analysis.merge import KindLayout, gather
 
     jobs = {seed: dataclasses.replace(GENERATED, seed=seed) for seed in (3, 4)}
     rows = []
@@ -127,8 +127,8 @@ def test_a_generated_runs_record_and_hash_are_those_of_finished_runs():
     finished result directories stay valid."""
     from pathlib import Path
 
-    from roughcontact.study import runs, settings
-    from roughcontact.study.config import load_config, resolve_config
+    from roughcontact.study.runs import naming as runs, jobs as settings
+    from roughcontact.study.config.resolve import load_config, resolve_config
 
     cfg = resolve_config(load_config(Path(__file__).resolve().parents[1] / "presets" / "tiny.yaml"))
     record = settings.job_settings(cfg, runs.runs(cfg)[0]).record()
@@ -142,7 +142,7 @@ def test_a_generated_runs_record_and_hash_are_those_of_finished_runs():
 def test_path_settings_are_derived_once_for_every_job_record():
     """A generated run's length, half-space and hardness (a pressure, hardness * E*) from its record;
     a measured run's tile length and half-space given; the solver from either record."""
-    from roughcontact.study.indent import path_settings
+    from roughcontact.study.runs.indent import path_settings
 
     plastic = dataclasses.replace(GENERATED, radius=float("inf"), options=(("hardness", 0.5),), e_star=2.0)
     p = path_settings(plastic)
@@ -157,7 +157,7 @@ def test_path_settings_are_derived_once_for_every_job_record():
 def test_the_one_writer_writes_a_stickiness_run_that_the_one_reader_reads(tmp_path):
     """write_run(kind="stickiness"): the approach path and scalars round-trip exactly; another kind
     is a ValueError naming both."""
-    from roughcontact.study.stickiness.settings import StickinessRun
+    from roughcontact.study.config.stickiness import StickinessRun
 
     run = StickinessRun(hurst=0.8, number=0.5, seed=1, n=64, length=1.0, e_star=1.0, rms_slope=0.1, cutoff=4.0,
                         range_ratio=0.05, area=0.05, steps=8, tol=1e-8)

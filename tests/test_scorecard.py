@@ -9,9 +9,9 @@ import pytest
 import xarray as xr
 
 from roughcontact.models import paper
-from roughcontact.study import scorecard
-from roughcontact.study.config import resolve_config
-from roughcontact.study.study_settings import StudySettings
+from roughcontact.study.analysis import scorecard
+from roughcontact.study.config.resolve import resolve_config
+from roughcontact.study.config.settings import StudySettings
 
 #: the study the groups stand for: one sphere combination on 129², 20 cells, 200 resamples, 95 %
 CFG = StudySettings.of(resolve_config({

@@ -1,4 +1,4 @@
-"""Pastewka & Robbins' stickiness study (roughcontact.study.stickiness): the config section, the
+"""Pastewka & Robbins' stickiness study (roughcontact.study.runs.stickiness): the config section, the
 surface and interaction of a run against the closed-form criterion, the loading slope on paths
 with known answers, the sign of the slope far from N = 1, the merged table and claim (q)."""
 from __future__ import annotations
@@ -17,11 +17,13 @@ from roughcontact.bem import solve
 from roughcontact.errors import ConfigError, MergeError
 from roughcontact.models.rough_adhesion import STICKINESS_RANGE_LIMIT
 from roughcontact import cli
-from roughcontact.study import claims, provenance, runfile
-from roughcontact.study.config import load_config, resolve_config, study_settings
-from roughcontact.study.stickiness import StickinessSettings, loading_slope, stickiness_run
-from roughcontact.study.stickiness.merge import merge_stickiness, stickiness_table, threshold
-from roughcontact.study.stickiness.run import stickiness_surface
+from roughcontact.study import claims
+from roughcontact.study.files import provenance, runfile
+from roughcontact.study.config.resolve import load_config, resolve_config, study_settings
+from roughcontact.study.config.stickiness import StickinessSettings
+from roughcontact.study.runs.stickiness import loading_slope, stickiness_run
+from roughcontact.study.analysis.stickiness import merge_stickiness, stickiness_table, threshold
+from roughcontact.study.runs.stickiness import stickiness_surface
 from roughcontact.surfaces.moments import spectral_moments
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -111,7 +113,7 @@ def test_the_tolerance_is_the_solvers_capped_at_1e_8():
 def test_the_run_file_records_the_runs_settings_and_their_hash(tmp_path, monkeypatch):
     """config and config_hash of a stickiness run file are those of its StickinessRun (the
     loading path itself replaced by a stub: what is written, not what is solved)."""
-    import roughcontact.study.stickiness.run as run_module
+    import roughcontact.study.runs.stickiness as run_module
 
     s = _settings(hurst=[0.8], number=[0.5], steps=8)
     run = s.job("H0.8_N0.5", 0)
@@ -237,7 +239,7 @@ def test_the_table_has_the_mean_slope_inside_its_interval(tmp_path):
 def test_the_merged_files_record_the_sweep_not_the_configuration(tmp_path):
     """stickiness.nc's config and config_hash are the sweep's (StickinessSettings.record): another
     generated seed does not change them; the table's rows are those of merge_stickiness."""
-    from roughcontact.study.stickiness.merge import run_stickiness_merge
+    from roughcontact.study.analysis.stickiness import run_stickiness_merge
 
     s = _settings(number=[0.5], seeds=2, steps=8)
     assert StickinessSettings.of(s) is s, "typed settings are returned unchanged"
@@ -345,7 +347,7 @@ def test_claim_q_has_no_rows_without_a_stickiness_table():
 def test_a_cohesive_failure_names_the_run_and_its_approach(monkeypatch):
     """The solver fails after two approaches: IndentError naming the run, approach 3/steps and
     what to change (the cohesive path replaced by a stub that fails)."""
-    import roughcontact.study.stickiness.run as run_module
+    import roughcontact.study.runs.stickiness as run_module
     from roughcontact.errors import ConvergenceError, IndentError
 
     def failing(z, depths, *, on_state, **kwargs):

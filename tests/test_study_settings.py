@@ -10,10 +10,10 @@ from pathlib import Path
 import pytest
 
 from roughcontact.errors import ConfigError
-from roughcontact.study import axes, schema
-from roughcontact.study.config import load_config, resolve_config, study_settings
-from roughcontact.study.provenance import canonical_json
-from roughcontact.study.study_settings import ForceRange, StudySettings
+from roughcontact.study.config import axes, schema
+from roughcontact.study.config.resolve import load_config, resolve_config, study_settings
+from roughcontact.study.files.provenance import canonical_json
+from roughcontact.study.config.settings import ForceRange, StudySettings
 
 ROOT = Path(__file__).resolve().parents[1]
 #: the schema's nested sections and the typed record that holds each
@@ -130,7 +130,7 @@ def test_an_axis_the_mapping_lacks_takes_its_paper_value(study):
 
 def test_capped_tol_is_the_solvers_at_most_1e_8():
     """The adhesive and cohesive solves' tolerance: solver.tol, at most 1e-8 (exact)."""
-    from roughcontact.study.defaults import ADHESIVE_TOL_CAP, capped_tol
+    from roughcontact.study.config.defaults import ADHESIVE_TOL_CAP, capped_tol
 
     assert ADHESIVE_TOL_CAP == 1e-8
     assert capped_tol(1e-6) == 1e-8 and capped_tol(1e-10) == 1e-10 and capped_tol(1e-8) == 1e-8
@@ -139,6 +139,6 @@ def test_capped_tol_is_the_solvers_at_most_1e_8():
 def test_solver_maxiter_defaults_to_the_solvers():
     """solver.maxiter None: the solver's default (roughcontact.bem.DEFAULT_MAXITER), else the value."""
     from roughcontact.bem import DEFAULT_MAXITER
-    from roughcontact.study.defaults import solver_maxiter
+    from roughcontact.study.config.defaults import solver_maxiter
 
     assert solver_maxiter(None) == DEFAULT_MAXITER and solver_maxiter(37) == 37

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pandas as pd
 
-from roughcontact.study import summary
+from roughcontact.study.report import summary
 
 
 def _models(**extra):

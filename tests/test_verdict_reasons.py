@@ -1,4 +1,4 @@
-"""Verdict words that explain themselves (roughcontact.study.statistics, the claims registry): every
+"""Verdict words that explain themselves (roughcontact.study.analysis.statistics, the claims registry): every
 untested row of the claims table names why in the closed vocabulary ``UNTESTED_BECAUSE`` (the
 ``untested_because`` column; empty on every other row), an untested verdict without a named reason
 is an ``error`` row, and no note states a verdict other than its row's. Checked over every
@@ -18,9 +18,9 @@ from test_claim_isolation import _ZETA, _groups, _study
 
 from roughcontact.study import claims
 from roughcontact.study.claims import Claim, register, row
-from roughcontact.study.statistics import (UNTESTED_BECAUSE, VERDICTS, judge, split_verdict, untested,
-                                           verdict_bound)
-from roughcontact.study.verdicts import crossover_table
+from roughcontact.study.analysis.statistics import (UNTESTED_BECAUSE, VERDICTS, judge, split_verdict, untested,
+                                                    verdict_bound)
+from roughcontact.study.analysis.verdicts import crossover_table
 
 #: a stickiness row of claim (q) (as in tests/test_stickiness.py), before the per-row values
 _STICKY = {"hurst": 0.8, "sticky_fraction": 0.5, "range_ratio": 0.05, "rms_slope": 0.1, "n": 512, "n_seeds": 4,

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from roughcontact.models import paper
-from roughcontact.study import statistics
-from roughcontact.study import verdicts
+from roughcontact.study.analysis import statistics
+from roughcontact.study.analysis import verdicts
 
 # The paper's Fig. 3 (R = 0.5, H = 0.7, h_rms = 9e-3, L = E* = 1, zeta = 1): F_tr = 8.0e-5 E* L^2 (eq. 17).
 RADIUS, HURST, H_RMS, LENGTH = 0.5, 0.7, 9e-3, 1.0

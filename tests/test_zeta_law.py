@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from roughcontact.study.zeta.law import fit_zeta_law
+from roughcontact.study.analysis.zeta.law import fit_zeta_law
 
 HURST = np.linspace(0.1, 1.9, 19)
 

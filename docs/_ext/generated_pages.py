@@ -10,7 +10,7 @@ from pathlib import Path
 import yaml
 
 from roughcontact import cli
-from roughcontact.study import schema
+from roughcontact.study.config import schema
 
 
 def _text(node: dict) -> str:
@@ -62,7 +62,7 @@ def configuration_reference() -> str:
     return "\n".join([
         "# Configuration reference",
         "",
-        "Generated from the package's JSON schema (`src/roughcontact/study/config.schema.yaml`) when the",
+        "Generated from the package's JSON schema (`src/roughcontact/study/config/config.schema.yaml`) when the",
         "documentation is built. Only the four sweep axes are required; every other key takes the",
         "default shown. Forces are `F/(E* L²)`; lengths are in the unit of `grid.length`.",
         "",

@@ -3,7 +3,7 @@
 :func:`is_finite_number` is the package's one rule for numbers: a real number
 (not a bool) that is finite -- or ``+inf`` where the caller allows it, which
 only the sphere radius does (``radius = inf`` is a nominally flat surface).
-NaN is never a value.  The configuration checks (:mod:`roughcontact.study.config`),
+NaN is never a value.  The configuration checks (:mod:`roughcontact.study.config.resolve`),
 the command line and the argument checks below all use it.
 """
 

@@ -2,7 +2,7 @@
 
 ``roughcontact indent --hurst 0.7 --radius 0.5 --h-rms 9e-3 --seed 0 --n 513 -o run.nc``
 runs one indentation (the same code as the Snakemake ``indent`` rule,
-:func:`roughcontact.study.indent.run_indent`) with a progress bar and writes the same
+:func:`roughcontact.study.runs.indent.run_indent`) with a progress bar and writes the same
 NetCDF file.  ``roughcontact measured scan.nc --unit um --tile 256 --radius 20 --e-star 100
 --e-star-unit GPa -o tile0.nc`` presses one tile of a measured scan in physical units (the same
 code as the Snakemake ``measured_surface`` and ``measured_indent`` rules) and writes the same
@@ -18,15 +18,16 @@ import os
 import sys
 
 from .errors import ConfigError, IndentError
-from .study import config, indent, runs, schema
-from .study.axes import AXES
+from .study.config import resolve as config, schema
+from .study.runs import indent, naming as runs
+from .study.config.axes import AXES
 from .study.registries import REGISTRIES, listing
-from .study.measured.config import (FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_newtons,
+from .study.config.measured import (FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, plain_unit, to_metres, to_newtons,
                                     to_pascals)
-from .study.settings import JobSettings, job_settings
-from .study.config import study_settings
-from .study.stickiness import StickinessSettings
-from .study.study_settings import StudySettings
+from .study.runs.jobs import JobSettings, job_settings
+from .study.config.resolve import study_settings
+from .study.config.stickiness import StickinessSettings
+from .study.config.settings import StudySettings
 
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
 _DETRENDS = ("height", "slope", "curvature", "center", "none")
@@ -95,7 +96,7 @@ def build_parser() -> argparse.ArgumentParser:
                                      "flat surface (--radius inf, periodic) along a log-spaced load path and write "
                                      "depth, stiffness and contact area per load to a NetCDF file. Forces are "
                                      "F/(E* L^2).")
-    for spec in AXES.values():  # one flag per sweep axis (roughcontact.study.axes)
+    for spec in AXES.values():  # one flag per sweep axis (roughcontact.study.config.axes)
         ind.add_argument(spec.flag, type=float, required=not spec.optional, default=None, help=spec.flag_help)
     ind.add_argument("--seed", type=int, default=0, help="random seed of the surface (default 0)")
     ind.add_argument("--n", type=int, default=None, help="grid points per side (default: config or schema)")
@@ -194,7 +195,7 @@ def _list(args) -> int:
 
 def _check_numbers(args) -> None:
     """Every number flag finite (``--radius`` may be inf), by the rule of the
-    config (:func:`roughcontact.study.schema.finite_error`); raises ConfigError."""
+    config (:func:`roughcontact.study.config.schema.finite_error`); raises ConfigError."""
     loaded = schema.load_schema(None)
     kind = runs.kind_of(args.radius)
     for name, path in _number_flags().items():
@@ -219,7 +220,7 @@ def settings_from_args(args) -> JobSettings:
     """Resolved job settings for ``roughcontact indent`` (raises ConfigError).
 
     The flags override ``--config``; what neither gives takes the schema's default
-    (:func:`roughcontact.study.config.resolve_config`)."""
+    (:func:`roughcontact.study.config.resolve.resolve_config`)."""
     _check_numbers(args)
     kind = runs.kind_of(args.radius)
     base = _mapping(config.load_config(args.config) if args.config else {}, [])
@@ -251,7 +252,7 @@ def settings_from_args(args) -> JobSettings:
 
 def measured_study_from_args(args) -> StudySettings:
     """The settings of ``roughcontact measured``: what the pipeline resolves for a config of this
-    one scan and radius (:func:`roughcontact.study.config.study_settings`; raises
+    one scan and radius (:func:`roughcontact.study.config.resolve.study_settings`; raises
     ConfigError). The scan is ``topography[0]``; forces and solver settings not given take the
     schema's defaults."""
     unit = plain_unit(args.unit)
@@ -309,7 +310,8 @@ def _measured(args) -> int:
     import tempfile
 
     from .errors import DomainTooSmallError, InputFileError
-    from .study import logs, measured
+    from .study.files import logs
+    from .study.runs import measured
 
     def bad(message: str) -> int:
         print(f"roughcontact measured: invalid argument: {message}", file=sys.stderr)
@@ -368,7 +370,7 @@ def _normalise_forces(study: StudySettings, surface, force_unit: str) -> StudySe
     import dataclasses
     import types
 
-    from .study import measured
+    from .study.runs import measured
 
     tile_length = float(measured.read_surface(surface)[2]["tile_length"])          # units.length
     unit_force = (study.e_star * to_pascals(study.units.e_star)

@@ -17,16 +17,18 @@ from roughcontact.errors import ConfigError  # noqa: E402  (numpy only)
 from roughcontact.bem import (
     SOLVER_VERSION,
 )  # noqa: E402  (a run reruns when it changes)
-from roughcontact.study import (
-    config as rc_config,
-    runs as study_runs,
-    schema,
-    settings as study_settings,
+from roughcontact.study.config import resolve as rc_config, schema  # noqa: E402
+from roughcontact.study.runs import (
+    naming as study_runs,
+    jobs as study_settings,
 )  # noqa: E402
-from roughcontact.study.study_settings import StudySettings, coarse_config  # noqa: E402
-from roughcontact.study.adhesion import merge as study_adhesion  # noqa: E402
-from roughcontact.study.stickiness import StickinessSettings  # noqa: E402
-from roughcontact.study.measured import config as measured_inputs  # noqa: E402
+from roughcontact.study.config.settings import (
+    StudySettings,
+    coarse_config,
+)  # noqa: E402
+from roughcontact.study.analysis import adhesion as study_adhesion  # noqa: E402
+from roughcontact.study.config.stickiness import StickinessSettings  # noqa: E402
+from roughcontact.study.config import measured as measured_inputs  # noqa: E402
 
 try:
     # one line naming the key and what is allowed, before any job starts; the paths of
@@ -129,7 +131,7 @@ def indent_runtime(wildcards, attempt):
 
 
 # The measured inputs (workflow/rules/measured.smk): scans by name, spectra by name, radii.
-from roughcontact.study import (
+from roughcontact.study.runs import (
     measured as study_measured,
 )  # noqa: E402  (numpy only; xarray, SurfaceTopography inside the jobs)
 

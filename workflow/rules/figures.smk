@@ -1,5 +1,5 @@
 # The paper's Figs. 1-4, zeta(H) and a collapse plot, all in the report.
-from roughcontact.study import (
+from roughcontact.study.report import (
     figures as _figures,
 )  # noqa: E402  (matplotlib only inside make_figures)
 

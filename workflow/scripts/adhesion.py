@@ -1,7 +1,7 @@
 """Snakemake `adhesion` job: the adhesive run files -> results/adhesion/adhesion.nc and pull_off.csv."""
-from roughcontact.study.adhesion.merge import run_adhesion
-from roughcontact.study.logs import log_to
-from roughcontact.study.tables import csv_to_html
+from roughcontact.study.analysis.adhesion import run_adhesion
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.report.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,6 +1,6 @@
 """Snakemake `adhesion_figures` job: adhesion.nc, stiffness.nc, pull_off.csv -> the two adhesion figures."""
-from roughcontact.study.adhesion.figures import make_adhesion_figures
-from roughcontact.study.logs import log_to
+from roughcontact.study.report.adhesion import make_adhesion_figures
+from roughcontact.study.files.logs import log_to
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,6 +1,6 @@
 """Snakemake `claims` job: crossover and zeta tables -> results/claims.csv and claims.html (the paper's claims, verdicts)."""
 from roughcontact.study.claims import run_claims
-from roughcontact.study.logs import log_to
+from roughcontact.study.files.logs import log_to
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

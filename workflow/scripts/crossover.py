@@ -1,7 +1,7 @@
 """Snakemake `crossover` job: stiffness + zeta -> results/crossover.csv (eq. 16 fitted, F_tr with a 95 % interval)."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.verdicts import run_crossover
-from roughcontact.study.tables import csv_to_html
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.analysis.verdicts import run_crossover
+from roughcontact.study.report.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,7 +1,7 @@
 """Snakemake `exponents` job: stiffness.nc -> results/exponents.csv and a figure (local d ln k/d ln F with intervals)."""
-from roughcontact.study.exponents import run_exponents
-from roughcontact.study.logs import log_to
-from roughcontact.study.tables import csv_to_html
+from roughcontact.study.analysis.exponents import run_exponents
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.report.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,6 +1,6 @@
 """Snakemake `figures` job: Figs. 1-4, zeta(H), collapse plot (PNG, in the report)."""
-from roughcontact.study.figures import make_figures
-from roughcontact.study.logs import log_to
+from roughcontact.study.report.figures import make_figures
+from roughcontact.study.files.logs import log_to
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,7 +1,7 @@
 """Snakemake `grid_error` job: stiffness.nc of the study and of its grid.coarse companion -> grid_error.csv."""
-from roughcontact.study.grid_error import run_study_grid_error
-from roughcontact.study.logs import log_to
-from roughcontact.study.tables import csv_to_html
+from roughcontact.study.analysis.grid_error import run_study_grid_error
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.report.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

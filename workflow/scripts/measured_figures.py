@@ -1,6 +1,6 @@
 """Snakemake `measured_figures` job: the report figures of one scan."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.measured.figures import make_figures
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.report.measured import make_figures
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

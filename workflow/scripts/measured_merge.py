@@ -1,6 +1,6 @@
 """Snakemake `measured_merge` / `spectrum_merge` job: the runs of one surface -> one NetCDF file."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.measured import merge_surface
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.analysis.measured_merge import merge_surface
 
 snakemake = globals()["snakemake"]
 source = snakemake.params.source

@@ -1,7 +1,7 @@
 """Snakemake `measured_spectrum` job: the spectrum fit (CSV) and the models' k(F) (NetCDF) of one scan."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.measured.spectrum import run_spectrum
-from roughcontact.study.tables import csv_to_html
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.analysis.measured_spectrum import run_spectrum
+from roughcontact.study.report.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

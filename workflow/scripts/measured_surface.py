@@ -1,6 +1,6 @@
 """Snakemake `measured_surface` job: one scan -> results/measured_surface/{topo}.nc."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.measured import prepare_surface
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.runs.measured import prepare_surface
 
 snakemake = globals()["snakemake"]
 surface = snakemake.params.cfg   # units and tile only: another setting keeps the tiles' runs

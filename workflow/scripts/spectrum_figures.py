@@ -1,6 +1,6 @@
 """Snakemake `spectrum_figures` job: the report figure of one measured spectrum."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.measured.figures import make_spectrum_figure
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.report.measured import make_spectrum_figure
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,7 +1,7 @@
 """Snakemake `stickiness` job: the stickiness run files -> results/stickiness/stickiness.nc and stickiness.csv."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.stickiness.merge import run_stickiness_merge
-from roughcontact.study.tables import csv_to_html
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.analysis.stickiness import run_stickiness_merge
+from roughcontact.study.report.tables import csv_to_html
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

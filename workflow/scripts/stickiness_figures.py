@@ -1,6 +1,6 @@
 """Snakemake `stickiness_figures` job: the stickiness run files -> the load-area figure."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.stickiness.figures import run_stickiness_figures
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.report.stickiness import run_stickiness_figures
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,6 +1,6 @@
 """Snakemake `summary` job: claims, crossover, zeta, models tables and Fig. 3 -> results/summary.html (the report's landing page)."""
-from roughcontact.study.logs import log_to
-from roughcontact.study.summary import write_summary
+from roughcontact.study.files.logs import log_to
+from roughcontact.study.report.summary import write_summary
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,4 +1,4 @@
-# module: roughcontact.study.axes.plateau
+# module: roughcontact.study.config.axes.plateau
 """A worn roughness: the asperities of the generated surface cut flat at a plateau height.
 
 A surface that has run in (plateau-honed cylinder liners, worn seals) keeps its valleys and loses

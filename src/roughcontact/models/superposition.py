@@ -34,7 +34,7 @@ profile that is flat beyond λ_r; below a cutoff the surface is smooth and ``SF 
 ``w`` (the window, 2 by default: the contact's diameter) is a modelling choice.
 
 :data:`CALIBRATED` holds p and a factor on ζ calibrated on the BEM ensembles of named presets
-(:mod:`roughcontact.study.calibration`); the derivation and the calibration are in the
+(:mod:`roughcontact.study.analysis.calibration`); the derivation and the calibration are in the
 documentation (guide, "Models").
 
 Units are the caller's, consistent as in :mod:`roughcontact.models.paper`.
@@ -51,12 +51,12 @@ from .zeta_law import zeta_law
 __all__ = ["CALIBRATED", "rough_force", "force_from_stiffness", "stiffness_from_force", "calibrated_stiffness"]
 
 #: c_ζ (the factor on :func:`roughcontact.models.zeta_law.zeta_law`) and p, calibrated by
-#: ``python -m roughcontact.study.calibration`` on the sphere ensembles of presets/calibration.yaml
+#: ``python -m roughcontact.study.analysis.calibration`` on the sphere ensembles of presets/calibration.yaml
 #: (H 0.4, 0.7, 1.0; R 0.1, 0.5; h_rms 5e-3, 2e-2; 513², 12 seeds), convergence-513.yaml (50 seeds)
 #: and convergence-1025.yaml (20 seeds), 189 resolved loads, 2026-11-24: χ²/point 1.29
 #: (eq. 16 with the same ζ law: 3.46; with ζ = 1.7/(H+1): 4.60)
 CALIBRATED = {"zeta_factor": 0.8866, "power": 1.4215,
-              "source": "presets calibration, convergence-513, convergence-1025 (python -m roughcontact.study.calibration)"}
+              "source": "presets calibration, convergence-513, convergence-1025 (python -m roughcontact.study.analysis.calibration)"}
 
 
 def rough_force(stiffness, *, hurst, h_rms, length, e_star, zeta, spectrum=None, reference=None, window=2.0):

@@ -2,7 +2,7 @@
 calibrated on the flat-surface presets.
 
 Eq. 13 gives ζ ≈ 1.7/(H+1) for H ≤ 1. :data:`LAWS` are the forms the study chooses from by
-AIC (:mod:`roughcontact.study.zeta.law`, claim c′ of the claims table); :data:`CALIBRATED`
+AIC (:mod:`roughcontact.study.analysis.zeta.law`, claim c′ of the claims table); :data:`CALIBRATED`
 is the law that study chose on ``presets/zeta-law.yaml`` and the value :func:`zeta_law`
 returns, so that eq. 16 can use it (the scorecard's ``eq16_law``).
 """

@@ -1,7 +1,7 @@
 """What the study's registries hold, and the fingerprint of the code of what they register.
 
 :func:`listing` is what ``roughcontact list axes|models|claims`` prints: the registered sweep
-axes (:mod:`roughcontact.study.axes`), models of the scorecard (:mod:`roughcontact.models.scorecard`)
+axes (:mod:`roughcontact.study.config.axes`), models of the scorecard (:mod:`roughcontact.models.scorecard`)
 and claims (:mod:`roughcontact.study.claims`), one record each.
 
 :func:`code_fingerprint` hashes the source of the modules an analysis rule runs, so that the
@@ -25,11 +25,11 @@ REGISTRIES = ("axes", "models", "claims")
 
 #: the entry modules of each analysis rule, for :func:`code_fingerprint` (which follows their imports)
 ANALYSIS_CODE = {
-    "models": ("roughcontact.study.scorecard", "roughcontact.study.measured.scorecard",
-               "roughcontact.study.measured.spectrum"),
+    "models": ("roughcontact.study.analysis.scorecard", "roughcontact.study.analysis.measured_scorecard",
+               "roughcontact.study.analysis.measured_spectrum"),
     "claims": ("roughcontact.study.claims",),
-    "figures": ("roughcontact.study.figures",),
-    "summary": ("roughcontact.study.summary",),
+    "figures": ("roughcontact.study.report.figures",),
+    "summary": ("roughcontact.study.report.summary",),
 }
 
 
@@ -51,7 +51,7 @@ def listing(kind: str) -> list[dict]:
 
     ``ValueError`` for another *kind*."""
     if kind == "axes":
-        from . import axes
+        from .config import axes
 
         return [{"name": a.name, "unit": a.unit, "paper": _number(a.paper) if a.optional else None,
                  "optional": a.optional, "role": a.role, "tag": a.tag, "kinds": list(a.kinds)}
@@ -107,7 +107,7 @@ def _is_module(name: str) -> bool:
 
 #: the packages whose modules are imported by discovery (the registries), not by name: every module
 #: of their folder counts where the package is imported
-DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.axes")
+DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.config.axes")
 
 
 def _closure(entries) -> set[Path]:

@@ -3,8 +3,8 @@
 A model predicts the stiffness ``k(F)`` of a rough body from a :class:`Surface`: the parameters
 of a generated surface (H, h_rms, the grid, roll-off and cutoff) or a measured spectrum fit
 (H and h_rms fitted, the measured spectrum and its moments). The generated scorecard
-(:mod:`roughcontact.study.scorecard`) and the measured one
-(:mod:`roughcontact.study.measured.models`) both loop over :func:`models`, so a new model is
+(:mod:`roughcontact.study.analysis.scorecard`) and the measured one
+(:mod:`roughcontact.study.analysis.measured_models`) both loop over :func:`models`, so a new model is
 one module in this package that calls :func:`register` (worked example in the package guide,
 ``docs/guide/package.md``); every module here is imported when the registry is first read.
 """

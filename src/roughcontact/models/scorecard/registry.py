@@ -2,7 +2,7 @@
 (:class:`Model`, with the optional sweep axes it models and its stated range of validity,
 :class:`Range`) and :func:`register`.
 
-The optional sweep axes (:mod:`roughcontact.study.axes`: ``exponent``, ``rolloff``, ``cutoff``,
+The optional sweep axes (:mod:`roughcontact.study.config.axes`: ``exponent``, ``rolloff``, ``cutoff``,
 ``hardness``, ``work_of_adhesion`` and any registered later) are named here by string only: the
 models sit below the study and do not import it.
 """
@@ -51,7 +51,7 @@ class Surface:
         The measured spectrum's moments (asperity statistics) instead of the self-affine ones.
     axes : Mapping[str, float]
         Every optional sweep axis of the combination by name, as its merged-file coordinate
-        (:meth:`roughcontact.study.axes.Axis.coordinate`: a roll-off at the paper's setting is
+        (:meth:`roughcontact.study.config.axes.Axis.coordinate`: a roll-off at the paper's setting is
         ``length``, a cutoff 0, a hardness ``inf``), read-only; the scorecards fill it, so a
         model that declares an axis registered after this class was written reads its value
         here. An axis the mapping lacks is at the paper's setting.
@@ -159,7 +159,7 @@ class Model:
         constants were calibrated on): a combination or a scan outside it keeps its row and its
         deviations, but the row names why in the column ``outside_range``
         (:meth:`outside`) and the row is never the recommended model
-        (:mod:`roughcontact.study.decision`). Empty: no stated range.
+        (:mod:`roughcontact.study.analysis.decision`). Empty: no stated range.
     """
 
     name: str
@@ -201,7 +201,7 @@ class Model:
         ----------
         off_paper : Mapping[str, float]
             Optional axes off the paper's value, name -> coordinate (e.g.
-            :func:`roughcontact.study.axes.off_paper`).
+            :func:`roughcontact.study.config.axes.off_paper`).
 
         Returns
         -------

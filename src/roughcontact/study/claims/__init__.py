@@ -1,11 +1,11 @@
 """The paper's claims as a table (``claims.csv``): one row per quantitative claim
 and per combination it is tested on, with the measured value, its 95 %
-interval, the paper's value, the verdict (:mod:`roughcontact.study.statistics`), why it is untested
-(``untested_because``, a word of :data:`roughcontact.study.statistics.UNTESTED_BECAUSE`, empty on the
+interval, the paper's value, the verdict (:mod:`roughcontact.study.analysis.statistics`), why it is untested
+(``untested_because``, a word of :data:`roughcontact.study.analysis.statistics.UNTESTED_BECAUSE`, empty on the
 other rows) and the sweep and loads it rests on. A row's note says what its measured or paper value
 is and states no verdict: claim (b) with the fitted ζ and the slopes of eq. 16 itself ((d), (e))
 are rows of their own. Rows (a)–(f) of a combination off the paper's setting of an
-optional axis (:func:`roughcontact.study.axes.off_paper`; the body's exponent
+optional axis (:func:`roughcontact.study.config.axes.off_paper`; the body's exponent
 aside) keep their measured values but say ``untested`` and name the axis: the
 paper's equations are for an elastic, purely self-affine surface, and claims
 (i)–(k) test those axes against the same seeds without them; (g), (h) and (l)
@@ -40,8 +40,8 @@ import logging
 import pkgutil
 from pathlib import Path
 
-from ..study_settings import StudySettings
-from ..tables import write_html_table
+from ..config.settings import StudySettings
+from ..report.tables import write_html_table
 from .registry import CLAIMS, Claim, ClaimInputs, Combination, register, row, table_rows
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "claims", "claims_table", "failed",
@@ -129,11 +129,11 @@ def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_
     runs, the local exponents, the adhesive runs' pull-off table (*pull_off_csv*, or ``None``
     without adhesive runs) and the stickiness table (*stickiness_csv*, or ``None`` without the
     config's ``stickiness`` section) -> claims.csv and the same table as an HTML page for the report
-    (:mod:`roughcontact.study.tables`)."""
+    (:mod:`roughcontact.study.report.tables`)."""
     import pandas as pd
     import xarray as xr
 
-    from ..io import read_groups, write_csv
+    from ..files.io import read_groups, write_csv
 
     cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
     with xr.open_dataset(crossover_nc, engine="netcdf4") as reps, xr.open_dataset(zeta_nc, engine="netcdf4") as zds:

@@ -1,5 +1,5 @@
 """Claims (n)–(q) on the adhesive runs (``work_of_adhesion`` > 0), from the pull-off table
-``adhesion/pull_off.csv`` (:mod:`roughcontact.study.adhesion.merge`).
+``adhesion/pull_off.csv`` (:mod:`roughcontact.study.analysis.adhesion`).
 
 (n) The smooth sphere's pull-off equals JKR's ``−(3/2)πwR`` (Johnson, Kendall & Roberts, Proc. R.
 Soc. A 324 (1971) 301): rows with Johnson's parameter ``h_rms/δ_c ≤`` :data:`SMOOTH`. The detachment
@@ -31,7 +31,7 @@ curve of ``h_rms/δ_c`` for all H), differs when it holds 0. Needs two or more H
 combinations each.
 
 (q) Pastewka & Robbins' stickiness (PNAS 111 (2014) 3298) on the stickiness runs
-(:mod:`roughcontact.study.stickiness`): nominally flat surfaces pressed by displacement into a
+(:mod:`roughcontact.study.runs.stickiness`): nominally flat surfaces pressed by displacement into a
 half-space with a Maugis–Dugdale interaction of range ``Δr`` and work ``w`` are sticky — the
 loading slope ``F/A`` at the contact area ``A*`` is negative — when
 ``N = (h′E*Δr/(2w))(h′²/(h″Δr))^(2/3) < 1``. One row per (H, N): the mean slope over seeds with its
@@ -50,8 +50,8 @@ import math
 import numpy as np
 
 from ...models.rough_adhesion import STICKINESS_RANGE_LIMIT
-from ..statistics import (NO_PREDICTION, NOT_SWEPT, OUT_OF_RANGE, UNRESOLVED, judge, split_verdict, untested,
-                          verdict_bound)
+from ..analysis.statistics import (NO_PREDICTION, NOT_SWEPT, OUT_OF_RANGE, UNRESOLVED, judge, split_verdict, untested,
+                                   verdict_bound)
 from .registry import Claim, register, row
 
 __all__ = ["SMOOTH", "SAMPLING_ALLOWANCE", "PRELOAD", "method_error"]

@@ -3,7 +3,7 @@
 A run with a short-wavelength cutoff, a roll-off or a hardness is compared with
 the run of the same seed without it (equal seeds give the same random phases,
 so the pair differs only by the axis); intervals resample the seeds of both
-sides together (:func:`roughcontact.study.statistics.bootstrap_indices`).
+sides together (:func:`roughcontact.study.analysis.statistics.bootstrap_indices`).
 
 * (i) "the contact stiffness ... is determined by the large wavelength in the
   power spectrum" (Conclusions): a cutoff changes k by less than
@@ -24,9 +24,9 @@ import math
 
 import numpy as np
 
-from .. import axes
-from ..ensemble import resolved
-from ..statistics import NOT_SWEPT, UNRESOLVED, bootstrap_indices, interval, judge, untested, verdict_bound
+from ..config import axes
+from ..analysis.ensemble import resolved
+from ..analysis.statistics import NOT_SWEPT, UNRESOLVED, bootstrap_indices, interval, judge, untested, verdict_bound
 from .registry import Claim, register, row
 
 __all__ = ["INSENSITIVE_TOLERANCE"]

@@ -1,4 +1,4 @@
-"""Claims (l) and (m) from the local exponents (:mod:`roughcontact.study.exponents`) and the ζ fit:
+"""Claims (l) and (m) from the local exponents (:mod:`roughcontact.study.analysis.exponents`) and the ζ fit:
 (l) with a roll-off below the system size, ``K ∝ p`` over a range of loads (Pastewka et al.,
 Phys. Rev. E 87, 062809 (2013)); (m) the free stiffness exponent of flat surfaces against
 Pohrt & Popov, Phys. Rev. Lett. 108, 104301 (2012)."""
@@ -7,7 +7,7 @@ from __future__ import annotations
 import itertools
 import math
 
-from ..statistics import NOT_SWEPT, OFF_PAPER, UNRESOLVED, judge, untested
+from ..analysis.statistics import NOT_SWEPT, OFF_PAPER, UNRESOLVED, judge, untested
 from .registry import Claim, flat_zeta_rows, paper_rows, register, row
 
 __all__ = ["prl2012_exponent", "exponent_rows"]
@@ -21,7 +21,7 @@ def prl2012_exponent(hurst: float) -> float:
 
 
 def exponent_rows(exponents, zeta_df, study) -> list[dict]:
-    """Claims (l) and (m) from the local exponents (:mod:`roughcontact.study.exponents`) and the ζ fit.
+    """Claims (l) and (m) from the local exponents (:mod:`roughcontact.study.analysis.exponents`) and the ζ fit.
 
     (l) With a roll-off below the system size, ``K ∝ p`` over a range of pressures (Pastewka et
     al., Phys. Rev. E 87, 062809 (2013)): per H and roll-off ``λ_r < L``, the largest local

@@ -17,8 +17,8 @@ import math
 
 import numpy as np
 
-from ..statistics import NO_PREDICTION, NOT_SWEPT, UNRESOLVED, interval, judge, untested, verdict_bound
-from .. import axes
+from ..analysis.statistics import NO_PREDICTION, NOT_SWEPT, UNRESOLVED, interval, judge, untested, verdict_bound
+from ..config import axes
 from .registry import Claim, all_of, at_theory, describe, off_theory, register, row, with_crossover
 
 __all__ = ["EQ16_TOLERANCE", "LAMBDA_EQ17", "LAMBDA_GT"]
@@ -88,8 +88,8 @@ def _b(combination):
 
 def _c(inputs):
     """ζ(H) of ``zeta.csv`` against eq. 13; untested where the ζ fit's runs lack the paper's setting
-    of an optional axis (:func:`roughcontact.study.zeta.fit.off_paper`), as (a)-(f) there."""
-    from ..zeta.fit import off_paper
+    of an optional axis (:func:`roughcontact.study.analysis.zeta.fit.off_paper`), as (a)-(f) there."""
+    from ..analysis.zeta.fit import off_paper
 
     n, length = inputs.study.grid.n, inputs.study.grid.length
     off = off_theory(off_paper(inputs.groups, length), length) if inputs.groups else ""
@@ -169,7 +169,7 @@ def _f(combination):
 
 
 def _paper_spheres(inputs):
-    """The rows of ``crossover.csv`` at the paper's setting (:func:`roughcontact.study.axes.paper_mask`);
+    """The rows of ``crossover.csv`` at the paper's setting (:func:`roughcontact.study.config.axes.paper_mask`);
     claims (g) and (h) leave the others out."""
     cross = inputs.cross
     return cross[axes.paper_mask(cross, inputs.study.grid.length)] if len(cross) else cross
@@ -217,7 +217,7 @@ def _h(inputs):
                     untested(NOT_SWEPT, f"the sweep's smallest H is {min(study.hurst):g} (needs H <= 0.2 with "
                                         "spheres)"))]
     from ...models.greenwood_tripp import self_affine_sphere_curve
-    from ..verdicts import fit_eq16
+    from ..analysis.verdicts import fit_eq16
 
     out = []
     hurst = min(small)

@@ -2,7 +2,7 @@
 the combinations a claim is estimated on (:func:`combinations`, :class:`Combination`) with the
 rules of which apply (:func:`sphere`, :func:`at_theory`, ...), the row every claim writes
 (:func:`row`) and the loop that runs a claim in isolation (:func:`table_rows`). The paper's setting
-is :func:`roughcontact.study.axes.paper_setting`, the one test every claim uses."""
+is :func:`roughcontact.study.config.axes.paper_setting`, the one test every claim uses."""
 from __future__ import annotations
 
 import dataclasses
@@ -12,9 +12,9 @@ from typing import Callable
 
 import numpy as np
 
-from .. import axes
-from ..axes import AXES, optional_axes
-from ..statistics import OFF_PAPER, split_verdict, untested
+from ..config import axes
+from ..config.axes import AXES, optional_axes
+from ..analysis.statistics import OFF_PAPER, split_verdict, untested
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
            "combinations", "table_rows", "sphere", "flat", "with_crossover", "paper_setting", "at_theory", "all_of",
@@ -31,12 +31,12 @@ class ClaimInputs:
     ----------
     cross : pandas.DataFrame
         ``crossover.csv``: per sphere combination, eq. 16 fitted with free prefactors, the slopes
-        and their intervals (:mod:`roughcontact.study.verdicts`); empty without spheres.
+        and their intervals (:mod:`roughcontact.study.analysis.verdicts`); empty without spheres.
     replicates : xarray.Dataset
         Bootstrap replicates of the crossover force (``crossover.nc``).
     zeta : pandas.DataFrame
         ``zeta.csv``: ζ(H) of eq. 11 with its interval.
-    study : roughcontact.study.study_settings.StudySettings
+    study : roughcontact.study.config.settings.StudySettings
         The study's settings (grid, seeds, sweep, fit windows).
     groups : dict or None
         The merged runs, one Dataset per surface kind (``stiffness.nc``).
@@ -46,9 +46,9 @@ class ClaimInputs:
         Bootstrap replicates of ζ(H) (``zeta.nc``).
     adhesion : pandas.DataFrame or None
         The pull-off table of the adhesive runs (``adhesion/pull_off.csv``,
-        :mod:`roughcontact.study.adhesion.merge`); ``None`` without adhesive runs.
+        :mod:`roughcontact.study.analysis.adhesion`); ``None`` without adhesive runs.
     stickiness : pandas.DataFrame or None
-        The stickiness table (``stickiness/stickiness.csv``, :mod:`roughcontact.study.stickiness.merge`);
+        The stickiness table (``stickiness/stickiness.csv``, :mod:`roughcontact.study.analysis.stickiness`);
         ``None`` without the config's ``stickiness`` section.
     """
 
@@ -78,7 +78,7 @@ class Combination:
         Its slice of the merged Dataset, dimensions ``(seed, force)`` in that order.
     crossover : pandas.Series or None
         Its row of ``crossover.csv`` (spheres), ``None`` where there is none.
-    study : roughcontact.study.study_settings.StudySettings
+    study : roughcontact.study.config.settings.StudySettings
         The study's settings.
     """
 
@@ -114,7 +114,7 @@ def with_crossover(combination: Combination):
 
 def paper_setting(combination: Combination):
     """Rule of :attr:`Claim.applies`: combinations at the paper's setting of every optional axis
-    (:func:`roughcontact.study.axes.paper_setting`); no row elsewhere."""
+    (:func:`roughcontact.study.config.axes.paper_setting`); no row elsewhere."""
     return "" if axes.paper_setting(combination.axes, combination.study.grid.length) else None
 
 
@@ -160,7 +160,7 @@ class Claim:
     applies : callable
         ``applies(combination) -> str or None``, the rule of the combinations *estimate* is
         tested on: ``None``, no row; ``""``, the rows' verdicts stand; otherwise the untested
-        verdict text (:func:`roughcontact.study.statistics.untested`) that replaces the verdict of
+        verdict text (:func:`roughcontact.study.analysis.statistics.untested`) that replaces the verdict of
         every row of the combination, whose measured values are kept. Rules: :func:`sphere`, :func:`flat`, :func:`with_crossover`,
         :func:`paper_setting`, :func:`at_theory`, combined by :func:`all_of`. Default: spheres.
 
@@ -197,7 +197,7 @@ def register(claim: Claim) -> Claim:
 
 
 def __getattr__(name: str):
-    """``AXIS_COLUMNS``: the sweep axes (:data:`roughcontact.study.axes.AXES`), the columns naming the
+    """``AXIS_COLUMNS``: the sweep axes (:data:`roughcontact.study.config.axes.AXES`), the columns naming the
     combination a row rests on; ``EFFECT_CLAIM``: the claim that tests each optional axis off the
     paper's elastic, purely self-affine setting. Both read the axis registry when asked."""
     if name == "AXIS_COLUMNS":
@@ -209,7 +209,7 @@ def __getattr__(name: str):
 
 def row(claim, statement, measured, low, high, paper, verdict_text, *, sweep="", loads="", note="", **where) -> dict:
     """One row of the claims table; *verdict_text* is ``"verdict: reason"``, an untested one made by
-    :func:`roughcontact.study.statistics.untested` (its named reason is the ``untested_because``
+    :func:`roughcontact.study.analysis.statistics.untested` (its named reason is the ``untested_because``
     column; any other untested text raises ``ValueError``: an ``error`` row); *where* the
     combination's axes (missing ones NaN). The *note* says what the measured value is; it states
     no verdict (a second comparison is a row of its own)."""
@@ -222,7 +222,7 @@ def row(claim, statement, measured, low, high, paper, verdict_text, *, sweep="",
 
 def describe(r, length: float, n: int, seeds: int) -> str:
     """The sweep a row rests on: the combination *r* (axis -> coordinate; the optional axes off the
-    paper's setting, :func:`roughcontact.study.axes.off_paper`), seeds, grid."""
+    paper's setting, :func:`roughcontact.study.config.axes.off_paper`), seeds, grid."""
     text = f"sphere H = {r['hurst']:g}, R = {r['radius']:g}, h_rms = {r['h_rms']:g}"
     for axis, value in axes.off_paper(r, length).items():
         text += f", {axis} = {value:g}"
@@ -231,7 +231,7 @@ def describe(r, length: float, n: int, seeds: int) -> str:
 
 def off_theory(r, length: float) -> str:
     """Why eqs. 11-17 do not apply to the combination *r* ('' where they do): an optional axis off
-    the paper's setting (:func:`roughcontact.study.axes.off_paper`), named with the claim that
+    the paper's setting (:func:`roughcontact.study.config.axes.off_paper`), named with the claim that
     tests it where there is one. The body's axes (role ``body``, the exponent m) are not among
     them: the claims that use this rule are stated per body of revolution."""
     off = [f"{name} = {value:g}" + (f" (claim {AXES[name].claim} tests it)" if AXES[name].claim else "")
@@ -245,7 +245,7 @@ def combinations(inputs: ClaimInputs, kinds=("sphere", "flat")):
     """Every :class:`Combination` of ``inputs.groups`` of the surface *kinds*, in the order of the
     merged files' dimensions (that of ``crossover.csv``), each with its ``(seed, force)`` slice
     and its row of ``inputs.cross`` (matched on the axes' coordinates)."""
-    from ..ensemble import combinations as dataset_combinations
+    from ..analysis.ensemble import combinations as dataset_combinations
 
     cross = inputs.cross if inputs.cross is not None else ()
     for kind in kinds:
@@ -290,7 +290,7 @@ def _error_row(claim: Claim, error: Exception, where: dict) -> dict:
 
 def _untested(rows: list, reason: str) -> list:
     """*rows* with the verdict replaced by the untested verdict text *reason*
-    (:func:`roughcontact.study.statistics.untested`)."""
+    (:func:`roughcontact.study.analysis.statistics.untested`)."""
     word, because, text = split_verdict(reason)
     return [{**r, "verdict": word, "untested_because": because, "reason": text} for r in rows]
 
@@ -324,7 +324,7 @@ def table_rows(claim: Claim, inputs: ClaimInputs) -> list:
 
 def paper_rows(frame, length: float):
     """The rows of the table *frame* at the paper's setting of every optional axis
-    (:func:`roughcontact.study.axes.paper_setting`; a missing or empty cell counts as the paper's)."""
+    (:func:`roughcontact.study.config.axes.paper_setting`; a missing or empty cell counts as the paper's)."""
     if not len(frame):
         return frame
     return frame[np.array([axes.paper_setting(r, length) for _, r in frame.iterrows()], dtype=bool)]
@@ -332,7 +332,7 @@ def paper_rows(frame, length: float):
 
 def flat_zeta_rows(zeta_df):
     """Rows of zeta.csv fitted on flat runs at the paper's setting (not on the sweep's first value of
-    an optional axis whose paper value it lacks: :func:`roughcontact.study.zeta.fit.paper_setting`
+    an optional axis whose paper value it lacks: :func:`roughcontact.study.analysis.zeta.fit.paper_setting`
     says so in the source)."""
     if not len(zeta_df):
         return zeta_df

@@ -1,11 +1,11 @@
-"""Claim (c'): a ζ(H) law whose form the data choose (:mod:`roughcontact.study.zeta.law`) beside eq. 13."""
+"""Claim (c'): a ζ(H) law whose form the data choose (:mod:`roughcontact.study.analysis.zeta.law`) beside eq. 13."""
 from __future__ import annotations
 
 import math
 
 import numpy as np
 
-from ..statistics import NO_PREDICTION, NOT_SWEPT, UNRESOLVED, judge, untested, verdict_bound
+from ..analysis.statistics import NO_PREDICTION, NOT_SWEPT, UNRESOLVED, judge, untested, verdict_bound
 from .registry import Claim, flat_zeta_rows, register, row
 
 #: the paper's values of the parameters of the candidate ζ(H) laws, where eq. 13 is of that form
@@ -18,7 +18,7 @@ def _c_prime(inputs):
     eq. 13 has that form, and one row for the law's largest deviation from the measured ζ(H)
     against eq. 13's."""
     from ...models.zeta_law import LAWS
-    from ..zeta.law import MIN_HURST, fit_zeta_law
+    from ..analysis.zeta.law import MIN_HURST, fit_zeta_law
 
     n = inputs.study.grid.n
     flat = flat_zeta_rows(inputs.zeta)

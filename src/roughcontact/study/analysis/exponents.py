@@ -1,0 +1,126 @@
+"""Local stiffness exponents ``d ln k/d ln F`` of every combination, with intervals (claim (l)).
+
+At every load whose ``fit.slopes.window`` neighbours (centred on it) are all resolved (mean contact
+cells ≥ ``fit.zeta.min_cells``), the local exponent is the least-squares slope of ``ln k̄`` against
+``ln F`` over the window, ``k̄`` the ensemble mean; its 95 % interval comes from the same fit on
+every bootstrap-over-seeds resample of the mean. A power law ``k ∝ F^β`` has the exponent β at
+every load: the fractal law of eq. 11 has β = 1/(H+1), Hertz 1/3, an interfacial stiffness
+``K ∝ p`` (Persson; Pastewka et al., Phys. Rev. E 87, 062809 (2013),
+doi 10.1103/PhysRevE.87.062809) β = 1.
+
+Forces are ``F/(E* L²)``.
+"""
+from __future__ import annotations
+
+import logging
+
+import numpy as np
+
+from ..report.plotting import pyplot, save_png
+from .ensemble import combinations, resolved
+from .statistics import bootstrap_indices, interval
+from ..config.settings import StudySettings
+
+__all__ = ["local_exponents", "exponent_table", "curves", "run_exponents"]
+
+log = logging.getLogger(__name__)
+
+
+def local_exponents(force, stiffness, contact_cells, *, window: int, min_cells: int, indices, level: float):
+    """Local exponents of one combination.
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        ``(loads,)`` normalised forces.
+    stiffness, contact_cells : numpy.ndarray
+        ``(seeds, loads)``.
+    window : int
+        Odd number of neighbouring loads of each fit.
+    min_cells : int
+        A load is resolved when its mean contact cells are at least this many.
+    indices : numpy.ndarray
+        ``(resamples, seeds)`` bootstrap indices (:func:`~roughcontact.study.analysis.statistics.bootstrap_indices`).
+    level : float
+        Confidence level of the intervals.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``(exponent, low, high)`` per load; NaN where the window is not resolved.
+    """
+    half = window // 2
+    use = resolved(contact_cells.mean(0), min_cells)
+    log_f = np.log(force)
+    log_k = np.log(stiffness.mean(0))
+    log_boot = np.log(stiffness[indices].mean(1))                       # (resamples, loads)
+    out = np.full((3, force.size), np.nan)
+    for i in range(half, force.size - half):
+        span = slice(i - half, i + half + 1)
+        if not use[span].all():
+            continue
+        x = log_f[span] - log_f[span].mean()
+        out[0, i] = float(((log_k[span] - log_k[span].mean()) * x).sum() / (x @ x))
+        slopes = ((log_boot[:, span] - log_boot[:, span].mean(-1, keepdims=True)) * x).sum(-1) / (x @ x)
+        out[1, i], out[2, i] = interval(slopes, level)
+    return out[0], out[1], out[2]
+
+
+def exponent_table(groups: dict, study):
+    """One row per (kind, combination, resolved load): ``local_exponent`` and its interval
+    (``exponent`` is the body's exponent m, a sweep axis)."""
+    import pandas as pd
+
+    study = StudySettings.of(study)
+    L, E = study.grid.length, study.e_star
+    fit = study.fit
+    rows = []
+    for kind, ds in groups.items():
+        indices = bootstrap_indices(ds.sizes["seed"], fit.zeta.bootstrap)
+        force = ds["force"].values / (E * L**2)
+        for combo, sub in combinations(ds):
+            beta, low, high = local_exponents(
+                force, sub["stiffness"].values, sub["contact_cells"].values, window=fit.slopes.window,
+                min_cells=fit.zeta.min_cells, indices=indices, level=fit.zeta.confidence)
+            for i in np.flatnonzero(np.isfinite(beta)):
+                rows.append({"kind": kind, **combo, "force": float(force[i]), "local_exponent": beta[i],
+                             "ci_low": low[i], "ci_high": high[i]})
+    return pd.DataFrame(rows)
+
+
+def run_exponents(study, stiffness_nc, out_csv, out_png):
+    """``exponents`` rule: stiffness.nc -> exponents.csv (local exponents with intervals) and a figure."""
+    from ..files.io import read_groups, write_csv
+
+    table = exponent_table(read_groups(stiffness_nc), study)
+    write_csv(table, out_csv)
+    _figure(table, out_png)
+    log.info("local exponents: %d rows", len(table))
+
+
+def curves(table, kind: str) -> list:
+    """``(label, rows)`` of every combination of one surface kind in *table*, for the figure; the
+    label names H and the axes that vary (a flat surface has no radius and no body exponent)."""
+    sub = table[table["kind"] == kind].dropna(axis=1, how="all")
+    keys = [c for c in sub.columns if c not in ("kind", "force", "local_exponent", "ci_low", "ci_high")]
+    return [(", ".join(f"{k} {v:g}" for k, v in zip(keys, values) if sub[k].nunique() > 1 or k == "hurst"), rows)
+            for values, rows in sub.groupby(keys, sort=True)]
+
+
+def _figure(table, path) -> None:
+    plt = pyplot()
+    kinds = sorted(set(table["kind"])) if len(table) else []
+    fig, axes = plt.subplots(1, max(1, len(kinds)), figsize=(5.5 * max(1, len(kinds)), 4), squeeze=False)
+    for ax, kind in zip(axes[0], kinds):
+        for label, curve in curves(table, kind):
+            line = ax.semilogx(curve["force"], curve["local_exponent"], "o-", ms=3, label=label)[0]
+            ax.fill_between(curve["force"], curve["ci_low"], curve["ci_high"], color=line.get_color(), alpha=0.2)
+        for hurst in sorted(set(table.loc[table["kind"] == kind, "hurst"])):
+            ax.axhline(1 / (hurst + 1), ls=":", color="0.5", lw=0.8)
+        ax.axhline(1.0, ls="--", color="0.3", lw=0.8)
+        ax.set(xlabel="F / (E* L²)", ylabel="d ln k / d ln F", title=f"{kind}: local exponents (95 % band)")
+        ax.legend(fontsize=6)
+    if not kinds:
+        axes[0][0].text(0.5, 0.5, "no resolved window", ha="center")
+    fig.tight_layout()
+    save_png(fig, path)

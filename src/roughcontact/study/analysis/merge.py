@@ -1,0 +1,196 @@
+"""Merge the run files of a study into one file per study, and their ensemble statistics.
+
+Imports xarray and pandas (the ``pipeline`` extra); ``import roughcontact``
+does not import this module. Reading and writing files is :mod:`roughcontact.study.files.io`.
+
+All forces in the tables are normalised, F/(E* L²); stiffnesses k/(E* L).
+"""
+from __future__ import annotations
+
+import dataclasses
+import logging
+
+import numpy as np
+
+from ...errors import MergeError
+from ..files import provenance, runfile
+from ..runs import naming as runs
+from .ensemble import ensemble
+from ..files.io import read_run, write_groups
+from ..runs.jobs import job_settings
+from ..config.settings import StudySettings
+
+__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "merge_runs", "run_merge"]
+
+
+log = logging.getLogger(__name__)
+
+
+# --------------------------------------------------------------------------
+# merge and ensemble: one group per surface kind
+# --------------------------------------------------------------------------
+def _force_coords(study: StudySettings, kind: str) -> dict:
+    scale = study.force_scale()
+    force = study.forces[kind].normalized() * scale
+    return {
+        "force": ("force", force, runfile.FORCE_ATTRS),
+        "force_normalized": ("force", force / scale, {"long_name": "F/(E* L^2)", "units": "1"}),
+    }
+
+
+@dataclasses.dataclass(frozen=True)
+class KindLayout:
+    """Where the runs of one surface kind go in a merged Dataset: ``rows`` (run, path) of the
+    kind, its sweep ``axes`` (:data:`runs.AXES`; a stickiness sweep: ``hurst, number``; a
+    measured surface: ``radius``), the sorted merged-file ``coords`` of each axis and of the
+    ``ensemble`` dimension (``seed``; a measured scan's ``tile``), and each run's coordinates
+    (``at``, by ``id`` of its row; :meth:`index`). :func:`gather` reads its runs."""
+
+    kind: str
+    rows: list
+    axes: tuple
+    coords: dict
+    at: dict
+    ensemble: str = "seed"
+
+    @property
+    def shape(self) -> tuple:
+        """The sizes of the axes and ``seed``."""
+        return tuple(len(v) for v in self.coords.values())
+
+    @property
+    def half_space(self) -> str:
+        """The ``half_space`` attribute of the kind's group."""
+        return "periodic" if self.kind == "flat" else "free (non-periodic)"
+
+    def index(self, row) -> tuple:
+        """The position of the run *row* along the axes and the ensemble (``seed``)."""
+        return (tuple(self.coords[a].index(self.at[id(row)][a]) for a in self.axes)
+                + (self.coords[self.ensemble].index(row[self.ensemble]),))
+
+
+def kind_layouts(study: StudySettings, table: list, paths) -> list[KindLayout]:
+    """The :class:`KindLayout` of each surface kind that the runs *table* (dicts of
+    :func:`runs.runs`, one path of *paths* each, in order) have, sphere first."""
+    L = study.grid.length
+    out = []
+    for kind in ("sphere", "flat"):
+        rows = [(row, path) for row, path in zip(table, paths) if row["kind"] == kind]
+        if not rows:
+            continue
+        axes = runs.AXES[kind]
+        at = {id(row): {axis: runs.coordinate(axis, row[axis], L) for axis in axes} for row, _ in rows}
+        coords = {axis: sorted({at[id(row)][axis] for row, _ in rows}) for axis in axes}
+        coords["seed"] = list(study.seeds)
+        out.append(KindLayout(kind=kind, rows=rows, axes=axes, coords=coords, at=at))
+    return out
+
+
+@dataclasses.dataclass(frozen=True)
+class Gathered:
+    """The runs of one :class:`KindLayout`, read and placed (:func:`gather`).
+
+    Attributes
+    ----------
+    data : dict
+        ``{name: numpy.ndarray}`` of shape ``layout.shape + the variable's own shape`` (its
+        dimensions in the run file: ``force``, ``retract``, none for a scalar).
+    attrs : dict
+        ``{name: attributes}`` of each variable as the first run holding it has them (without
+        ``coordinates``).
+    commits : list of str
+        The sorted ``git_commit`` of the runs (``unknown`` where one has none).
+    run_attrs : dict
+        The global attributes of the layout's first run.
+    """
+
+    data: dict
+    attrs: dict
+    commits: list
+    run_attrs: dict
+
+
+def gather(layout: KindLayout, expected_of, variables: dict, value=None) -> Gathered:
+    """Read every run of *layout* with :func:`roughcontact.study.files.io.read_run` against its job record
+    ``expected_of(row)`` and place the *variables* (``{name: NetCDF dtype}``) of each at its
+    coordinates (:meth:`KindLayout.index`): the shared part of every merge (generated runs, the
+    adhesive runs' pull-off, the stickiness runs).
+
+    *value*: ``value(ds, name)`` the values of *name* in the run *ds* (default ``ds[name].values``),
+    e.g. a generated elastic run's loading stiffness where it has none. Raises
+    :class:`~roughcontact.errors.MergeError` (from :func:`~roughcontact.study.files.io.read_run`) naming a
+    missing, foreign or stale run file."""
+    data, attrs, commits, first = {}, {}, set(), None
+    for row, path in layout.rows:
+        ds = read_run(path, expected_of(row))
+        first = dict(ds.attrs) if first is None else first
+        at = layout.index(row)
+        for name, dtype in variables.items():
+            values = np.asarray(value(ds, name) if value is not None else ds[name].values)
+            if name not in data:
+                data[name] = np.zeros(layout.shape + values.shape, dtype=dtype)
+            data[name][at] = values
+            if name in ds and name not in attrs:
+                attrs[name] = {k: v for k, v in ds[name].attrs.items() if k != "coordinates"}
+        commits.add(ds.attrs.get("git_commit", "unknown"))
+    return Gathered(data=data, attrs=attrs, commits=sorted(commits), run_attrs=first or {})
+
+
+def _generated_value(ds, name):
+    """A generated run's values of *name*: an elastic run's loading tangent is its stiffness,
+    and nothing flows."""
+    if name in ds:
+        return ds[name].values
+    return ds["stiffness"].values if name == "loading_stiffness" else np.zeros(ds.sizes["force"])
+
+
+def merge_runs(study, paths) -> dict:
+    """Merge the run files *paths* (one per run of :func:`runs.runs`, in its order) of the
+    study (:class:`~roughcontact.study.config.settings.StudySettings` or a resolved
+    configuration), one Dataset per surface kind.
+
+    Returns ``{"sphere": ds, "flat": ds}`` (the kinds the sweep has): the sphere
+    Dataset has dims (hurst, radius, h_rms, seed, force), the flat one (hurst,
+    h_rms, seed, force) (:data:`runs.AXES`); each kind has its own force grid,
+    so no variable is padded, and counts are integers.
+    """
+    import xarray as xr
+
+    study = StudySettings.of(study)
+    table = runs.runs(study)
+    if len(paths) != len(table):
+        raise MergeError(f"merge got {len(paths)} run files for {len(table)} runs of the config")
+    groups = {}
+    for layout in kind_layouts(study, table, paths):
+        kind, axes, coords = layout.kind, layout.axes, layout.coords
+        plastic = any(row["hardness"] is not None for row, _ in layout.rows)
+        names = runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
+        runs_of = gather(layout, lambda row: job_settings(study, row), {n: runfile.VARIABLES[n].dtype for n in names},
+                         value=_generated_value)
+        dims = (*axes, "seed", "force")
+        groups[kind] = xr.Dataset(
+            {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names},
+            coords={**{axis: (axis, coords[axis], runfile.AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
+                    **_force_coords(study, kind)},
+            attrs={"surface_kind": kind, "half_space": layout.half_space,
+                   "run_git_commits": provenance.canonical_json(runs_of.commits)},
+        )
+    return groups
+
+
+# --------------------------------------------------------------------------
+# entry points used by workflow/scripts
+# --------------------------------------------------------------------------
+def run_merge(study, run_files, out_stiffness, out_ensemble):
+    """``merge`` rule: run files -> stiffness.nc and ensemble.nc (one group per kind)."""
+    study = StudySettings.of(study)
+    groups = merge_runs(study, list(run_files))
+    attrs = provenance.provenance_attrs(
+        config=study.config, title="roughcontact parameter study: all runs",
+        layout="one group per surface kind (sphere, flat)", grid_n=study.grid.n, grid_length=study.grid.length,
+        e_star=study.e_star, solver_tol=study.solver.tol, stiffness_method=study.solver.stiffness,
+        seeds=list(study.seeds))
+    write_groups(out_stiffness, groups, attrs)
+    attrs["title"] = "roughcontact parameter study: ensemble statistics over seeds"
+    write_groups(out_ensemble, {kind: ensemble(ds) for kind, ds in groups.items()}, attrs)
+    log.info("merged %d runs (%s) into %s and %s", len(run_files), ", ".join(groups), out_stiffness, out_ensemble)

@@ -1,0 +1,349 @@
+"""The model scorecard: contact theories against the BEM ensemble of every sphere combination.
+
+Each model of the registry (:mod:`roughcontact.models.scorecard`) predicts the stiffness ``k(F)`` of a rough sphere from what the
+configuration says about the surface (H, h_rms, R, the body exponent m, L, n) and, for
+``eq16_fitted``, the ζ(H) fitted on the same study. It is scored on the resolved loads of the
+ensemble mean (mean contact cells ≥ ``fit.zeta.min_cells``, as for the verdicts) by
+
+* ``max_rel_dev = max_F |k_model/k_BEM − 1|`` with a 95 % bootstrap-over-seeds interval (the
+  ensemble mean recomputed on every resample; the model is deterministic), and
+* ``rms_rel_dev``, the root-mean-square of the same deviations.
+
+A model that does not apply to a combination (Greenwood–Tripp off the paraboloid or with a
+roll-off or cutoff) has no row for it; an adhesive combination (``work_of_adhesion`` > 0) has
+none (the models are elastic; its pull-off is ``results/adhesion/pull_off.csv``). Forces are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
+
+``paper_setting`` is :func:`roughcontact.study.config.axes.paper_setting`: every optional axis at the
+paper's value. Each model declares the optional axes it models
+(:attr:`roughcontact.models.scorecard.Model.axes`) and reads every optional axis of the
+combination in :attr:`~roughcontact.models.scorecard.Surface.axes`; on a combination off the
+paper's value of an axis the model does not declare, ``not_modelled`` names those axes and the
+row keeps its deviations but is not scored (no ``rank``, every verdict
+``untested: not modelled: <axes>``; :mod:`roughcontact.study.analysis.not_modelled`).
+
+Grid error (``grid.coarse``, :mod:`roughcontact.study.analysis.grid_error`): with the same surfaces pressed
+on a coarser grid, ``g = k̄_coarse/k̄ − 1`` at each load bounds the grid error of the study's own
+ensemble mean (for a sequence converging at an order ``p ≥ 1`` under a refinement ratio ``r ≥ 2``
+the finer grid's error is ``|g|/(r^p − 1) ≤ |g|``). The scorecard then adds, per model and
+combination, over the same resolved loads:
+
+* ``grid_error_max``: the largest ``|g|``; ``grid_resolved``: the fraction of loads where
+  ``|g|`` is at most half the band's half-width (:data:`~roughcontact.study.analysis.grid_error.GRID_ERROR_FRACTION`);
+* ``inside_band_total``: the fraction of loads where the model lies inside the ensemble's band
+  widened by the grid error in quadrature, ``[−√(b₋² + g²), √(b₊² + g²)]``;
+* ``grid_error_low`` / ``grid_error_high``: the weighted mean ``|g|`` of each branch (the weights
+  of the systematic deviation), and ``systematic_low_total_verdict`` /
+  ``systematic_high_total_verdict``: the verdict on 0 of the systematic deviation's interval
+  widened by that mean (``differs``: a model error that neither sampling nor grid explains).
+
+Decision (:mod:`roughcontact.study.analysis.decision`): per combination, the recommended model minimises
+``S = max_b sqrt(mean_{F ∈ b}(|k_model/k_BEM − 1| + |g_F|)²)`` (``g`` 0 where not measured, and
+the page says so) among the scored rows; the others are ``tied`` (paired bootstrap over the seeds) or
+``worse``; a row outside its model's stated range (``outside_range``,
+:attr:`roughcontact.models.scorecard.Model.ranges`) is flagged and never recommended. The table
+is sorted by combination, then decision.
+"""
+from __future__ import annotations
+
+import itertools
+import logging
+import math
+
+import numpy as np
+
+from ...models import paper
+from ...models import scorecard as registry
+from ..config import axes
+from . import decision
+from ..files import provenance
+from ..runs import naming as runs
+from . import not_modelled as unmodelled
+from .ensemble import resolved
+from ..report.plotting import pyplot, save_png
+from .statistics import bootstrap_indices, interval, verdict
+from ..config.settings import StudySettings
+from ..report.tables import write_html_table
+
+__all__ = ["Combination", "scorecard", "run_models", "combo_label"]
+
+log = logging.getLogger(__name__)
+
+
+class Combination(dict):
+    """One sphere combination of the sweep: the axes as merged-file coordinates, plus ``n``,
+    ``length``, ``e_star`` and ``zeta_fit`` (the study's fitted ζ(H), NaN if none)."""
+
+    @property
+    def paper_setting(self) -> bool:
+        """Every optional axis at the paper's value (:func:`roughcontact.study.config.axes.paper_setting`)."""
+        return axes.paper_setting(self, self["length"])
+
+    def surface(self) -> registry.Surface:
+        """What the models read (:class:`roughcontact.models.scorecard.Surface`), with every
+        optional axis of the combination in its ``axes`` (merged-file coordinates)."""
+        length = self["length"]
+        return registry.Surface(
+            hurst=self["hurst"], h_rms=self["h_rms"], radius=self["radius"], length=length, n=int(self["n"]),
+            e_star=self["e_star"], exponent=self["exponent"], zeta_fit=self["zeta_fit"],
+            rolloff=runs.axis_value("rolloff", self["rolloff"], length),
+            cutoff=runs.axis_value("cutoff", self["cutoff"], length),
+            axes={a.name: self[a.name] for a in axes.optional_axes() if a.name in self})
+
+
+def _combinations(ds, study: StudySettings, zeta_of: dict):
+    dims = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
+    for position in itertools.product(*(range(ds.sizes[a]) for a in dims)):
+        combo = Combination({a: float(ds[a].values[i]) for a, i in zip(dims, position)})
+        for axis, setting in runs.DEFAULTS.items():   # an axis a file made before it existed lacks
+            if axis in runs.AXES["sphere"]:
+                combo.setdefault(axis, runs.coordinate(axis, setting, study.grid.length))
+        combo.update(n=study.grid.n, length=study.grid.length, e_star=study.e_star,
+                     zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)))
+        yield combo, ds.isel(dict(zip(dims, position))).transpose("seed", "force")
+
+
+def combo_label(c: Combination) -> str:
+    """The run name of a combination (``H0.7_R0.5_h0.009`` and the tags of the optional axes)."""
+    run = {axis: runs.axis_value(axis, c[axis], c["length"]) if axis in runs.DEFAULTS else c[axis]
+           for axis in runs.AXES["sphere"]}
+    return runs.combo_name(run)
+
+
+def _crossover(c: Combination) -> float:
+    """The branches' border ``F/(E* L²)``: eq. 17 with the study's fitted ζ, else eq. 13's."""
+    zeta = c["zeta_fit"] if math.isfinite(c["zeta_fit"]) else float(paper.zeta_estimate(c["hurst"]))
+    return float(paper.crossover_force(c["radius"], hurst=c["hurst"], h_rms=c["h_rms"], length=c["length"],
+                                       e_star=c["e_star"], zeta=zeta, exponent=c["exponent"])
+                 / (c["e_star"] * c["length"] ** 2))
+
+
+def _branch_weights(k_boot, k_mean, use) -> np.ndarray:
+    """The weight of each load *use* in a branch's mean: the inverse variance of the ensemble mean
+    there (its bootstrap, relative); loads without scatter weigh equally."""
+    relative = k_boot[:, use] / k_mean[use]
+    return 1.0 / np.maximum(relative.var(axis=0, ddof=1), np.finfo(float).eps ** 2)
+
+
+def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict:
+    """The systematic deviation of a model on one branch: the mean of ``k_model/k_BEM − 1`` over the
+    loads *use*, each weighted by the inverse variance of the ensemble mean there (its bootstrap),
+    with the interval of the same mean over the bootstrap's ensembles and the verdict on 0
+    (``differs``: the deviation is significant)."""
+    keys = [f"systematic_{branch}", f"systematic_{branch}_ci_low", f"systematic_{branch}_ci_high"]
+    if use.sum() < 1:
+        return {**dict.fromkeys(keys, math.nan), f"systematic_{branch}_verdict": "untested: no resolved load",
+                f"n_loads_{branch}": 0}
+    weight = _branch_weights(k_boot, k_mean, use)
+    value = float(np.sum(weight * (k_model[use] / k_mean[use] - 1)) / weight.sum())
+    low, high = interval((k_model[use] / k_boot[:, use] - 1) @ weight / weight.sum(), level)
+    return {keys[0]: value, keys[1]: low, keys[2]: high, f"systematic_{branch}_verdict": verdict(0.0, low, high),
+            f"n_loads_{branch}": int(use.sum())}
+
+
+def _grid_errors(grid_error, combo: Combination, force_norm) -> np.ndarray | None:
+    """``g`` of the grid error table at each load of *combo* (NaN where the table has none)."""
+    if grid_error is None or not len(grid_error):
+        return None
+    rows = grid_error
+    for axis in runs.AXES["sphere"]:
+        if axis in rows:
+            rows = rows[np.isclose(rows[axis].to_numpy(float), combo[axis], rtol=1e-12, atol=0)
+                        | (np.isinf(rows[axis].to_numpy(float)) & math.isinf(combo[axis]))]
+    out = np.full(force_norm.size, np.nan)
+    for force, g in zip(rows["force_normalized"].to_numpy(float), rows["grid_error"].to_numpy(float)):
+        match = np.isclose(force_norm, force, rtol=1e-9, atol=0)
+        out[match] = g
+    return out
+
+
+def _with_grid(dev, band, g, use, weight_use, k_boot, k_mean, systematic: dict) -> dict:
+    """The grid-error columns of one model (module docstring)."""
+    from .grid_error import GRID_ERROR_FRACTION
+
+    g_abs = np.abs(g)
+    lower = -np.sqrt(band[0] ** 2 + g_abs ** 2)
+    upper = np.sqrt(band[1] ** 2 + g_abs ** 2)
+    inside = (dev[use] >= lower[use]) & (dev[use] <= upper[use])
+    half = 0.5 * (band[1] - band[0])
+    out = {"grid_error_max": float(np.nanmax(g_abs[use])) if np.isfinite(g_abs[use]).any() else math.nan,
+           "grid_resolved": float(np.mean(g_abs[use] <= GRID_ERROR_FRACTION * half[use])),
+           "inside_band_total": float(inside.mean())}
+    for branch, mask in weight_use.items():
+        key = f"grid_error_{branch}"
+        if mask.sum() < 1:
+            out.update({key: math.nan, f"systematic_{branch}_total_verdict": "untested: no resolved load"})
+            continue
+        weight = _branch_weights(k_boot, k_mean, mask)
+        mean_g = float(np.sum(weight * g_abs[mask]) / weight.sum())
+        low = systematic[f"systematic_{branch}_ci_low"] - mean_g
+        high = systematic[f"systematic_{branch}_ci_high"] + mean_g
+        out.update({key: mean_g, f"systematic_{branch}_total_verdict": verdict(0.0, low, high)})
+    return out
+
+
+def scorecard(groups: dict, zeta_df, study, grid_error=None):
+    """``models.csv`` as a DataFrame (one row per model and sphere combination), and a Dataset of
+    the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band.
+
+    *grid_error*: the table of :func:`roughcontact.study.analysis.grid_error.grid_error` of the study against
+    its companion on ``grid.coarse`` (or ``None``): adds the grid-error columns (module docstring)."""
+    import pandas as pd
+    import xarray as xr
+
+    if "sphere" not in groups:
+        return pd.DataFrame(), {}
+    study = StudySettings.of(study)
+    ds = groups["sphere"]
+    L, E = study.grid.length, study.e_star
+    min_cells = study.fit.zeta.min_cells
+    level = study.fit.zeta.confidence
+    indices = bootstrap_indices(ds.sizes["seed"], study.fit.zeta.bootstrap)
+    zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
+    force_norm = ds["force"].values / (E * L**2)
+    rows, curves = [], {}
+    for combo, sub in _combinations(ds, study, zeta_of):
+        if combo.get("work_of_adhesion", 0.0) > 0:   # the models are elastic
+            continue
+        k = sub["stiffness"].values
+        k_mean = k.mean(0)
+        k_boot = k[indices].mean(1)                               # (resample, force)
+        use_load = resolved(sub["contact_cells"].values.mean(0), min_cells)
+        band = np.percentile(k_boot / k_mean - 1, [50 * (1 - level), 50 * (1 + level)], axis=0)
+        label = combo_label(combo)
+        f_tr = _crossover(combo)
+        g = _grid_errors(grid_error, combo, force_norm)
+        dev_of, combo_rows, combo_boot = {}, [], []
+        for name, k_model in registry.predict(sub["force"].values, combo.surface()).items():
+            use = use_load & np.isfinite(k_model)
+            dev = k_model / k_mean - 1
+            dev_of[name] = dev
+            if not use.any():
+                continue
+            low, high = interval(np.abs(k_model[use] / k_boot[:, use] - 1).max(-1), level)
+            inside = (dev[use] >= band[0][use]) & (dev[use] <= band[1][use])
+            branches = {"low": use & (force_norm < f_tr), "high": use & (force_norm >= f_tr)}
+            systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level),
+                          **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level)}
+            grid = {} if g is None else _with_grid(dev, band, g, use, branches, k_boot, k_mean, systematic)
+            combo_boot.append(decision.inputs(k_model, k_mean, k_boot, use, branches, g))
+            combo_rows.append(unmodelled.unscored({
+                "model": name, **{a: combo[a] for a in runs.AXES["sphere"]}, "combination": label,
+                "max_rel_dev": float(np.abs(dev[use]).max()), "max_rel_dev_ci_low": low,
+                "max_rel_dev_ci_high": high, "rms_rel_dev": float(np.sqrt(np.mean(dev[use] ** 2))),
+                "n_loads": int(use.sum()), "force_min": float(force_norm[use].min()),
+                "force_max": float(force_norm[use].max()), "paper_setting": combo.paper_setting,
+                unmodelled.COLUMN: unmodelled.not_modelled(name, combo, L),
+                decision.OUTSIDE: registry.models()[name].outside(combo),
+                "inside_band": float(inside.mean()), "crossover_force": f_tr, **systematic, **grid,
+            }))
+        rows.extend(decision.decide(combo_rows, combo_boot, level))
+        curves[label] = xr.Dataset(
+            {**{name: ("force", dev, {"long_name": f"k_{name}/k_BEM - 1", "units": "1"})
+                for name, dev in dev_of.items()},
+             "band_low": ("force", band[0], {"long_name": f"{level:.0%} band of the ensemble mean, low", "units": "1"}),
+             "band_high": ("force", band[1], {"long_name": f"{level:.0%} band of the ensemble mean, high", "units": "1"}),
+             "resolved": ("force", use_load.astype("i1"), {"long_name": "resolved load (1) or not (0)", "units": "1"}),
+             **({} if g is None else {"grid_error": ("force", g, {
+                 "long_name": "grid error bound k_coarse/k_BEM - 1 (grid.coarse)", "units": "1"})})},
+            coords={"force_normalized": ("force", force_norm, {"long_name": "F/(E* L^2)", "units": "1"})},
+            attrs={k: v for k, v in combo.items()})
+    table = pd.DataFrame(rows)
+    if len(table):
+        table["rank"] = unmodelled.rank(table, "combination")
+        table = decision.sort(table)
+    return table, curves
+
+
+def scorecard_lead(table=None) -> str:
+    """The lead paragraph of the scorecard page of the report (the registered models' summaries,
+    :data:`roughcontact.study.analysis.decision.RULE` and, given the *table*, whether its grid error is measured)."""
+    summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
+                          for model in registry.models().values())
+    optional = ", ".join(a.name for a in axes.optional_axes())
+    grid = "" if table is None else decision.grid_note(table) + " "
+    return (f"{decision.RULE} {grid}"
+            "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
+            "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
+            "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
+            "deviations; rank orders the scored rows by max_rel_dev alone (rank 1 the smallest; the recommended model is the rule's, above); paper_setting says whether every "
+            f"optional axis ({optional}) is at the paper's value; not_modelled names the optional axes, with "
+            "their values, at which the combination is off the paper's value and which the model does not "
+            "model (its prediction ignores them; each model's modelled axes follow its summary at the end): such a "
+            "row keeps its deviations but is not scored (no rank, every verdict untested: not modelled); "
+            "inside_band the fraction of those loads where the model lies inside the ensemble's band; "
+            "systematic_low and systematic_high the mean deviation below and above the crossover force (eq. 17), weighted by the inverse variance of the "
+            "ensemble mean, with its interval and verdict on 0 (differs: a significant systematic deviation). "
+            "With grid.coarse (the same surfaces on a coarser grid): grid_error_max the largest grid error "
+            "bound |k_coarse/k_BEM - 1| over those loads, grid_resolved the fraction of loads where it is at "
+            "most half the band, inside_band_total the fraction inside the band widened by the grid error, and "
+            "the *_total_verdict columns the systematic verdicts with the grid error added to the interval "
+            "(differs: a model error). outside_range names why a combination lies outside the model's stated range "
+            "of validity (such a row is flagged, keeps its deviations and rank, and is never recommended); "
+            "decision_score is S, difference_ci_low/high the paired interval of S - S_recommended, "
+            f"grid_error_measured whether S includes a measured grid error. {summaries}. models.csv holds every digit.")
+
+
+def _figure(path, label: str, curve, table) -> None:
+    plt = pyplot()
+    force = curve["force_normalized"].values
+    shown = curve["resolved"].values.astype(bool)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    if "grid_error" in curve:
+        g = np.abs(curve["grid_error"].values)
+        ax.fill_between(force, -np.sqrt(curve["band_low"].values ** 2 + g ** 2),
+                        np.sqrt(curve["band_high"].values ** 2 + g ** 2), color="0.93",
+                        label="band and grid error (grid.coarse)")
+    ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
+    ax.axhline(0, color="0.4", lw=0.8)
+    for name in registry.models():
+        if name in curve:
+            mark = table[(table["combination"] == label) & (table["model"] == name)]
+            text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
+            missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
+            if missing:                      # not scored: dashed, the axes it ignores named
+                text += ", not modelled: " + missing
+            if len(mark) and "decision" in mark and mark["decision"].iloc[0] in ("recommended", "tied"):
+                text += " ★" if mark["decision"].iloc[0] == "recommended" else " ≈"
+            ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
+                        label=name + text)
+    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1",
+           title=label + ("" if "grid_error" in curve else " (grid error not measured)"))
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    save_png(fig, path)
+
+
+def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures, grid_error_csv=None):
+    """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
+    per combination) and one figure per elastic sphere combination (*figures*, in the order of
+    :func:`roughcontact.study.runs.naming.sphere_names` with ``adhesive=False``); *grid_error_csv*: ``grid_error.csv`` of the
+    study's companion on ``grid.coarse`` (or ``None``)."""
+    import pandas as pd
+
+    from ..files.io import read_groups, write_csv, write_groups
+
+    study = StudySettings.of(study)
+    grid_error = pd.read_csv(grid_error_csv) if grid_error_csv else None
+    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error)
+    attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
+                                        bootstrap_over="seeds", forces="F/(E* L^2)")
+    write_csv(table, out_csv)
+    write_groups(out_nc, curves, attrs)
+    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(table),
+                     above=decision.matrix_html(table, list(registry.models())),
+                     verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
+                                      "systematic_low_total_verdict", "systematic_high_total_verdict"),
+                     first=("combination", "model", "decision", "tied_models", "decision_score", "difference_ci_low",
+                            "difference_ci_high", "rank", unmodelled.COLUMN, decision.OUTSIDE, "max_rel_dev", "max_rel_dev_ci_low",
+                            "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "inside_band_total",
+                            "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
+                            "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",
+                            "systematic_high_total_verdict", "grid_error_measured", "n_loads"))
+    names = runs.sphere_names(study, adhesive=False)
+    if len(names) != len(figures):
+        raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
+    for label, path in zip(names, figures):
+        if label not in curves:
+            raise ValueError(f"no sphere combination {label} in {stiffness_nc} for the figure {path}")
+        _figure(path, label, curves[label], table)
+    log.info("scorecard:\n%s", table.to_string() if len(table) else "(no sphere runs)")

@@ -1,0 +1,129 @@
+"""Statistics of the study: bootstrap over seeds, percentile intervals and the verdict rules.
+
+Every interval of the study is a percentile bootstrap over the seeds (Efron & Tibshirani,
+An Introduction to the Bootstrap, Chapman & Hall 1993, doi 10.1201/9780429246593) with one
+fixed random state, :data:`BOOTSTRAP_SEED`, so that every run of the analysis gives the same
+numbers. A claim is ``consistent`` when its predicted value lies inside the measured interval,
+``differs`` when it lies outside and ``untested`` when it cannot be decided.
+
+An untested verdict of the claims table always names why, in one word of the closed vocabulary
+:data:`UNTESTED_BECAUSE` (the ``untested_because`` column of ``claims.csv``), beside its free-text
+reason: a verdict text is ``"<verdict>: <reason>"`` and an untested one is made by :func:`untested`,
+``"untested: <because>: <reason>"``; :func:`split_verdict` reads it back and refuses an untested text
+without a named reason (so a claim cannot invent one).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["BOOTSTRAP_SEED", "bootstrap_indices", "interval", "verdict", "verdict_bound", "judge", "untested",
+           "split_verdict", "UNTESTED_BECAUSE", "VERDICTS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
+           "OUT_OF_RANGE", "NO_PREDICTION"]
+
+#: random state of every bootstrap (the paper's acceptance date)
+BOOTSTRAP_SEED = 20130702
+
+#: the verdict words of the claims table
+VERDICTS = ("consistent", "differs", "untested", "error")
+
+#: why a claim is untested (the ``untested_because`` column): the sweep lacks what the claim needs
+#: (a second radius, flat runs, a run to pair with, a preload, overlapping ranges)
+NOT_SWEPT = "not swept"
+#: the combination is off the paper's setting of an optional axis (the registry's ``at_theory``)
+OFF_PAPER = "off the paper's setting"
+#: a bound claim whose interval contains the bound (:func:`verdict_bound`)
+HOLDS_THRESHOLD = "interval holds the threshold"
+#: too few resolved loads or contact cells, no load in the window, no interval (the data, not the sweep)
+UNRESOLVED = "unresolved"
+#: the combination lies outside the range the claim's model is stated for
+OUT_OF_RANGE = "outside the model's range"
+#: the claim predicts no value to compare with here (a threshold itself, a law of another form)
+NO_PREDICTION = "no prediction"
+#: the closed vocabulary of ``untested_because``, in this order
+UNTESTED_BECAUSE = (NOT_SWEPT, OFF_PAPER, HOLDS_THRESHOLD, UNRESOLVED, OUT_OF_RANGE, NO_PREDICTION)
+
+
+def untested(because: str, reason: str) -> str:
+    """The verdict text of an untested claim, ``"untested: <because>: <reason>"``.
+
+    Parameters
+    ----------
+    because : str
+        One of :data:`UNTESTED_BECAUSE`.
+    reason : str
+        The free-text reason (the ``reason`` column).
+
+    Raises
+    ------
+    ValueError
+        If *because* is not in :data:`UNTESTED_BECAUSE`.
+    """
+    if because not in UNTESTED_BECAUSE:
+        raise ValueError(f"untested because {because!r}: not one of {', '.join(UNTESTED_BECAUSE)}")
+    return f"untested: {because}: {reason}"
+
+
+def split_verdict(text: str) -> tuple[str, str, str]:
+    """``(verdict, untested_because, reason)`` of a verdict text (``"<verdict>: <reason>"``, an
+    untested one from :func:`untested`); *untested_because* is ``""`` unless the verdict is ``untested``.
+
+    Raises
+    ------
+    ValueError
+        For an ``untested`` text without a reason of :data:`UNTESTED_BECAUSE`.
+    """
+    word, _, rest = text.partition(": ")
+    word = word.split(":")[0]
+    if word != "untested":
+        return word, "", rest
+    because = next((b for b in UNTESTED_BECAUSE if rest == b or rest.startswith(b + ": ")), None)
+    if because is None:
+        raise ValueError(f"untested verdict {text!r} names no reason of {', '.join(UNTESTED_BECAUSE)} "
+                         "(make it with roughcontact.study.analysis.statistics.untested)")
+    return word, because, rest[len(because) + 2:]
+
+
+def verdict(value: float, low: float, high: float) -> str:
+    """``consistent`` if ``low ≤ value ≤ high``, ``differs`` otherwise (``untested`` for a NaN interval)."""
+    if not (math.isfinite(low) and math.isfinite(high) and math.isfinite(value)):
+        return "untested"
+    return "consistent" if low <= value <= high else "differs"
+
+
+def judge(value: float, low: float, high: float) -> str:
+    """The verdict text of a two-sided claim: :func:`verdict`, and where it is ``untested`` the
+    named reason (:data:`UNRESOLVED`, no interval; :data:`NO_PREDICTION`, no finite *value*)."""
+    if not math.isfinite(value):
+        return untested(NO_PREDICTION, "no finite paper value")
+    if not (math.isfinite(low) and math.isfinite(high)):
+        return untested(UNRESOLVED, "no interval")
+    return verdict(value, low, high)
+
+
+def verdict_bound(bound: float, low: float, high: float, *, side: str) -> str:
+    """Verdict on a one-sided claim ``value < bound`` (``side="below"``) from its interval:
+    ``consistent`` if the whole interval lies on the claimed side, ``differs`` if it lies
+    wholly on the other, ``untested`` (:data:`HOLDS_THRESHOLD`, with the reason) if it contains the
+    bound, or (:data:`UNRESOLVED`) if there is no interval."""
+    if not (math.isfinite(low) and math.isfinite(high)):
+        return untested(UNRESOLVED, "no interval")
+    inside, outside = (high < bound, low > bound) if side == "below" else (low > bound, high < bound)
+    if inside:
+        return "consistent"
+    return "differs" if outside else untested(HOLDS_THRESHOLD, f"the interval contains {bound:g}")
+
+
+def bootstrap_indices(n_seeds: int, resamples: int, *, seed: int = BOOTSTRAP_SEED) -> np.ndarray:
+    """``(resamples, n_seeds)`` seed indices drawn with replacement (fixed random state)."""
+    return np.random.default_rng(seed).integers(0, n_seeds, size=(resamples, n_seeds))
+
+
+def interval(samples: np.ndarray, level: float) -> tuple[float, float]:
+    """Percentile interval of the finite *samples* (NaN, NaN if fewer than half are finite)."""
+    finite = samples[np.isfinite(samples)]
+    if finite.size < max(2, samples.size // 2):
+        return math.nan, math.nan
+    low, high = np.percentile(finite, [50 * (1 - level), 50 * (1 + level)])
+    return float(low), float(high)

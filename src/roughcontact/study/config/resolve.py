@@ -1,0 +1,207 @@
+"""Configuration of the parameter study: resolution, cross-key checks, one-line errors.
+
+:func:`resolve_config` normalises a raw config (as Snakemake or ``yaml``
+loaded it), validates it against the package's schema (``config.schema.yaml``) plus
+the checks a JSON schema cannot express, fills defaults and returns the
+resolved config.  Every problem is reported as one line (:class:`ConfigError`)
+naming the key, the value and what is allowed; :func:`error_line` is how the
+workflow and ``roughcontact check-config`` print it.  Nothing here runs a job
+(:mod:`roughcontact.study.runs.indent` does); ``jsonschema`` and ``yaml`` are imported
+where they are used.
+
+The generic schema machinery (finding and parsing the schema, coercing
+command-line strings, wording errors, rejecting NaN and infinities, filling
+defaults) is :mod:`roughcontact.study.config.schema`; errors are
+:class:`roughcontact.errors.ConfigError`.
+
+Cross-key checks
+----------------
+After the schema, :func:`resolve_config` requires an odd
+``fit.slopes.window``; ``forces.sphere`` / ``forces.flat`` for the radii
+listed, with ``from < to`` and forces within floating-point range; flat
+surfaces pressed short of full contact (:func:`roughcontact.study.config.limits.full_contact_slope`); and a
+smooth-body contact radius within L/4 of the free-space grid.  Each sweep axis brings its
+own checks (:attr:`roughcontact.study.config.axes.Axis.check`): exponents other than every H,
+roll-off and cutoff wavelengths that leave a self-affine band on the grid, hardnesses above
+the fully plastic limit of the largest force.
+"""
+from __future__ import annotations
+
+import copy
+import math
+import os
+import sys
+
+import numpy as np
+
+from ...errors import ConfigError
+from ...models import paper
+from ...models.elasticity import effective_modulus
+from .axes import AXES, kind_of
+from .limits import full_contact_slope
+from .measured import resolve_inputs
+from .settings import StudySettings
+from .coerce import coerce
+from .schema import check_finite, fill_defaults, key_text, load_schema, printable, schema_error
+
+__all__ = [
+    "error_line",
+    "load_config",
+    "resolve_config",
+    "study_settings",
+]
+
+
+def error_line(err: ConfigError) -> str:
+    """The one line the workflow and ``roughcontact check-config`` print."""
+    return f"Invalid configuration: {err}"
+
+
+def load_config(path: str | os.PathLike) -> dict:
+    """Read a YAML config file (no validation).
+
+    Raises :class:`ConfigError` (one line) if the file cannot be read or is
+    not YAML.
+    """
+    import yaml
+
+    try:
+        with open(path, encoding="utf-8") as fh:
+            data = yaml.safe_load(fh)
+    except (OSError, UnicodeError) as err:
+        raise ConfigError(f"cannot read config file {printable(str(path))}: "
+                          f"{printable(getattr(err, 'strerror', None) or str(err))}") from err
+    except (yaml.YAMLError, ValueError) as err:  # ValueError: an integer of more than 4300 digits
+        mark = getattr(err, "problem_mark", None)
+        where = f" (line {mark.line + 1}, column {mark.column + 1})" if mark is not None else ""
+        problem = getattr(err, "problem", None) or str(err)
+        raise ConfigError(f"config file {printable(str(path))} is not valid YAML{where}: "
+                          f"{printable(problem)}") from err
+    return data if data is not None else {}
+
+
+def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = None) -> dict:
+    """Validate and normalise a config; return the resolved copy.
+
+    Raises :class:`ConfigError` with one line naming the offending key and
+    what is allowed.  *schema* is a path or a loaded dict (default: the
+    schema of the checkout).  *base_dir*: the directory of the config file, against which
+    the relative paths of ``topography`` and ``spectrum`` are resolved (default: the current
+    directory); the resolved config holds absolute paths
+    (:func:`roughcontact.study.config.measured.resolve_inputs`).
+    """
+    import jsonschema
+
+    root = load_schema(schema)
+    cfg = coerce(copy.deepcopy(raw))
+    # JSON-schema bounds compare false against NaN: every number must be finite (radius may be +inf).
+    # Keys the schema knows first (a NaN is the cause, not a duplicate or a bound) ...
+    check_finite(cfg, root, known_only=True)
+    validator = jsonschema.Draft202012Validator(root)
+    errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), key_text(list(e.absolute_path))))
+    if errors:
+        # report the shallowest problem first: an unknown top-level key explains more than its children
+        raise schema_error(errors[0], root)
+    # ... then everything, also below schema nodes that leave their contents open
+    check_finite(cfg, root, known_only=False)
+    fill_defaults(cfg, root, root)
+
+    # normalise types
+    cfg["grid"]["n"] = int(cfg["grid"]["n"])
+    fine = cfg["grid"].get("realization_of")   # absent: the grid's own surfaces (resolved configs unchanged)
+    if fine is not None and int(fine) < cfg["grid"]["n"]:
+        raise ConfigError(f"config key 'grid.realization_of' = {fine} is not allowed; allowed: null or a grid of at "
+                          f"least grid.n = {cfg['grid']['n']} points (the finer grid whose surfaces are pressed)",
+                          key="grid.realization_of")
+    coarse = cfg["grid"].get("coarse")   # absent: no grid error (resolved configs unchanged)
+    if coarse is not None and int(coarse) >= cfg["grid"]["n"]:
+        raise ConfigError(f"config key 'grid.coarse' = {coarse} is not allowed; allowed: null or a grid of fewer "
+                          f"than grid.n = {cfg['grid']['n']} points (the same surfaces on a coarser grid)",
+                          key="grid.coarse")
+    cfg["grid"]["length"] = float(cfg["grid"]["length"])
+    if isinstance(cfg["e_star"], dict):   # the two bodies: E* of eq. 4.22 of Johnson (1985)
+        bodies = cfg["e_star"]
+        cfg["e_star"] = effective_modulus(bodies["e1"], bodies["nu1"], bodies.get("e2", math.inf),
+                                          bodies.get("nu2", 0.0))
+    cfg["e_star"] = float(cfg["e_star"])
+    for axis in AXES.values():  # sorted floats, null (an optional axis's paper setting) first
+        values = cfg.get(axis.name, [])   # hurst, h_rms: absent with measured inputs only
+        if axis.in_units is not None:     # a value written with its unit, in the study's units
+            values = [axis.in_units(v, cfg.get("units") or {}, f"{axis.name}[{i}]") for i, v in enumerate(values)]
+        cfg[axis.name] = axis.normalise(values)
+    if "seeds" in cfg:  # absent with measured scans only
+        seeds = cfg["seeds"]
+        cfg["seeds"] = list(range(int(seeds))) if isinstance(seeds, (int, float)) else sorted(int(s) for s in seeds)
+    for rng in cfg["forces"].values():
+        rng["from"], rng["to"], rng["count"] = float(rng["from"]), float(rng["to"]), int(rng["count"])
+
+    # checks a JSON schema cannot express
+    window = cfg["fit"]["slopes"]["window"]
+    if window % 2 == 0:
+        raise ConfigError(f"config key 'fit.slopes.window' = {window} is not allowed; allowed: an odd integer >= 3",
+                          key="fit.slopes.window")
+    resolve_inputs(cfg, base_dir)
+    sticky = cfg.get("stickiness")
+    if sticky is not None and sticky["cutoff"] > sticky["n"] / 2:
+        raise ConfigError(f"config key 'stickiness.cutoff' = {sticky['cutoff']:g} cells is not allowed; allowed: "
+                          f"2 <= cutoff <= stickiness.n/2 = {sticky['n'] / 2:g} (the shortest wavelength the grid "
+                          "holds)", key="stickiness.cutoff")
+    if bool(cfg["hurst"]) != bool(cfg["h_rms"]):
+        empty = "hurst" if not cfg["hurst"] else "h_rms"
+        raise ConfigError(f"config key '{empty}' is empty but '{'h_rms' if empty == 'hurst' else 'hurst'}' is not; "
+                          "allowed: both empty (no generated surface) or both non-empty", key=empty)
+    kinds = {kind_of(r) for r in cfg["radius"]}
+    n, length = cfg["grid"]["n"], cfg["grid"]["length"]
+    for kind, rng in cfg["forces"].items():
+        if not rng["from"] < rng["to"]:
+            raise ConfigError(
+                f"config key 'forces.{kind}': from = {rng['from']:g} must be smaller than to = {rng['to']:g}; "
+                "allowed: 0 < from < to (forces F/(E* L^2))", key=f"forces.{kind}"
+            )
+        for end in ("from", "to"):
+            force = rng[end] * cfg["e_star"] * length * length
+            if not sys.float_info.min <= force <= sys.float_info.max:
+                raise ConfigError(
+                    f"config key 'forces.{kind}.{end}' = {rng[end]:g} gives a force F = {end} * e_star * "
+                    f"grid.length^2 = {force:g}, outside the range of floating-point numbers; allowed: "
+                    f"{sys.float_info.min:.3g} <= F <= {sys.float_info.max:.3g}", key=f"forces.{kind}.{end}"
+                )
+    if not cfg["hurst"]:  # measured inputs only: the checks of the generated surfaces do not apply
+        return cfg
+    if "flat" in kinds:
+        slope = min(full_contact_slope(h, n, length) for h in cfg["hurst"]) * min(cfg["h_rms"])
+        limit = 0.5 * slope
+        if cfg["forces"]["flat"]["to"] >= limit:
+            raise ConfigError(
+                f"config key 'forces.flat.to' = {cfg['forces']['flat']['to']:g} would press the flat surfaces close to "
+                f"full contact (rms slope ~ {slope:.3g} for H = {max(cfg['hurst']):g}, h_rms = {min(cfg['h_rms']):g}, "
+                f"n = {n}); allowed: to < {limit:.3g}", key="forces.flat.to"
+            )
+    if "sphere" in kinds:
+        to = cfg["forces"]["sphere"]["to"]
+        for exponent in cfg["exponent"]:
+            rmax = max(r for r in cfg["radius"] if math.isfinite(r))
+            # smooth body (eq. 7 with H -> m): F ∝ a^(m+1), so a/L = (F/F(a = L))^(1/(m+1));
+            # for m = 2 Hertz, a^3 = 3 F R / (4 E*). numpy floats: extreme sizes give inf or 0, no exception
+            with np.errstate(all="ignore"):
+                force_at_l = np.float64(paper.body_indentation(length, radius=rmax, e_star=1.0, exponent=exponent).force)
+                force_to = np.float64(to) * np.float64(length) ** 2
+                a_over_l = float((force_to / force_at_l) ** (1 / (exponent + 1)))
+                limit = float(force_at_l * 0.25 ** (exponent + 1) / np.float64(length) ** 2)
+            if a_over_l > 0.25:
+                body = "Hertz" if exponent == 2 else f"smooth-body (m = {exponent:g})"
+                raise ConfigError(
+                    f"config key 'forces.sphere.to' = {to:g} gives a {body} contact radius of {a_over_l:.2f} L for "
+                    f"R = {rmax:g}, too close to the edge of the free-space grid; allowed: to <= {limit:.3g} for this radius",
+                    key="forces.sphere.to"
+                )
+    for axis in AXES.values():
+        if axis.check is not None:
+            axis.check(cfg, kinds)
+    return cfg
+
+
+def study_settings(raw: dict, *, base_dir: str | os.PathLike | None = None) -> StudySettings:
+    """Resolve a raw configuration (:func:`resolve_config`: one-line :class:`ConfigError` on bad
+    input) and type it once (:class:`~roughcontact.study.config.settings.StudySettings`)."""
+    return StudySettings.of(resolve_config(raw, base_dir=base_dir))

@@ -1,0 +1,1 @@
+"""The study's files: the run file's data model, reading and writing, provenance and logs."""

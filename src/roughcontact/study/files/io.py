@@ -1,0 +1,127 @@
+"""Reading and writing the study's files: run files, NetCDF groups, CSV tables.
+
+Every write is atomic (a temporary file, then a rename: :func:`roughcontact.study.files.provenance.atomic_path`;
+every NetCDF file through :func:`roughcontact.study.files.provenance.write_netcdf`), so a failed job
+leaves no half-written output. Imports xarray where used (the ``pipeline``
+extra). The run file's data model is :mod:`roughcontact.study.files.runfile`.
+"""
+from __future__ import annotations
+
+import json
+import os
+
+import numpy as np
+
+from ...errors import MergeError
+from . import provenance, runfile
+from .provenance import write_netcdf
+
+__all__ = ["read_run", "write_groups", "read_groups", "write_netcdf", "write_csv"]
+
+
+def write_csv(df, path) -> None:
+    """Atomic CSV write of a DataFrame (no index)."""
+    with provenance.atomic_path(path) as tmp:
+        df.to_csv(tmp, index=False)  # shortest round-trip repr: values read back are the values written
+
+
+def read_run(path, expected=None):
+    """Open one run file of any kind, check it and return it loaded in memory: the one reader.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The run file.
+    expected : object with ``file_spec()``, optional
+        The job record of the current configuration (a generated or adhesive run's
+        :class:`~roughcontact.study.runs.jobs.JobSettings`, a
+        :class:`~roughcontact.study.config.stickiness.StickinessRun`, a
+        :class:`~roughcontact.study.runs.measured.MeasuredJob`): its
+        :class:`~roughcontact.study.files.runfile.RunFileSpec` gives the title, variables and
+        dimensions, the scalars its path names, the ``config_hash`` and the force grid the file
+        must have. ``None``: only that it is a generated or adhesive run file.
+
+    Raises
+    ------
+    roughcontact.errors.MergeError
+        Naming *path*, what is wrong and what to do: a missing, truncated or foreign file, or a
+        stale one (computed with other settings: the differing settings are named).
+    """
+    import xarray as xr
+
+    path = str(path)
+    hint = f"delete {path} and rerun snakemake to recompute it"
+    if not os.path.exists(path):
+        raise MergeError(f"{path}: run file is missing; rerun snakemake to compute it")
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            ds = ds.load()
+    except Exception as exc:
+        raise MergeError(f"{path}: not a readable NetCDF file ({type(exc).__name__}: {exc}); "
+                         f"it may be truncated; {hint}") from exc
+    spec = expected.file_spec() if expected is not None else None
+    title = spec.title if spec is not None else runfile.TITLE
+    required = spec.variables if spec is not None else (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+    missing = [v for v in required if v not in ds.variables]
+    if missing or ds.attrs.get("title") != title:
+        what = f"lacks {', '.join(missing)}" if missing else f"is not a {title}"
+        raise MergeError(f"{path}: foreign NetCDF file ({what}); {hint}")
+    dims = spec.dims if spec is not None else (("force", "retract") if "retract" in ds.dims else ("force",))
+    if sorted(ds.dims) != sorted(dims):
+        raise MergeError(f"{path}: foreign NetCDF file (dimensions {dict(ds.sizes)}, expected {', '.join(dims)}); "
+                         f"{hint}")
+    if spec is not None:
+        _check_settings(path, ds, spec, hint)
+    return ds
+
+
+def _check_settings(path: str, ds, spec: runfile.RunFileSpec, hint: str) -> None:
+    """The stale checks of :func:`read_run`: scalars, ``config_hash``, force grid."""
+    for key, want in spec.scalars.items():
+        got = float(ds[key])
+        if not (got == float(want)):
+            raise MergeError(f"{path}: holds {key} = {got:g}, expected {float(want):g} from its name; {hint}")
+    want = provenance.config_hash(spec.config)
+    if ds.attrs.get("config_hash") != want:
+        raise MergeError(f"{path}: was computed with other settings (config_hash {ds.attrs.get('config_hash')} "
+                         f"!= {want} of the current config{_differences(ds.attrs.get('config'), spec.config)}); "
+                         f"{hint} or run snakemake with --rerun-triggers params")
+    if spec.force_variable is not None:
+        forces = spec.forces
+        got = ds[spec.force_variable].values
+        if got.shape != forces.shape or not np.allclose(got, forces, rtol=1e-12, atol=0):
+            raise MergeError(f"{path}: its force grid differs from the current config; {hint}")
+
+
+def _differences(recorded, current: dict) -> str:
+    """``"; differs in n: 64 in the file, 256 now"``: the settings a stale file was computed
+    with that differ from *current* (its ``config`` attribute, JSON); empty where it has none."""
+    try:
+        recorded = json.loads(recorded) if recorded else None
+    except ValueError:
+        return ""
+    if not isinstance(recorded, dict):
+        return ""
+    now = json.loads(provenance.canonical_json(current))
+    keys = sorted(set(recorded) | set(now), key=str)
+    diff = [f"{k}: {recorded.get(k, 'absent')} in the file, {now.get(k, 'absent')} now"
+            for k in keys if recorded.get(k) != now.get(k)]
+    return f"; differs in {'; '.join(diff)}" if diff else ""
+
+
+def write_groups(path, groups: dict, attrs: dict) -> None:
+    """Write ``{kind: Dataset}`` as the groups of one NetCDF4 file (atomic);
+    *attrs* become the root group's attributes (provenance)."""
+    import xarray as xr
+
+    write_netcdf(xr.DataTree.from_dict({"/": xr.Dataset(attrs=attrs), **groups}), path)
+
+
+def read_groups(path) -> dict:
+    """``{kind: Dataset}`` of a file written by :func:`write_groups`, loaded in memory."""
+    import xarray as xr
+
+    with xr.open_datatree(path, engine="netcdf4") as tree:
+        return {name: node.to_dataset().load() for name, node in tree.children.items()}
+
+

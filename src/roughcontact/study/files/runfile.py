@@ -1,0 +1,241 @@
+"""The run file's data model: every variable of a run and of the merged files, once.
+
+Names, NetCDF types, long names and units of what one indentation run writes
+(:mod:`roughcontact.study.runs.indent`) and what the merge reads back and stacks
+(:mod:`roughcontact.study.analysis.merge`). Units are CF-style strings in the study's own units:
+lengths in the unit of ``grid.length``, forces in ``e_star * length**2``.
+"""
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from ..config.axes import AXES
+
+__all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "RETRACT_VARIABLES",
+           "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
+           "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
+
+#: the ``title`` attribute that marks a run file (generated or measured)
+TITLE = "roughcontact indentation run"
+
+
+@dataclasses.dataclass(frozen=True)
+class Variable:
+    """One per-load variable of a run file (dimension ``force``)."""
+
+    dtype: str
+    long_name: str
+    units: str
+
+
+#: every per-load variable a run file can hold
+VARIABLES = {
+    "depth": Variable("f8", "indentation depth from first touch", "length"),
+    "stiffness": Variable("f8", "normal contact stiffness dF/dd", "e_star * length"),
+    "contact_area": Variable("f8", "contact area (contact cells * (L/n)^2)", "length**2"),
+    "contact_cells": Variable("i8", "number of grid cells in contact", "1"),
+    "iterations": Variable("i8", "solver iterations (warm-started from the previous load)", "1"),
+    "converged": Variable("i1", "solver converged (1) or not (0)", "1"),
+    "loading_stiffness": Variable("f8", "loading tangent dF/dd along the plastic path (forward quotient, "
+                                        "solver.rel_step); stiffness is the unloading one", "e_star * length"),
+    "plastic_cells": Variable("i8", "number of grid cells that flowed (pressure at the hardness)", "1"),
+}
+#: variables of every run file
+RUN_VARIABLES = ("depth", "stiffness", "contact_area", "contact_cells", "iterations", "converged")
+#: further variables of a run with a hardness (elastic runs: loading stiffness = stiffness, no plastic cell)
+PLASTIC_VARIABLES = ("loading_stiffness", "plastic_cells")
+
+#: the force coordinate
+FORCE_ATTRS = {"long_name": "normal force F", "units": "e_star * length**2"}
+
+#: per-step variables of an adhesive run's retract path (dimension ``retract``,
+#: :mod:`roughcontact.study.runs.adhesive`)
+RETRACT_VARIABLES = {
+    "retract_depth": Variable("f8", "approach from first touch along the retract path (displacement control)",
+                              "length"),
+    "retract_force": Variable("f8", "normal force along the retract path (negative: tensile)", "e_star * length**2"),
+    "retract_contact_cells": Variable("i8", "number of grid cells in contact along the retract path", "1"),
+}
+#: the retract coordinate
+RETRACT_ATTRS = {"long_name": "step of the retract path", "units": "1"}
+#: the pull-off of an adhesive run (scalars)
+PULL_OFF_VARIABLES = {
+    "pull_off_force": Variable("f8", "pull-off force: the most tensile force of the retract path (load control)",
+                               "e_star * length**2"),
+    "pull_off_depth": Variable("f8", "approach at the pull-off force", "length"),
+    "pull_off_contact_radius": Variable("f8", "contact radius sqrt(A/pi) at the pull-off force", "length"),
+}
+
+#: the ``title`` attribute that marks a stickiness run file (:mod:`roughcontact.study.runs.stickiness`)
+STICKINESS_TITLE = "roughcontact stickiness run"
+#: per-approach variables of a stickiness run's loading path (dimension ``approach``)
+STICKINESS_VARIABLES = {
+    "depth": Variable("f8", "approach from first touch (displacement control; negative: apart)", "length"),
+    "force": Variable("f8", "normal force, the cohesive zone's tension included (negative: tensile)",
+                      "e_star * length**2"),
+    "contact_cells": Variable("i8", "number of grid cells in contact (gap 0)", "1"),
+    "zone_cells": Variable("i8", "number of grid cells in the cohesive zone (gap below the range, not in contact)",
+                           "1"),
+}
+#: scalars of a stickiness run: its surface, its interaction and its loading slope
+STICKINESS_SCALARS = {
+    "rms_slope": Variable("f8", "rms gradient h' of the surface", "1"),
+    "rms_curvature": Variable("f8", "rms of the mean curvature (Laplacian of h)/2 of the surface, h''", "1/length"),
+    "interaction_range": Variable("f8", "range dr of the Maugis-Dugdale interaction", "length"),
+    "work_of_adhesion": Variable("f8", "work of adhesion w", "e_star * length"),
+    "pastewka_robbins_number": Variable("f8", "Pastewka & Robbins' number (h'E* dr/(2w)) (h'^2/(h'' dr))^(2/3)",
+                                        "1"),
+    "range_ratio": Variable("f8", "dr/g0, g0 = (16/3) h'^2/h''", "1"),
+    "loading_slope": Variable("f8", "dF/dA of the loading with 0 < A <= stickiness.area L^2, in units of h'E* "
+                                    "(negative: sticky)", "1"),
+}
+#: the approach coordinate of a stickiness run
+APPROACH_ATTRS = {"long_name": "step of the loading path", "units": "1"}
+
+@dataclasses.dataclass(frozen=True)
+class RunFileSpec:
+    """What the run file of one job must be (:func:`roughcontact.study.files.io.read_run` checks it):
+    each job record gives its own (``JobSettings.file_spec``, ``StickinessRun.file_spec``,
+    ``MeasuredJob.file_spec``).
+
+    Attributes
+    ----------
+    title : str
+        The ``title`` attribute (:data:`TITLE`, :data:`STICKINESS_TITLE`).
+    variables : tuple of str
+        Variables the file must hold.
+    dims : tuple of str
+        Its dimensions, exactly.
+    config : dict
+        The job's settings record: the file's ``config_hash`` must be its hash.
+    scalars : dict
+        ``{name: value}`` scalar variables the file must hold with these values (a generated
+        run's H, R, h_rms and seed, named by its path).
+    force_variable : str or None
+        The variable holding the load path (``force``; a measured run: ``force_normalized``);
+        ``None``: no load path to check (a stickiness run).
+    forces : numpy.ndarray or None
+        Its expected values (the file's units), equal to 1e-12 relative.
+    """
+
+    title: str
+    variables: tuple
+    dims: tuple
+    config: dict
+    scalars: dict = dataclasses.field(default_factory=dict)
+    force_variable: str | None = None
+    forces: np.ndarray | None = None
+
+
+#: scalar variables of a run file: (NetCDF type, long name, units)
+SCALARS = {
+    "hurst": ("f8", "Hurst exponent H", "1"),
+    "radius": ("f8", "sphere radius R (inf: nominally flat, periodic)", "length"),
+    "h_rms": ("f8", "rms roughness height", "length"),
+    "seed": ("i8", "random seed of the surface", "1"),
+}
+
+def __getattr__(name: str):
+    """``AXIS_ATTRS``: attributes of the sweep axes (:data:`roughcontact.study.config.axes.AXES`, read
+    when asked) and of ``seed`` as coordinates of the merged files."""
+    if name == "AXIS_ATTRS":
+        return {**{a.name: {"long_name": a.long_name, "units": a.unit} for a in AXES.values()},
+                "seed": {"long_name": "random seed of the surface", "units": "1"}}
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def _put(nc, name: str, dtype: str, dims: tuple, values, attrs: dict) -> None:
+    """One variable *name* of the open NetCDF file *nc*: its type, dimensions, values and attributes."""
+    var = nc.createVariable(name, dtype, dims)
+    if dims:
+        var[:] = values
+    else:
+        var.assignValue(values)
+    var.setncatts(attrs)
+
+
+def _meta(meta: Variable) -> dict:
+    return {"long_name": meta.long_name, "units": meta.units}
+
+
+def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = None, units: dict | None = None,
+              scalars: dict | None = None, extra: dict | None = None, coordinates: tuple = (),
+              kind: str = "indentation") -> None:
+    """Write one run file (NetCDF4, atomic: :func:`roughcontact.study.files.provenance.write_netcdf`): the
+    one run-file writer of generated, adhesive, measured and stickiness runs.
+
+    Parameters
+    ----------
+    out : dict
+        An indentation run: ``force`` and the per-load arrays of :data:`VARIABLES` (``force`` in
+        force units; an adhesive run's :data:`RETRACT_VARIABLES` and :data:`PULL_OFF_VARIABLES`
+        too). A stickiness run: the arrays of :data:`STICKINESS_VARIABLES` (one per approach) and
+        the scalars of :data:`STICKINESS_SCALARS`.
+    attrs : dict
+        Global attributes (provenance, settings); ``title`` is set to :data:`TITLE` (a stickiness
+        run: :data:`STICKINESS_TITLE`).
+    stiffness_method : str, optional
+        How the stiffness was computed (named in its ``long_name``; indentation runs).
+    units : dict, optional
+        ``{name: (scale, units)}``: write ``out[name] * scale`` with these CF units instead of the
+        study's normalised units (a measured run: ``force`` in N, ``stiffness`` in N/m, lengths
+        in the scan's unit).
+    scalars : dict, optional
+        ``{name: value}`` of :data:`SCALARS` (a generated run's H, R, h_rms and seed).
+    extra : dict, optional
+        ``{name: (values, attrs)}`` further per-load variables (e.g. ``stiffness_normalized``).
+    coordinates : tuple of str
+        Names of *extra* per-load variables that are coordinates of the others (``force_normalized``).
+    kind : str
+        ``"indentation"`` (over ``force``) or ``"stickiness"`` (over ``approach``).
+    """
+    from . import provenance
+
+    if kind == "stickiness":
+        def fill(nc) -> None:
+            """A stickiness run's attributes, its ``approach`` path and its scalars into *nc*."""
+            nc.setncatts({**attrs, "title": STICKINESS_TITLE})
+            count = len(out["force"])
+            nc.createDimension("approach", count)
+            _put(nc, "approach", "i8", ("approach",), np.arange(count), APPROACH_ATTRS)
+            for name, meta in STICKINESS_VARIABLES.items():
+                _put(nc, name, meta.dtype, ("approach",), np.asarray(out[name]).astype(meta.dtype), _meta(meta))
+            for name, meta in STICKINESS_SCALARS.items():
+                _put(nc, name, meta.dtype, (), np.asarray(out[name], dtype=meta.dtype), _meta(meta))
+
+        provenance.write_netcdf(fill, path)
+        return
+    if kind != "indentation":
+        raise ValueError(f"kind must be 'indentation' or 'stickiness', not {kind!r}")
+    units = units or {}
+    scalars = scalars or {}
+    extra = extra or {}
+    labels = " ".join((*scalars, *coordinates))
+
+    def fill(nc) -> None:
+        """The run file's attributes, dimensions and variables into the open file *nc*."""
+        nc.setncatts({**attrs, "title": TITLE})
+        nc.createDimension("force", len(out["force"]))
+        scale, unit = units.get("force", (1.0, FORCE_ATTRS["units"]))
+        _put(nc, "force", "f8", ("force",), out["force"] * scale, {**FORCE_ATTRS, "units": unit})
+        for name, value in scalars.items():
+            dtype, long, unit = SCALARS[name]
+            _put(nc, name, dtype, (), value, {"long_name": long, "units": unit})
+        for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES if v in out)):
+            meta = VARIABLES[name]
+            scale, unit = units.get(name, (1.0, meta.units))
+            long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
+            _put(nc, name, meta.dtype, ("force",), out[name] * scale if scale != 1.0 else out[name],
+                 {"long_name": long, "units": unit, **({"coordinates": labels} if labels else {})})
+        if "retract_force" in out:   # an adhesive run: its retract path and pull-off
+            nc.createDimension("retract", len(out["retract_force"]))
+            for name, meta in RETRACT_VARIABLES.items():
+                _put(nc, name, meta.dtype, ("retract",), out[name], _meta(meta))
+            for name, meta in PULL_OFF_VARIABLES.items():
+                _put(nc, name, meta.dtype, (), out[name], _meta(meta))
+        for name, (values, var_attrs) in extra.items():
+            _put(nc, name, "f8", ("force",), values, var_attrs)
+
+    provenance.write_netcdf(fill, path)

@@ -1,0 +1,1 @@
+"""The study's report: figures, plotting helpers, tables and the landing page."""

@@ -1,0 +1,326 @@
+"""Figures of the parameter study: the paper's Figs. 1-4, ζ(H) and a collapse plot.
+
+:func:`figure_specs` (no heavy imports) tells the workflow which files the
+``figures`` rule writes; :func:`make_figures` draws them, one function per
+figure (:data:`DRAW`), from a :class:`Inputs` bundle (matplotlib, xarray and
+pandas are imported there). Forces are F/(E* L²), stiffnesses k/(E* L).
+"""
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+
+from ... import surfaces
+from ...models import paper
+from ..config import axes
+from ..runs import naming as runs
+from ..analysis.ensemble import resolved
+from ..config.settings import StudySettings
+
+log = logging.getLogger(__name__)
+
+def _sphere_combos(study: StudySettings) -> list[dict]:
+    """Sphere combinations as merged-file coordinates (optional axes as numbers)."""
+    L = study.grid.length
+    out = []
+    for c in runs.combinations(study):
+        if c["kind"] == "sphere":
+            name = runs.combo_name(c)
+            out.append({**{a: runs.coordinate(a, c[a], L) if a in runs.DEFAULTS else c[a]
+                           for a in runs.AXES["sphere"]},
+                        # the tags of the optional axes off the paper's setting ("" at the paper's setting)
+                        "name": name, "variant": name.split("_", 3)[3] if name.count("_") > 2 else ""})
+    return out
+
+
+def figure_specs(study) -> list[dict]:
+    """One dict per figure: key, file (a PNG name), caption (an ``.rst`` name), category, labels.
+
+    The workflow places the files and finds the captions; nothing here knows its folders."""
+    study = StudySettings.of(study)
+    specs = [
+        {"key": ("fig1",), "file": "fig1_surface.png", "caption": "fig1.rst",
+         "category": "Surfaces", "labels": {"figure": "Fig. 1 self-affine surface"}},
+        {"key": ("fig2",), "file": "fig2_rough_sphere.png", "caption": "fig2.rst",
+         "category": "Surfaces", "labels": {"figure": "Fig. 2 rough sphere"}},
+    ]
+    for combo in _sphere_combos(study):
+        labels = {"figure": "Fig. 3", "H": f"{combo['hurst']:g}", "R": f"{combo['radius']:g}",
+                  "h_rms": f"{combo['h_rms']:g}"}
+        if combo["variant"]:
+            labels["variant"] = combo["variant"]
+        specs.append({"key": ("fig3", combo), "file": f"fig3_{combo['name']}.png", "caption": "fig3.rst",
+                      "category": "Fig. 3 stiffness vs force", "labels": labels})
+    specs += [
+        {"key": ("fig4",), "file": "fig4_profiles.png", "caption": "fig4.rst",
+         "category": "Surfaces", "labels": {"figure": "Fig. 4 equivalent profiles"}},
+        {"key": ("zeta",), "file": "zeta.png", "caption": "zeta.rst",
+         "category": "zeta(H) and collapse", "labels": {"figure": "zeta(H)"}},
+    ]
+    if any(math.isfinite(r) for r in study.radius):
+        specs.append({"key": ("collapse",), "file": "collapse.png", "caption": "collapse.rst",
+                      "category": "zeta(H) and collapse", "labels": {"figure": "collapse"}})
+    return specs
+
+
+def _pick(values, preferred):
+    return preferred if preferred in values else values[len(values) // 2]
+
+
+def shown_combination(study) -> str | None:
+    """The name of the sphere combination of Figs. 1, 2 and 4 (H, h_rms, R near the paper's
+    0.7, 9e-3, 0.5; the paper's setting of the optional axes), whose Fig. 3 the report's
+    landing page shows; None without sphere combinations."""
+    study = StudySettings.of(study)
+    combos = _sphere_combos(study)
+    if not combos:
+        return None
+    finite = [r for r in study.radius if math.isfinite(r)]
+    want = {"hurst": _pick(study.hurst, 0.7), "h_rms": _pick(study.h_rms, 9e-3),
+            "radius": _pick(finite, 0.5) if finite else None}
+    for combo in combos:
+        if not combo["variant"] and all(combo[a] == v for a, v in want.items()):
+            return combo["name"]
+    return combos[0]["name"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Inputs:
+    """What the figures draw from: the study's settings, the sphere ensemble (or None),
+    the ζ and crossover tables, and the surface shown in Figs. 1, 2 and 4."""
+
+    study: StudySettings
+    ensemble: object
+    zeta: object
+    crossover: object
+    hurst: float
+    h_rms: float
+    radius: float
+    seed: int
+
+    def zeta_used(self, hurst):
+        """Fitted ζ(H), or 1.7/(H+1) (eq. 13) where none was fitted."""
+
+        z = dict(zip(self.zeta["hurst"], self.zeta["zeta"])).get(hurst, math.nan)
+        return z if math.isfinite(z) else float(paper.zeta_estimate(hurst))
+
+
+def fig1(plt, inputs: Inputs, _key):
+    """Fig. 1: (a) a self-affine surface, (b) a cut through it."""
+    import numpy as np
+
+    H0, h0, seed = inputs.hurst, inputs.h_rms, inputs.seed
+    L, n = inputs.study.grid.length, inputs.study.grid.n
+    z = surfaces.self_affine(n, hurst=H0, h_rms=h0, length=L, seed=seed)
+    fig, (a, b) = plt.subplots(1, 2, figsize=(9, 4), gridspec_kw={"width_ratios": [1, 1.4]})
+    im = a.imshow(z.T, cmap="gray", origin="lower", extent=(0, L, 0, L))
+    fig.colorbar(im, ax=a, label="z")
+    a.set(title=f"(a) H = {H0:g}, h_rms = {h0:g}, seed {seed}", xlabel="x", ylabel="y")
+    b.plot((np.arange(n) + 0.5) * L / n, z[:, n // 2], lw=0.8)
+    b.set(title="(b) cut at y = L/2", xlabel="x", ylabel="z")
+    fig.tight_layout()
+    return fig
+
+
+def fig2(plt, inputs: Inputs, _key):
+    """Fig. 2: the rough sphere, central half of the grid."""
+    import numpy as np
+
+    H0, h0, R0 = inputs.hurst, inputs.h_rms, inputs.radius
+    L, n = inputs.study.grid.length, inputs.study.grid.n
+    z = surfaces.rough_sphere(n, radius=R0, hurst=H0, h_rms=h0, length=L, seed=inputs.seed)
+    x = (np.arange(n) - n // 2) * L / n
+    c = slice(n // 4, n - n // 4)  # central half: the roughness stays visible
+    X, Y = np.meshgrid(x[c], x[c], indexing="ij")
+    step = max(1, X.shape[0] // 96)
+    fig = plt.figure(figsize=(6, 5))
+    ax = fig.add_subplot(projection="3d")
+    ax.plot_surface(X[::step, ::step], Y[::step, ::step], z[c, c][::step, ::step], cmap="viridis",
+                    linewidth=0, antialiased=False)
+    ax.set(title=f"rough sphere R = {R0:g}, H = {H0:g}, h_rms = {h0:g} (central half)",
+           xlabel="x", ylabel="y", zlabel="z")
+    return fig
+
+
+def fig3(plt, inputs: Inputs, key):
+    """Fig. 3 for one sphere combination: the BEM ensemble, eq. 16 (any body),
+    both asymptotes and the crossover force predicted and measured (95 % interval); beside it,
+    where there are any, the curves beyond the paper (Greenwood-Tripp at the paper's setting, the
+    loading tangent of a plastic run) with the BEM ensemble and eq. 16 again, so that no panel
+    holds more than seven curves."""
+    import numpy as np
+
+    combo = key[1]
+    study = inputs.study
+    L, E, n = study.grid.length, study.e_star, study.grid.n
+    hurst, radius, h, m = combo["hurst"], combo["radius"], combo["h_rms"], combo["exponent"]
+    sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
+    F = sub["force"].values / (E * L**2)
+    k = sub["k_mean"].values / (E * L)
+    err = np.nan_to_num(sub["k_sem"].values / (E * L))
+    res = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
+    zf = inputs.zeta_used(hurst)
+    plastic = "loading_k_mean" in sub and math.isfinite(combo["hardness"])
+    beyond = plastic or axes.paper_setting(combo, L)  # a second panel: the curves beyond the paper
+    fig, panels = plt.subplots(1, 2 if beyond else 1, figsize=(11, 4.6) if beyond else (6, 4.6), squeeze=False,
+                               sharex=True, sharey=True)
+    ax, other = panels[0][0], (panels[0][1] if beyond else None)
+    Fg = np.geomspace(F.min() / 3, F.max() * 3, 200)
+    for target in (ax, other) if beyond else (ax,):
+        target.errorbar(F[res], k[res], yerr=err[res], fmt="o", color="C3", ms=4, capsize=2,
+                        label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
+        if (~res).any():
+            target.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
+                            label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
+    if beyond:
+        other.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf, exponent=m) / (E * L),
+                   "k-", lw=1.5, label=f"eq. 16, fitted zeta = {zf:.3g}")
+    if plastic:
+        other.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
+                   label="loading tangent (plastic path)")
+    body = "Hertz, eq. 9" if m == 2 else f"smooth body m = {m:g}, eq. 7"
+    for zeta, style, text in ((zf, "k-", f"eq. 16, fitted zeta = {zf:.3g}"),
+                              (float(paper.zeta_estimate(hurst)), "k:", "eq. 16, zeta = 1.7/(H+1)")):
+        ax.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zeta, exponent=m) / (E * L),
+                style, lw=1.5 if style == "k-" else 1, label=text)
+    ax.plot(Fg, paper.body_stiffness(Fg * E * L**2, radius=radius, e_star=E, exponent=m) / (E * L), "--", color="C0",
+            label=f"{body} (slope {1 / (m + 1):.3g})")
+    ax.plot(Fg, paper.fractal_stiffness(Fg * E * L**2, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf) / (E * L), "--", color="C2",
+            label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
+    if axes.paper_setting(combo, L):  # Greenwood-Tripp on the same spectrum (paraboloid, elastic, no cut)
+        from ...models.greenwood_tripp import self_affine_sphere_curve
+
+        gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
+        shown = (gt.force >= Fg[0] * E * L**2) & (gt.force <= Fg[-1] * E * L**2)
+        other.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
+                   label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
+    cross = inputs.crossover
+    if len(cross):
+        row = cross
+        for a in runs.AXES["sphere"]:
+            if a in row:
+                row = row[np.isclose(row[a], combo[a], rtol=1e-12, atol=0) | (np.isinf(row[a]) & np.isinf(combo[a]))]
+        if len(row):
+            r = row.iloc[0]
+            fp = float(r["Ftr_pred_fit"]) if math.isfinite(r["Ftr_pred_fit"]) else float(r["Ftr_pred_estimate"])
+            ax.axvline(fp, color="0.4", ls="-.", lw=1, label=f"F_tr predicted (eq. 17) = {fp:.2g}")
+            if math.isfinite(r["Ftr_ci_low"]):
+                ax.axvspan(r["Ftr_ci_low"], r["Ftr_ci_high"], color="C3", alpha=0.15, lw=0,
+                           label=f"F_tr measured = {r['Ftr_measured']:.2g} "
+                                 f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
+                ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
+    title = f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {combo['variant']}".strip()
+    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)", title=title)
+    ax.legend(fontsize=6.5, loc="upper left")
+    if beyond:
+        other.set(xscale="log", yscale="log", xlabel="F / (E* L²)", title="beyond the paper")
+        other.legend(fontsize=6.5, loc="upper left")
+    fig.tight_layout()
+    return fig
+
+
+def fig4(plt, inputs: Inputs, _key):
+    """Fig. 4: the parabola, the equivalent profile of the roughness (eqs. 6, 14) and their sum (eq. 15)."""
+    import numpy as np
+
+    H0, h0, R0, L = inputs.hurst, inputs.h_rms, inputs.radius, inputs.study.grid.length
+    r = np.linspace(-0.2 * L, 0.2 * L, 801)  # where z_p and z_s are of similar size
+    profile = {"hurst": H0, "h_rms": h0, "length": L, "zeta": inputs.zeta_used(H0)}
+    zs = paper.equivalent_height(r, radius=math.inf, **profile)
+    zc = paper.equivalent_height(r, radius=R0, **profile)
+    fig, axes = plt.subplots(1, 3, figsize=(10, 3.2))
+    for ax, zz, title in zip(axes, (zc - zs, zs, zc),
+                             ("(a) z_p = r²/(2R)", "(b) z_s = Q3D |r|^H (eq. 6, 14)", "(c) z_c = z_p + z_s (eq. 15)")):
+        ax.plot(r, zz)
+        ax.set(title=title, xlabel="r")
+    axes[0].set_ylabel("z")
+    fig.suptitle(f"R = {R0:g}, H = {H0:g}, h_rms = {h0:g}, zeta = {inputs.zeta_used(H0):.3g}", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+def zeta(plt, inputs: Inputs, _key):
+    """ζ(H) with its bootstrap interval against 1.7/(H+1) (eq. 13)."""
+    import numpy as np
+
+    d = inputs.zeta.sort_values("hurst")
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    yerr = np.array([d["zeta"] - d["zeta_ci_low"], d["zeta_ci_high"] - d["zeta"]])
+    ax.errorbar(d["hurst"], d["zeta"], yerr=np.nan_to_num(np.abs(yerr)), fmt="o", capsize=3, color="C3",
+                label=f"fit ({d['source'].iloc[0]}), {100 * d['confidence'].iloc[0]:.0f}% bootstrap CI")
+    hg = np.linspace(0.05, 1.95, 200)
+    ax.plot(hg, paper.zeta_estimate(hg), "k-", label="1.7/(H+1), eq. 13")
+    ax.set(xlabel="H", ylabel="zeta(H)", xlim=(0, 2) if d["hurst"].max() > 1 else (0, 1))
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+def collapse(plt, inputs: Inputs, _key):
+    """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16: one
+    panel per Hurst exponent and group of combinations (at most ``MAX_CURVES`` curves a panel,
+    the master curves included), one colour per combination."""
+    import numpy as np
+
+    from .plotting import MAX_CURVES, chunks, panel_grid
+
+    study = inputs.study
+    L, E = study.grid.length, study.e_star
+    y = np.geomspace(0.05, 30, 300)
+    facets = []
+    for hurst in study.hurst:
+        mine = [c for c in _sphere_combos(study) if c["hurst"] == hurst]
+        exponents = sorted({c["exponent"] for c in mine})
+        facets += [(hurst, exponents, group) for group in chunks(mine, MAX_CURVES - len(exponents)) if group]
+    fig, panels = panel_grid(plt, len(facets), width=5.0, height=4.0, max_columns=3, sharex=True, sharey=True)
+    for ax, (hurst, exponents, group) in zip(panels, facets):
+        for m in exponents:
+            ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "k-" if m == 2 else "k--", lw=1,
+                    label=f"eq. 16, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
+        for i, combo in enumerate(group):
+            m = combo["exponent"]
+            zf = inputs.zeta_used(hurst)
+            ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
+            ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
+            sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
+            ok = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
+            label = f"R = {combo['radius']:g}, h_rms = {combo['h_rms']:g}" + (f", {combo['variant']}" if combo["variant"] else "")
+            ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{i % 10}",
+                    alpha=0.8, label=label)
+        ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr", title=f"H = {hurst:g}")
+        ax.legend(fontsize=6)
+    fig.suptitle("all sphere runs (ensemble means, >= min_cells) over eq. 16", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+#: figure key -> the function that draws it
+DRAW = {"fig1": fig1, "fig2": fig2, "fig3": fig3, "fig4": fig4, "zeta": zeta, "collapse": collapse}
+
+
+def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs):
+    """Draw every figure of :func:`figure_specs` to *outputs* (paths, in the same order)."""
+    from pathlib import Path
+
+    import pandas as pd
+
+    from ..files.io import read_groups
+    from .plotting import pyplot, save_png
+
+    plt = pyplot()
+
+    study = StudySettings.of(study)
+    specs = figure_specs(study)
+    paths = list(outputs)
+    if len(paths) != len(specs):
+        raise ValueError(f"make_figures got {len(paths)} output paths for {len(specs)} figures")
+    finite = [r for r in study.radius if math.isfinite(r)]
+    inputs = Inputs(
+        study=study, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=pd.read_csv(zeta_csv),
+        crossover=pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame(),
+        hurst=_pick(study.hurst, 0.7), h_rms=_pick(study.h_rms, 9e-3),
+        radius=_pick(finite, 0.5) if finite else 0.5, seed=study.seeds[0])
+    for spec, path in zip(specs, paths):
+        save_png(DRAW[spec["key"][0]](plt, inputs, spec["key"]), path)
+    log.info("wrote %s", ", ".join(paths))

@@ -1,0 +1,190 @@
+"""The settings of one indentation job: a frozen, typed record from the configuration to the job.
+
+:func:`job_settings` picks out of a resolved configuration everything one run depends on and
+nothing else, so that adding a seed or a sweep value does not invalidate finished runs. The
+Snakemake ``indent`` rule and ``roughcontact indent`` both build a :class:`JobSettings` this way;
+:mod:`roughcontact.study.runs.indent` runs it.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from ...bem import DEFAULT_MAXITER
+from ..config import axes
+from ..files import runfile
+from .naming import parse_combo
+from ..config.axes import kind_of
+from ..config.defaults import solver_maxiter
+from ..config.settings import StudySettings, force_grid
+
+__all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
+
+
+@dataclasses.dataclass(frozen=True)
+class JobSettings:
+    """Everything one indentation run depends on.
+
+    Lengths are in the unit of ``length``; forces are given normalised, ``F/(E* L²)``.
+
+    Attributes
+    ----------
+    hurst, radius, h_rms, seed :
+        The run: Hurst exponent, body radius (``inf``: a nominally flat surface on the
+        periodic half-space), rms roughness height, seed of the surface.
+    n, length, e_star :
+        Grid points per side, side length ``L``, effective modulus ``E*``.
+    force_from, force_to, force_count :
+        The log-spaced load path, ``F/(E* L²)``.
+    tol, maxiter :
+        Stopping tolerance and iteration limit of every contact solve of the run
+        (:func:`roughcontact.bem.solve`), the stiffness's extra solves included.
+    stiffness_method, rel_step :
+        How ``k = dF/dd`` is computed (:func:`roughcontact.bem.stiffness`).
+    realization_of : int or None
+        The finer grid whose surface this run presses, seen on its ``n × n`` grid
+        (``grid.realization_of``; :func:`roughcontact.surfaces.self_affine`); ``None``: its own.
+    options : tuple of (str, float)
+        The optional axes of :data:`roughcontact.study.config.axes.AXES` off the paper's setting, in
+        the registry's order, under their configuration names and units (``hardness`` in units
+        of ``E*``); each is also an attribute (``settings.rolloff``), the paper's value where
+        it is not listed.
+    """
+
+    hurst: float
+    radius: float
+    h_rms: float
+    seed: int
+    n: int
+    length: float
+    e_star: float
+    force_from: float
+    force_to: float
+    force_count: int
+    tol: float
+    stiffness_method: str
+    rel_step: float
+    maxiter: int = DEFAULT_MAXITER
+    options: tuple = ()
+    realization_of: int | None = None
+
+    def __getattr__(self, name: str):
+        """The value of an optional axis (its paper value where :attr:`options` does not list it)."""
+        spec = axes.AXES.get(name)
+        if spec is None or not spec.optional:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        return dict(self.options).get(name, spec.paper)
+
+    @property
+    def kind(self) -> str:
+        """``"sphere"`` (finite radius, free half-space) or ``"flat"`` (periodic)."""
+        return kind_of(self.radius)
+
+    @property
+    def periodic(self) -> bool:
+        """Whether the half-space is periodic (the nominally flat surfaces)."""
+        return self.kind == "flat"
+
+    def value(self, name: str):
+        """The run's value of the axis *name* (configuration units)."""
+        return getattr(self, name)
+
+    def arguments(self, role: str) -> dict:
+        """Keyword arguments of the axes acting as *role* (:data:`roughcontact.study.config.axes.ROLES`):
+        ``roughness`` for the surface generator, ``body`` for the body, ``solver`` for the
+        contact solver (converted by :attr:`~roughcontact.study.config.axes.Axis.to_solver`, e.g. the
+        hardness to a pressure), each under its :attr:`~roughcontact.study.config.axes.Axis.keyword`.
+        An optional axis at its paper value is passed to nothing (the function's default is the
+        paper's setting), nor is an axis that acts by a :meth:`transforms` of the heights."""
+        out = {}
+        for spec in axes.AXES.values():
+            if spec.role != role or spec.name == "radius" or self.kind not in spec.kinds or spec.transform:
+                continue
+            value = self.value(spec.name)
+            if spec.at_paper(value):
+                continue
+            out[spec.keyword] = spec.to_solver(value, self.e_star) if spec.to_solver and value is not None else value
+        return out
+
+    def transforms(self) -> list:
+        """``[(transform, value)]`` of the roughness axes that act on the heights
+        (:attr:`~roughcontact.study.config.axes.Axis.transform`) off their paper value, in the
+        registry's order."""
+        return [(spec.transform, self.value(spec.name)) for spec in axes.AXES.values()
+                if spec.transform is not None and self.kind in spec.kinds
+                and not spec.at_paper(self.value(spec.name))]
+
+    def forces_normalized(self) -> np.ndarray:
+        """The load path ``F/(E* L²)``, log-spaced."""
+        return force_grid(self.force_from, self.force_to, self.force_count)
+
+    def forces(self) -> np.ndarray:
+        """The load path in force units, ``F = (F/(E* L²)) E* L²``."""
+        return self.forces_normalized() * self.e_star * self.length**2
+
+    def axes(self) -> dict:
+        """The optional axes off the paper's setting, under their configuration names
+        (``hardness`` in units of ``E*``)."""
+        return dict(self.options)
+
+    def record(self) -> dict:
+        """The settings as a flat mapping of plain values: what a run file's ``config_hash``
+        and attributes are made of. Optional axes at the paper's setting are left out."""
+        out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
+               if field.name not in ("options", "realization_of")}
+        if self.realization_of is not None:   # runs of a grid's own surfaces keep their hash
+            out["realization_of"] = self.realization_of
+        return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
+
+    def file_spec(self) -> runfile.RunFileSpec:
+        """What this run's file must be (:func:`roughcontact.study.files.io.read_run`): the run file's
+        variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
+        H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
+        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+        dims = ("force",)
+        if self.work_of_adhesion > 0:
+            variables += (*runfile.RETRACT_VARIABLES, *runfile.PULL_OFF_VARIABLES)
+            dims = ("force", "retract")
+        return runfile.RunFileSpec(title=runfile.TITLE, variables=variables, dims=dims, config=self.record(),
+                                   scalars={name: getattr(self, name) for name in runfile.SCALARS},
+                                   force_variable="force", forces=self.forces())
+
+    def describe(self) -> str:
+        """One line naming the run, for logs and error messages."""
+        r = "inf (flat, periodic)" if not math.isfinite(self.radius) else f"{self.radius:g}"
+        extra = "".join(f", {axis} = {value:g}" for axis, value in self.axes().items())
+        return f"H = {self.hurst:g}, R = {r}, h_rms = {self.h_rms:g}{extra}, seed = {self.seed}, n = {self.n}"
+
+
+def options_of(run: dict) -> tuple:
+    """:attr:`JobSettings.options` of a run (a dict with the axes' values, missing ones at the
+    paper's setting)."""
+    out = []
+    for spec in axes.optional_axes():
+        value = run.get(spec.name, spec.paper)
+        if value != spec.paper:
+            out.append((spec.name, float(value)))
+    return tuple(out)
+
+
+def job_settings(study, run: dict) -> JobSettings:
+    """The :class:`JobSettings` of one run (a dict of :func:`roughcontact.study.runs.naming.runs`)
+    of the study (:class:`~roughcontact.study.config.settings.StudySettings` or a resolved configuration)."""
+    study = StudySettings.of(study)
+    radius = float(run["radius"])
+    rng = study.forces[kind_of(radius)]
+    solver = study.solver
+    return JobSettings(
+        hurst=float(run["hurst"]), radius=radius, h_rms=float(run["h_rms"]), seed=int(run["seed"]),
+        n=study.grid.n, length=study.grid.length, e_star=study.e_star,
+        force_from=rng.start, force_to=rng.stop, force_count=rng.count,
+        tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
+        maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
+        realization_of=study.grid.realization_of)
+
+
+def settings_from_wildcards(study, wildcards) -> JobSettings:
+    """:func:`job_settings` of the run named by the ``indent`` rule's wildcards ``combo`` and ``seed``."""
+    return job_settings(study, {**parse_combo(wildcards.combo), "seed": int(wildcards.seed)})

@@ -1,0 +1,185 @@
+"""The runs of a study: the sweep's combinations, run names and scheduler resources.
+
+One run is one (H, R, h_rms, optional axes, seed) of a resolved configuration
+(:func:`roughcontact.study.config.resolve.resolve_config`).  ``radius = inf`` is a nominally flat
+self-affine surface on the periodic half-space; a finite radius is a rough sphere on the
+free (non-periodic) half-space.  A run's name is :func:`combo_name` plus its seed; the
+workflow turns names into paths with its own patterns (:func:`run_path`).
+:mod:`roughcontact.study.runs.jobs` gives everything one run needs.
+"""
+from __future__ import annotations
+
+import functools
+import itertools
+import math
+import re
+import string
+
+from ..config import axes
+from ..config.axes import kind_of
+from ..config.settings import StudySettings, force_grid
+
+__all__ = [
+    "format_value",
+    "parse_value",
+    "runs",
+    "run_path",
+    "run_paths",
+    "combinations",
+    "axis_value",
+    "indent_resources",
+    "force_grid",
+    "parse_run_path",
+    "combo_name",
+    "sphere_names",
+    "parse_combo",
+    "AXES",
+    "DEFAULTS",
+    "kind_of",
+]
+
+def __getattr__(name: str):
+    """``AXES``: the sweep axes of the runs of each surface kind, in the order of the merged
+    file's dimensions (then ``seed`` and ``force``); ``DEFAULTS``: the paper's setting of the
+    optional axes (a paraboloid, no roll-off, no cutoff, elastic), whose runs have the names
+    and settings they had before the axes existed. Both read the registry
+    :data:`roughcontact.study.config.axes.AXES` when asked, so an axis registered later is in them."""
+    if name == "AXES":
+        return {kind: axes.names(kind) for kind in ("sphere", "flat")}
+    if name == "DEFAULTS":
+        return {a.name: a.paper for a in axes.optional_axes()}
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+# --------------------------------------------------------------------------
+# runs and file names
+# --------------------------------------------------------------------------
+def format_value(x) -> str:
+    """Text of a sweep value in a run name: shortest round-trip repr, ``inf``."""
+    x = float(x)
+    return "inf" if math.isinf(x) else repr(x)
+
+
+def parse_value(text: str) -> float:
+    return float(text)
+
+
+def coordinate(axis: str, value, length: float) -> float:
+    """Value of a run's axis as a coordinate of the merged files (:meth:`axes.Axis.coordinate`):
+    the paper's settings as numbers with the same meaning (rolloff null = the system size L,
+    cutoff null = 0, i.e. no short wavelength removed, hardness null = inf, elastic)."""
+    return axes.axis(axis).coordinate(value, length)
+
+
+def axis_value(axis: str, coordinate_value: float, length: float):
+    """The inverse of :func:`coordinate`: the run's value of an optional axis (``None`` for the
+    paper's setting: rolloff = L, cutoff = 0, hardness = inf), else the number."""
+    return axes.axis(axis).value_of(coordinate_value, length)
+
+
+def combinations(study) -> list[dict]:
+    """One dict per point of the sweep's axes (:data:`axes.AXES`) in sweep order (the
+    registry's order, the last axis fastest); an axis a surface kind does not sweep (a flat
+    surface's body exponent) takes its paper value. *study*: a
+    :class:`~roughcontact.study.config.settings.StudySettings` (or a resolved configuration)."""
+    study = StudySettings.of(study)
+    out = []
+    for hurst in study.hurst:
+        for radius in study.radius:
+            kind = kind_of(radius)
+            rest = [a for a in axes.AXES.values() if a.name not in ("hurst", "radius")]
+            values = [getattr(study, a.name) if kind in a.kinds else [a.paper] for a in rest]
+            for point in itertools.product(*values):
+                combo = {"hurst": hurst, "radius": radius, **{a.name: v for a, v in zip(rest, point)}}
+                out.append({name: combo[name] for name in axes.AXES} | {"kind": kind})
+    return out
+
+
+def runs(study) -> list[dict]:
+    """One dict per run: the axes of :func:`combinations`, ``seed`` and ``kind``."""
+    study = StudySettings.of(study)
+    return [{**combo, "seed": seed} for combo in combinations(study) for seed in study.seeds]
+
+
+#: the axes every run name carries, in the name's order (the others only off the paper's setting)
+_NAMED = tuple(a for a in ("hurst", "radius", "h_rms") if a in axes.AXES)
+
+
+def combo_name(run: dict) -> str:
+    """Name of a run's (H, R, h_rms, ...) directory: ``H0.7_R0.5_h0.009``, plus a tag
+    for every optional axis off its paper setting (``_m4``, ``_rolloff0.25``, ...)."""
+    name = "_".join(f"{axes.axis(a).tag}{format_value(run[a])}" for a in _NAMED)
+    for axis in axes.optional_axes():
+        if run.get(axis.name, axis.paper) != axis.paper:
+            name += f"_{axis.tag}{format_value(run[axis.name])}"
+    return name
+
+
+@functools.lru_cache(maxsize=4)
+def _combo_pattern(registered: tuple) -> re.Pattern:
+    """The regular expression of :func:`combo_name` for the *registered* axes."""
+    return re.compile("_".join(rf"{axes.axis(a).tag}(?P<{a}>[^_/]+?)" for a in _NAMED)
+                      + "".join(rf"(?:_{a.tag}(?P<{a.name}>[^_/]+?))?" for a in axes.optional_axes()) + "$")
+
+
+def parse_combo(name: str) -> dict:
+    """The axes of a run directory name (:func:`combo_name`); ``ValueError`` if it is not one."""
+    match = _combo_pattern(tuple(axes.AXES)).match(name)
+    if not match:
+        raise ValueError(f"{name!r} is not a run name like H0.7_R0.5_h0.009[_m4][_rolloff0.25]...")
+    out = {axis: parse_value(match.group(axis)) for axis in _NAMED}
+    for axis in axes.optional_axes():
+        text = match.group(axis.name)
+        out[axis.name] = axis.paper if text is None else parse_value(text)
+    return out
+
+
+def sphere_names(study, *, adhesive: bool | None = None) -> list[str]:
+    """:func:`combo_name` of every sphere combination of the study, in sweep order; *adhesive*:
+    only those with (``True``) or without (``False``) a work of adhesion."""
+    return [combo_name(c) for c in combinations(study) if c["kind"] == "sphere"
+            and (adhesive is None or (c.get("work_of_adhesion", 0.0) > 0) == adhesive)]
+
+
+def run_path(run: dict, pattern: str) -> str:
+    """Path of one run (a dict of :func:`runs`) after *pattern*, a format string with the
+    fields ``{combo}`` (:func:`combo_name`) and ``{seed}`` (the workflow owns the patterns)."""
+    return pattern.format(combo=combo_name(run), seed=int(run["seed"]))
+
+
+#: what the fields of a run path pattern match (:func:`parse_run_path`)
+_PATH_FIELDS = {"combo": r"(?P<combo>[^/]+)", "seed": r"(?P<seed>\d+)"}
+
+
+def parse_run_path(path: str, pattern: str) -> dict:
+    """The axes and seed of a path made by :func:`run_path` with *pattern* (its inverse);
+    *path* may carry a leading directory (an absolute path, a ``--directory``)."""
+    regex = "".join(re.escape(literal) + (_PATH_FIELDS[field] if field else "")
+                    for literal, field, _, _ in string.Formatter().parse(pattern))
+    match = re.search(f"(?:^|/){regex}$", str(path).replace("\\", "/"))
+    if not match:
+        raise ValueError(f"{path!r} is not a run file path like {pattern}")
+    return {**parse_combo(match.group("combo")), "seed": int(match.group("seed"))}
+
+
+def run_paths(study, pattern: str) -> list[str]:
+    """:func:`run_path` of every run of the study, in sweep order."""
+    return [run_path(r, pattern) for r in runs(study)]
+
+
+def indent_resources(study) -> dict:
+    """Generous per-job estimates for schedulers (SLURM): ``mem_mb`` and
+    ``runtime`` (minutes) of one ``indent`` job, from the grid and load count.
+
+    Memory: surface generation (24 bytes per cell), the heights and two states
+    alive at a time (pressure, contact set: ~17 bytes per cell each), FFT
+    kernels up to the doubled grid, over a ~250 MB interpreter; times 1.5.
+    Runtime: measured ~10 s for a 513^2 flat run of 13 loads on one core,
+    scaled by n^2 log n and the load count, times 10.
+    """
+    study = StudySettings.of(study)
+    n = study.grid.n
+    count = max(study.forces[kind_of(r)].count for r in study.radius)
+    mem = 250 + (n * n * (24 + 8 + 2 * 17) + 8 * (2 * n) ** 2 * 16) / 1e6
+    scale = (n * n * math.log(n)) / (513 * 513 * math.log(513)) * count / 13
+    return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100), "runtime": int(max(5, math.ceil(10 * scale * 10 / 60)))}
