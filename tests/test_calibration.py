@@ -1,4 +1,4 @@
-"""Calibration of the scorecard's own model (study.calibration) recovers the constants it was made with."""
+"""Calibration of the scorecard's own model (study.analysis.calibration) recovers the constants it was made with."""
 import math
 
 import numpy as np

@@ -1,4 +1,4 @@
-"""Grid convergence tables (study.convergence) on synthetic studies with a known stiffness ratio."""
+"""Grid convergence tables (study.analysis.convergence) on synthetic studies with a known stiffness ratio."""
 import numpy as np
 import pytest
 import xarray as xr

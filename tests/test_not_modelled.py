@@ -214,7 +214,7 @@ def test_measured_rank_skips_not_modelled_rows():
 
 
 def test_measured_surface_is_at_the_paper_setting():
-    """A measured scan's Surface (study.measured.models.surface_of) carries the paper's coordinates."""
+    """A measured scan's Surface (study.analysis.measured_models.surface_of) carries the paper's coordinates."""
     from roughcontact.study.analysis.measured_models import surface_of
     from roughcontact.surfaces import self_affine
     from roughcontact.surfaces.spectrum_fit import fit_spectrum

@@ -121,7 +121,7 @@ def test_a_model_off_a_sharp_ensemble_is_outside_its_band():
 
 
 def _grid_table(g: float) -> pd.DataFrame:
-    """A grid error table (study.grid_error) of the one combination: k_coarse/k − 1 = g at every load."""
+    """A grid error table (study.analysis.grid_error) of the one combination: k_coarse/k − 1 = g at every load."""
     return pd.DataFrame({"hurst": HURST, "radius": RADIUS, "exponent": 2.0, "h_rms": H_RMS, "rolloff": 1.0,
                          "cutoff": 0.0, "hardness": math.inf, "force_normalized": FORCE, "grid_error": g})
 

@@ -1,4 +1,4 @@
-"""The report's landing page (study.summary): the recommended model per combination, numbers
+"""The report's landing page (study.report.summary): the recommended model per combination, numbers
 with four significant digits (synthetic tables, no run needed)."""
 from __future__ import annotations
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..statistics import bootstrap_indices, interval, verdict_bound
+from ..analysis.statistics import bootstrap_indices, interval, verdict_bound
 from .registry import Claim, register, row, sphere
 
 
