@@ -13,8 +13,8 @@ directory, while the runs, whose ``params`` are their own settings and
 from __future__ import annotations
 
 import ast
+import functools
 import hashlib
-import importlib.util
 import math
 from pathlib import Path
 
@@ -68,21 +68,37 @@ def listing(kind: str) -> list[dict]:
     raise ValueError(f"no registry {kind!r}; allowed: {', '.join(REGISTRIES)}")
 
 
-def _file_of(module: str) -> Path | None:
-    """The source file of *module* (a package's ``__init__.py``), ``None`` where there is none."""
-    spec = importlib.util.find_spec(module)
-    return None if spec is None or spec.origin is None else Path(spec.origin)
+#: the packages whose modules are imported by discovery (the registries), not by name: every module
+#: of their folder counts where the package is imported
+DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.config.axes")
+
+#: the folder of the ``roughcontact`` package (this file is ``roughcontact/study/registries.py``)
+PACKAGE = Path(__file__).resolve().parents[1]
 
 
-def _imports(path: Path, module: str) -> set[str]:
-    """The ``roughcontact`` modules the source *path* of *module* imports (anywhere in it: a lazy
-    import inside a function counts), by name; ``from package import name`` counts the submodule
-    ``package.name`` where there is one, else the package."""
+@functools.lru_cache(maxsize=1)
+def _modules() -> dict[str, Path]:
+    """``{dotted name: source file}`` of every module of the package (a package by its
+    ``__init__.py``), read from the folder: nothing is imported."""
+    out = {}
+    for path in PACKAGE.rglob("*.py"):
+        parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+        out[".".join(parts[:-1] if parts[-1] == "__init__" else parts)] = path
+    return out
+
+
+@functools.lru_cache(maxsize=None)
+def _imports(module: str) -> frozenset:
+    """The modules of the package that *module* imports (anywhere in it: a lazy import inside a
+    function counts); ``from package import name`` counts the submodule ``package.name`` where
+    there is one, else the package."""
+    modules = _modules()
+    path = modules[module]
     package = module if path.name == "__init__.py" else module.rpartition(".")[0]
     out = set()
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
         if isinstance(node, ast.Import):
-            out.update(alias.name for alias in node.names if alias.name.startswith("roughcontact"))
+            out.update(alias.name for alias in node.names if alias.name in modules)
         elif isinstance(node, ast.ImportFrom):
             if node.level:
                 parts = package.split(".")
@@ -90,43 +106,25 @@ def _imports(path: Path, module: str) -> set[str]:
                 source = f"{base}.{node.module}" if node.module else base
             else:
                 source = node.module or ""
-            if not source.startswith("roughcontact"):
-                continue
-            for alias in node.names:
-                name = f"{source}.{alias.name}"
-                out.add(name if importlib.util.find_spec(source) and _is_module(name) else source)
-    return out
-
-
-def _is_module(name: str) -> bool:
-    try:
-        return importlib.util.find_spec(name) is not None
-    except (ImportError, ValueError):   # a name that is not a module (a function of the package)
-        return False
-
-
-#: the packages whose modules are imported by discovery (the registries), not by name: every module
-#: of their folder counts where the package is imported
-DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.config.axes")
+            out.update(f"{source}.{alias.name}" if f"{source}.{alias.name}" in modules else source
+                       for alias in node.names)
+    return frozenset(name for name in out if name in modules)
 
 
 def _closure(entries) -> set[Path]:
-    """The source files of *entries* and of every ``roughcontact`` module they import, transitively;
+    """The source files of *entries* and of every module of the package they import, transitively;
     a registry's package (:data:`DISCOVERED`) with every module of its folder."""
-    seen, files, todo = set(), set(), list(entries)
+    modules = _modules()
+    seen, todo = set(), list(entries)
     while todo:
         module = todo.pop()
-        if module in seen:
+        if module in seen or module not in modules:
             continue
         seen.add(module)
-        path = _file_of(module)
-        if path is None:
-            continue
-        files.add(path)
         if module in DISCOVERED:   # every module of the registry's package: found by discovery
-            todo += [f"{module}.{p.stem}" for p in path.parent.glob("*.py") if p.name != "__init__.py"]
-        todo += sorted(_imports(path, module))
-    return files
+            todo += [name for name in modules if name.rpartition(".")[0] == module]
+        todo += sorted(_imports(module))
+    return {modules[name] for name in seen}
 
 
 def code_fingerprint(rule: str) -> str:
@@ -137,9 +135,8 @@ def code_fingerprint(rule: str) -> str:
     if rule not in ANALYSIS_CODE:
         raise ValueError(f"no analysis rule {rule!r} to fingerprint; known: {', '.join(ANALYSIS_CODE)}")
     digest = hashlib.sha256()
-    root = _file_of("roughcontact").parent
     for path in sorted(_closure(ANALYSIS_CODE[rule])):
-        digest.update(str(path.relative_to(root)).encode())
+        digest.update(str(path.relative_to(PACKAGE)).encode())
         digest.update(b"\0")
         digest.update(path.read_bytes())
         digest.update(b"\0")
