@@ -13,16 +13,11 @@ import base64
 import html
 import math
 
+from ..analysis.statistics import VERDICTS
 from ..files import provenance
-from .tables import VERDICT_COLOURS
+from .tables import DIGITS, VERDICT_COLOURS, stamp, verdict_cell, verdict_word
 
 __all__ = ["DIGITS", "NO_RECOMMENDATION", "fmt", "summary_html", "write_summary", "recommended_models"]
-
-#: significant digits of every number on the landing page
-DIGITS = 4
-
-#: the verdict words, in the order of the counts' columns
-VERDICTS = ("consistent", "differs", "untested", "error")
 
 _STYLE = "font-family: system-ui, sans-serif; font-size: 13px;"
 _TABLE = 'style="border-collapse: collapse; margin: 4px 0 12px 0;"'
@@ -51,15 +46,8 @@ def _value_interval(value, low, high) -> str:
     return f"{fmt(value)} {_interval(low, high)}" if fmt(low) and fmt(high) else fmt(value)
 
 
-def _verdict_word(text) -> str:
-    return str(text).split(":")[0].split(" ")[0] if isinstance(text, str) else ""
-
-
 def _verdict_cell(text) -> str:
-    word = _verdict_word(text)
-    colour = VERDICT_COLOURS.get(word, "#ffffff")
-    return (f'<td class="verdict-{html.escape(word)}" style="{_CELL} background:{colour}">'
-            f"{html.escape(str(text) if isinstance(text, str) else '')}</td>")
+    return verdict_cell(text, style=f"{_CELL} ")
 
 
 def _table(header, rows) -> str:
@@ -78,7 +66,7 @@ def verdict_counts(claims):
     """Per claim: its statement (the first row's) and the count of each verdict word."""
     out = []
     for claim, rows in claims.groupby("claim", sort=False):
-        words = [_verdict_word(v) for v in rows["verdict"]]
+        words = [verdict_word(v) for v in rows["verdict"]]
         out.append((str(claim), str(rows["statement"].iloc[0]), {w: words.count(w) for w in VERDICTS}))
     return out
 
@@ -175,9 +163,7 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
                      _verdict_cell(r.get("systematic_high_verdict"))])
     parts.append(_table(["combination", "model", "max_rel_dev", "systematic, F < F_tr", "verdict",
                          "systematic, F > F_tr", "verdict"], rows))
-    stamp = provenance.provenance_attrs()
-    parts.append(f'<p style="color:#555; font-size: 11px;">roughcontact {html.escape(str(stamp["roughcontact_version"]))}, '
-                 f'git commit {html.escape(str(stamp["git_commit"]))}, written {html.escape(str(stamp["created_utc"]))}</p>')
+    parts.append(f'<p style="color:#555; font-size: 11px;">{stamp()}</p>')
     parts.append("</div>")
     return "\n".join(parts) + "\n"
 

@@ -13,7 +13,11 @@ import numbers
 
 from ..files import provenance
 
-__all__ = ["VERDICT_COLOURS", "TABLE_PAGES", "csv_to_html", "html_table", "write_html_table"]
+__all__ = ["DIGITS", "VERDICT_COLOURS", "TABLE_PAGES", "csv_to_html", "html_table", "write_html_table", "verdict_word",
+           "verdict_cell", "stamp"]
+
+#: significant digits of every number shown on a page (the CSV files keep every digit)
+DIGITS = 4
 
 #: background colour of a verdict cell, by the verdict's first word (``error``: the claim's estimate raised)
 VERDICT_COLOURS = {"consistent": "#d6f5d6", "differs": "#f8d0d0", "untested": "#e6e6e6", "error": "#f5d76e"}
@@ -35,8 +39,29 @@ def _cell_text(value) -> str:
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
     if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        return f"{value:.4g}"
+        return f"{value:.{DIGITS}g}"
     return str(value)
+
+
+def verdict_word(text) -> str:
+    """The verdict word a verdict cell is coloured by: the first word of *text* (``""`` for no text)."""
+    return str(text).split(":")[0].split(" ")[0] if isinstance(text, str) else ""
+
+
+def verdict_cell(text, style: str = "") -> str:
+    """A ``<td>`` of the verdict *text* (escaped), coloured by :data:`VERDICT_COLOURS` and of the class
+    ``verdict-<word>``; *style*: further CSS of the cell."""
+    word = html.escape(verdict_word(text))
+    colour = VERDICT_COLOURS.get(word, "#ffffff")
+    shown = html.escape(text) if isinstance(text, str) else ""
+    return f'<td class="verdict-{word}" style="{style}background:{colour}">{shown}</td>'
+
+
+def stamp() -> str:
+    """The provenance line under a page (escaped): package version, git commit, time written."""
+    attrs = provenance.provenance_attrs()
+    return (f"roughcontact {html.escape(str(attrs['roughcontact_version']))}, git commit "
+            f"{html.escape(str(attrs['git_commit']))}, written {html.escape(str(attrs['created_utc']))}")
 
 
 def html_table(rows, *, title: str, lead: str, verdict_columns=("verdict",), first=(), above: str = "") -> str:
@@ -59,18 +84,14 @@ def html_table(rows, *, title: str, lead: str, verdict_columns=("verdict",), fir
         for column, value in zip(rows.columns, record):
             text = html.escape(_cell_text(value))
             if column in verdict_columns:
-                word = text.split(":")[0].split(" ")[0]
-                colour = VERDICT_COLOURS.get(word, "#ffffff")
-                cells.append(f'<td class="verdict-{word}" style="background:{colour}">{text}</td>')
+                cells.append(verdict_cell(_cell_text(value)))
             elif isinstance(value, numbers.Real) and not isinstance(value, bool):
                 cells.append(f'<td class="number">{text}</td>')
             else:
                 wide = ' class="text"' if len(text) > 40 else ""
                 cells.append(f"<td{wide}>{text}</td>")
         body.append("<tr>" + "".join(cells) + "</tr>")
-    stamp = provenance.provenance_attrs()
-    footer = (f"roughcontact {html.escape(str(stamp['roughcontact_version']))}, git commit "
-              f"{html.escape(str(stamp['git_commit']))}, written {html.escape(str(stamp['created_utc']))}")
+    footer = stamp()
     return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
             f"<style>{_STYLE}</style></head><body><h1>{html.escape(title)}</h1>"
             f'<p class="lead">{html.escape(lead)}</p>{above}'
