@@ -29,6 +29,7 @@ from ...models.adhesion import jkr_pull_off
 from ...models.rough_adhesion import johnson_rough_sphere_parameter
 from ..files import provenance, runfile
 from ..runs import naming as runs
+from .ensemble import combinations
 from .merge import gather, kind_layouts
 from ..runs.jobs import job_settings
 from .statistics import bootstrap_indices, interval
@@ -72,8 +73,6 @@ def merge_adhesion(study, paths) -> dict:
 
 def pull_off_table(groups: dict, study):
     """``pull_off.csv`` (module docstring) of the merged adhesive groups."""
-    import itertools
-
     import pandas as pd
 
     study = StudySettings.of(study)
@@ -81,11 +80,9 @@ def pull_off_table(groups: dict, study):
     zeta = study.fit.zeta
     rows = []
     for kind, ds in groups.items():
-        axes = [d for d in ds["pull_off_force"].dims if d != "seed"]
         indices = bootstrap_indices(ds.sizes["seed"], zeta.bootstrap)
-        for position in itertools.product(*(range(ds.sizes[a]) for a in axes)):
-            combo = {a: float(ds[a].values[i]) for a, i in zip(axes, position)}
-            force = ds["pull_off_force"].isel(dict(zip(axes, position))).values / (E * L**2)   # (seed,)
+        for combo, sub in combinations(ds, "pull_off_force", ("seed",)):
+            force = sub["pull_off_force"].values / (E * L**2)   # (seed,)
             mean = float(force.mean())
             low, high = interval(force[indices].mean(1), zeta.confidence) if force.size > 1 else (math.nan, math.nan)
             w, radius = combo["work_of_adhesion"], combo.get("radius", math.inf)
@@ -94,7 +91,7 @@ def pull_off_table(groups: dict, study):
             if math.isfinite(radius):
                 jkr, a_jkr = jkr_pull_off(radius=radius, e_star=E, work_of_adhesion=w)
                 jkr /= E * L**2
-                cells = ds["retract_contact_cells"].isel({**dict(zip(axes, position)), "retract": 0}).values
+                cells = sub["retract_contact_cells"].isel(retract=0).values
                 preload = float(np.mean(np.sqrt(cells / math.pi))) * (L / n)
                 row.update(pull_off_jkr=jkr, pull_off_ratio=mean / jkr, pull_off_ratio_ci_low=high / jkr,
                            pull_off_ratio_ci_high=low / jkr, preload_radius_ratio=preload / a_jkr,

@@ -62,14 +62,6 @@ RULE = ("Decision rule: per combination, the recommended model (★) minimises S
 _MARK = {"recommended": "★", "tied": "≈", "worse": "", "not scored": "n.s."}
 
 
-def _number(value) -> float:
-    try:
-        value = float(value)
-    except (TypeError, ValueError):
-        return math.nan
-    return value
-
-
 def inputs(k_model, k_mean, k_boot, use, branches: dict, g=None) -> dict:
     """What the decision reads of one model on one combination.
 

@@ -19,17 +19,18 @@ def resolved(contact_cells, min_cells: int):
     return contact_cells >= min_cells
 
 
-def combinations(ds):
+def combinations(ds, variable: str = "stiffness", inner: tuple = ("seed", "force")):
     """Every combination of the sweep axes of one kind's merged Dataset *ds*, in the order of its
     dimensions (C order: the last axis fastest, as ``crossover.csv``): ``(where, sub)``, *where*
-    ``{axis: coordinate}`` (floats) and *sub* its slice with the dimensions ``(seed, force)`` in
-    that order, whatever the number of combinations."""
+    ``{axis: coordinate}`` (floats) and *sub* its slice with the dimensions *inner* first, in that
+    order, whatever the number of combinations. The sweep axes are the dimensions of *variable*
+    other than *inner* (the adhesive runs' pull-off: ``"pull_off_force"``, ``("seed",)``)."""
     import itertools
 
-    dims = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
+    dims = [d for d in ds[variable].dims if d not in inner]
     for position in itertools.product(*(range(ds.sizes[d]) for d in dims)):
         yield ({d: float(ds[d].values[i]) for d, i in zip(dims, position)},
-               ds.isel(dict(zip(dims, position))).transpose("seed", "force"))
+               ds.isel(dict(zip(dims, position))).transpose(*inner, ...))
 
 
 def ensemble(ds):

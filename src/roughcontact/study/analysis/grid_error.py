@@ -21,7 +21,6 @@ finest grids stands as the error. Forces are ``F/(E* L²)``.
 """
 from __future__ import annotations
 
-import itertools
 import math
 import sys
 
@@ -29,7 +28,7 @@ import numpy as np
 
 from ...errors import MergeError
 
-from .ensemble import resolved
+from .ensemble import combinations, resolved
 from ..config.settings import StudySettings
 from .statistics import bootstrap_indices, interval
 
@@ -54,9 +53,8 @@ def richardson(k_coarse, k_medium, k_fine, ratio: float):
 
 
 def _combinations(ds):
-    axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
-    for position in itertools.product(*(ds[a].values.tolist() for a in axes)):
-        yield dict(zip(axes, position))
+    """The axes of every combination of *ds* (:func:`ensemble.combinations`)."""
+    return [where for where, _ in combinations(ds)]
 
 
 def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: float,

@@ -45,7 +45,6 @@ is sorted by combination, then decision.
 """
 from __future__ import annotations
 
-import itertools
 import logging
 import math
 
@@ -58,7 +57,7 @@ from . import decision
 from ..files import provenance
 from ..runs import naming as runs
 from . import not_modelled as unmodelled
-from .ensemble import resolved
+from .ensemble import combinations, resolved
 from ..report.plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval, verdict
 from ..config.settings import StudySettings
@@ -91,15 +90,15 @@ class Combination(dict):
 
 
 def _combinations(ds, study: StudySettings, zeta_of: dict):
-    dims = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
-    for position in itertools.product(*(range(ds.sizes[a]) for a in dims)):
-        combo = Combination({a: float(ds[a].values[i]) for a, i in zip(dims, position)})
+    """``(Combination, (seed, force) slice)`` of every sphere combination (:func:`ensemble.combinations`)."""
+    for where, sub in combinations(ds):
+        combo = Combination(where)
         for axis, setting in runs.DEFAULTS.items():   # an axis a file made before it existed lacks
             if axis in runs.AXES["sphere"]:
                 combo.setdefault(axis, runs.coordinate(axis, setting, study.grid.length))
         combo.update(n=study.grid.n, length=study.grid.length, e_star=study.e_star,
                      zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)))
-        yield combo, ds.isel(dict(zip(dims, position))).transpose("seed", "force")
+        yield combo, sub
 
 
 def combo_label(c: Combination) -> str:

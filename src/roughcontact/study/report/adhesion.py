@@ -10,12 +10,12 @@ Forces ``F/(E* L²)``, approaches in units of ``L``.
 """
 from __future__ import annotations
 
-import itertools
 import math
 
 import numpy as np
 
 from ...models.adhesion import jkr_pull_off
+from ..analysis.ensemble import combinations
 from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
 from ..config.settings import StudySettings
 
@@ -31,8 +31,7 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path) -> 
     E, L = study.e_star, study.grid.length
     combos = []
     if ds is not None:
-        axes = [d for d in ds["pull_off_force"].dims if d != "seed"]
-        combos = [dict(zip(axes, values)) for values in itertools.product(*(ds[a].values.tolist() for a in axes))]
+        combos = [where for where, _ in combinations(ds, "pull_off_force", ("seed",))]
     shown = combos[:MAX_PANELS]
     cols = min(3, max(1, len(shown)))
     rows = max(1, math.ceil(len(shown) / cols))
