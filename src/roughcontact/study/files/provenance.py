@@ -29,6 +29,7 @@ __all__ = [
     "provenance_attrs",
     "atomic_path",
     "write_netcdf",
+    "write_text",
 ]
 
 
@@ -160,3 +161,10 @@ def write_netcdf(data, path: str | os.PathLike) -> None:
 
             with netCDF4.Dataset(tmp, "w", format="NETCDF4") as nc:
                 data(nc)
+
+
+def write_text(text: str, path: str | os.PathLike) -> None:
+    """Write *text* (UTF-8) to *path* atomically (:func:`atomic_path`): the report's HTML pages."""
+    with atomic_path(path) as tmp:
+        with open(tmp, "w", encoding="utf-8") as fh:
+            fh.write(text)

@@ -192,6 +192,4 @@ def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_p
                 f"\"Fig. 3 stiffness vs force\")"
     text = summary_html(_read(claims_csv), _read(crossover_csv), _read(zeta_csv), _read(models_csv),
                         chosen[1] if chosen else None, fig3_title=title)
-    with provenance.atomic_path(out_html) as tmp:
-        with open(tmp, "w", encoding="utf-8") as fh:
-            fh.write(text)
+    provenance.write_text(text, out_html)

@@ -101,9 +101,7 @@ def html_table(rows, *, title: str, lead: str, verdict_columns=("verdict",), fir
 
 def write_html_table(rows, path, **kwargs) -> None:
     """:func:`html_table` written to *path* atomically (temp file, then rename)."""
-    with provenance.atomic_path(path) as tmp:
-        with open(tmp, "w", encoding="utf-8") as fh:
-            fh.write(html_table(rows, **kwargs))
+    provenance.write_text(html_table(rows, **kwargs), path)
 
 
 #: the report's page of each CSV table the workflow writes: its title and lead paragraph
