@@ -8,7 +8,8 @@ import itertools
 import math
 
 from ..analysis.statistics import NOT_SWEPT, OFF_PAPER, UNRESOLVED, judge, untested
-from .registry import Claim, flat_zeta_rows, paper_rows, register, row
+from ..config import axes
+from .registry import Claim, flat_zeta_rows, register, row
 
 __all__ = ["prl2012_exponent", "exponent_rows"]
 
@@ -26,7 +27,7 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
     (l) With a roll-off below the system size, ``K ∝ p`` over a range of pressures (Pastewka et
     al., Phys. Rev. E 87, 062809 (2013)): per H and roll-off ``λ_r < L``, the largest local
     exponent of the flat runs at the paper's setting of every other optional axis
-    (:func:`~roughcontact.study.claims.registry.paper_rows`) with its interval; consistent when the interval of some load
+    (:func:`~roughcontact.study.config.axes.paper_mask`) with its interval; consistent when the interval of some load
     contains 1 (the number of such loads is the reason). (m) The free exponent of the flat runs
     at the paper's setting (``zeta.csv``) against :func:`prl2012_exponent`.
     """
@@ -43,7 +44,7 @@ def exponent_rows(exponents, zeta_df, study) -> list[dict]:
         sub = exponents[(exponents["kind"] == "flat") & (exponents["hurst"] == hurst)
                         & (exponents["rolloff"] == rolloff)] if len(exponents) else exponents
         # every other optional axis at the paper's setting: the claim is about the roll-off alone
-        sub = sub.loc[paper_rows(sub.drop(columns="rolloff"), L).index] if len(sub) else sub
+        sub = sub[axes.paper_mask(sub.drop(columns="rolloff"), L)] if len(sub) else sub
         sweep = f"flat H = {hurst:g}, rolloff = {rolloff:g} (length unit), {seeds} seeds, n = {n}"
         if not len(sub):
             rows.append(row("l", statement, math.nan, math.nan, math.nan, 1.0,

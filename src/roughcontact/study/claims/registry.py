@@ -18,7 +18,7 @@ from ..analysis.statistics import OFF_PAPER, split_verdict, untested
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
            "combinations", "table_rows", "sphere", "flat", "with_crossover", "paper_setting", "at_theory", "all_of",
-           "describe", "off_theory", "paper_rows", "flat_zeta_rows"]
+           "describe", "off_theory", "flat_zeta_rows"]
 
 log = logging.getLogger(__name__)
 
@@ -320,14 +320,6 @@ def table_rows(claim: Claim, inputs: ClaimInputs) -> list:
             continue
         out += rows
     return out
-
-
-def paper_rows(frame, length: float):
-    """The rows of the table *frame* at the paper's setting of every optional axis
-    (:func:`roughcontact.study.config.axes.paper_setting`; a missing or empty cell counts as the paper's)."""
-    if not len(frame):
-        return frame
-    return frame[np.array([axes.paper_setting(r, length) for _, r in frame.iterrows()], dtype=bool)]
 
 
 def flat_zeta_rows(zeta_df):

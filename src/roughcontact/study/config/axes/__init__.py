@@ -225,13 +225,15 @@ def paper_setting(combination, length: float) -> bool:
 
 def paper_mask(frame, length: float):
     """A boolean array: which rows of the table *frame* (a pandas DataFrame with the axes as
-    columns) are at the paper's setting of every optional axis it has a column of."""
+    columns) are at the paper's setting of every optional axis, by the rule of :func:`off_paper`
+    (a missing column or an empty cell, e.g. a flat row's body exponent, counts as the paper's)."""
     import numpy as np
 
     keep = np.ones(len(frame), dtype=bool)
     for name, paper in paper_coordinates(length).items():
         if name in frame:
-            keep &= frame[name].to_numpy(float) == paper
+            values = frame[name].to_numpy(float)
+            keep &= (values == paper) | np.isnan(values)
     return keep
 
 
