@@ -65,3 +65,12 @@ def test_unknown_registry_is_a_usage_error(capsys):
     with pytest.raises(SystemExit) as info:
         main(["list", "presets"])
     assert info.value.code == 2, f"exit code {info.value.code}"
+
+
+def test_commands_are_the_parser_subcommands():
+    """cli.COMMANDS (the generated command-line reference documents each) names every subcommand."""
+    from roughcontact import cli
+
+    parser = cli.build_parser()
+    choices = next(a.choices for a in parser._subparsers._group_actions if a.choices)
+    assert tuple(choices) == cli.COMMANDS, f"subcommands {tuple(choices)} against COMMANDS {cli.COMMANDS}"

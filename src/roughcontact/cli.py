@@ -67,7 +67,7 @@ def _number_flags() -> dict:
     """:data:`_NUMBER_FLAGS` and every sweep axis (the registry, read when called)."""
     return {**{a.name: (a.name, 0) for a in AXES.values()}, **_NUMBER_FLAGS}
 #: the subcommands of :func:`build_parser`
-COMMANDS = ("indent", "measured", "check-config")
+COMMANDS = ("indent", "measured", "check-config", "list")
 
 
 def _add_solver_options(parser, *, defaults: str) -> None:
