@@ -3,4 +3,5 @@ import sys
 
 from . import main
 
-sys.exit(main())
+if __name__ == "__main__":   # not when imported (the API reference imports every module)
+    sys.exit(main())
