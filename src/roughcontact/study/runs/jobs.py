@@ -12,37 +12,32 @@ import math
 
 import numpy as np
 
-from ...bem import DEFAULT_MAXITER
 from ..config import axes
 from ..files import runfile
 from .naming import parse_combo
 from ..config.axes import kind_of
 from ..config.defaults import solver_maxiter
-from ..config.settings import StudySettings, force_grid
+from ..config.records import ForcePathRecord
+from ..config.settings import StudySettings
 
 __all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
 
 
-@dataclasses.dataclass(frozen=True)
-class JobSettings:
-    """Everything one indentation run depends on.
+@dataclasses.dataclass(frozen=True, kw_only=True)
+class JobSettings(ForcePathRecord):
+    """Everything one generated run depends on: the job record
+    (:class:`~roughcontact.study.config.records.RunRecord`) of the indent job, its coarse
+    companion and an adhesive run.
 
-    Lengths are in the unit of ``length``; forces are given normalised, ``F/(E* L²)``.
+    Lengths are in the unit of ``length``; forces are given normalised, ``F/(E* L²)``. The grid
+    (``n``, ``length``), ``e_star``, the load path and the solver settings are the fields of
+    :class:`~roughcontact.study.config.records.ForcePathRecord`; this kind adds its surface.
 
     Attributes
     ----------
     hurst, radius, h_rms, seed :
         The run: Hurst exponent, body radius (``inf``: a nominally flat surface on the
         periodic half-space), rms roughness height, seed of the surface.
-    n, length, e_star :
-        Grid points per side, side length ``L``, effective modulus ``E*``.
-    force_from, force_to, force_count :
-        The log-spaced load path, ``F/(E* L²)``.
-    tol, maxiter :
-        Stopping tolerance and iteration limit of every contact solve of the run
-        (:func:`roughcontact.bem.solve`), the stiffness's extra solves included.
-    stiffness_method, rel_step :
-        How ``k = dF/dd`` is computed (:func:`roughcontact.bem.stiffness`).
     realization_of : int or None
         The finer grid whose surface this run presses, seen on its ``n × n`` grid
         (``grid.realization_of``; :func:`roughcontact.surfaces.self_affine`); ``None``: its own.
@@ -57,16 +52,6 @@ class JobSettings:
     radius: float
     h_rms: float
     seed: int
-    n: int
-    length: float
-    e_star: float
-    force_from: float
-    force_to: float
-    force_count: int
-    tol: float
-    stiffness_method: str
-    rel_step: float
-    maxiter: int = DEFAULT_MAXITER
     options: tuple = ()
     realization_of: int | None = None
 
@@ -115,10 +100,6 @@ class JobSettings:
         return [(spec.transform, self.value(spec.name)) for spec in axes.AXES.values()
                 if spec.transform is not None and self.kind in spec.kinds
                 and not spec.at_paper(self.value(spec.name))]
-
-    def forces_normalized(self) -> np.ndarray:
-        """The load path ``F/(E* L²)``, log-spaced."""
-        return force_grid(self.force_from, self.force_to, self.force_count)
 
     def forces(self) -> np.ndarray:
         """The load path in force units, ``F = (F/(E* L²)) E* L²``."""
