@@ -28,6 +28,7 @@ from ...errors import MergeError
 from ...models.adhesion import jkr_pull_off
 from ...models.rough_adhesion import johnson_rough_sphere_parameter
 from ..files import provenance, runfile
+from ..config.axes import coordinate_attrs
 from ..runs import naming as runs
 from .ensemble import combinations
 from .merge import gather, kind_layouts
@@ -65,7 +66,7 @@ def merge_adhesion(study, paths) -> dict:
                      for name, values in data.items()}
         groups[layout.kind] = xr.Dataset(
             variables,
-            coords={**{a: (a, layout.coords[a], runfile.AXIS_ATTRS[a]) for a in dims},
+            coords={**{a: (a, layout.coords[a], coordinate_attrs(a)) for a in dims},
                     "retract": ("retract", np.arange(count), runfile.RETRACT_ATTRS)},
             attrs={"surface_kind": layout.kind, "half_space": layout.half_space})
     return groups

@@ -14,6 +14,7 @@ import numpy as np
 
 from ...errors import MergeError
 from ..files import provenance, runfile
+from ..config.axes import coordinate_attrs
 from ..runs import naming as runs
 from .ensemble import ensemble
 from ..files.io import read_run, write_groups
@@ -170,7 +171,7 @@ def merge_runs(study, paths) -> dict:
         dims = (*axes, "seed", "force")
         groups[kind] = xr.Dataset(
             {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names},
-            coords={**{axis: (axis, coords[axis], runfile.AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
+            coords={**{axis: (axis, coords[axis], coordinate_attrs(axis)) for axis in (*axes, "seed")},
                     **_force_coords(study, kind)},
             attrs={"surface_kind": kind, "half_space": layout.half_space,
                    "run_git_commits": provenance.canonical_json(runs_of.commits)},

@@ -25,9 +25,13 @@ import dataclasses
 import numpy as np
 
 from .defaults import solver_maxiter
-from .settings import force_grid
 
-__all__ = ["RunRecord", "ForcePathRecord"]
+__all__ = ["RunRecord", "ForcePathRecord", "force_grid"]
+
+
+def force_grid(force_from: float, force_to: float, count: int) -> np.ndarray:
+    """The log-spaced load path ``F/(E* L²)`` of a force range ``{from, to, count}``."""
+    return np.geomspace(force_from, force_to, int(count))
 
 
 @dataclasses.dataclass(frozen=True, kw_only=True)

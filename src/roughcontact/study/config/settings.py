@@ -25,6 +25,7 @@ from typing import Mapping
 import numpy as np
 
 from . import axes
+from .records import force_grid
 
 __all__ = [
     "force_grid",
@@ -40,11 +41,6 @@ __all__ = [
     "StudySettings",
     "coarse_config",
 ]
-
-
-def force_grid(force_from: float, force_to: float, count: int) -> np.ndarray:
-    """The log-spaced load path ``F/(E* L²)`` of a force range ``{from, to, count}``."""
-    return np.geomspace(force_from, force_to, int(count))
 
 
 @dataclasses.dataclass(frozen=True)

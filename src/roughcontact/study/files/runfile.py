@@ -11,10 +11,9 @@ import dataclasses
 
 import numpy as np
 
-from ..config.axes import AXES
 
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "RETRACT_VARIABLES",
-           "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
+           "PULL_OFF_VARIABLES", "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
            "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)
@@ -136,15 +135,6 @@ SCALARS = {
     "h_rms": ("f8", "rms roughness height", "length"),
     "seed": ("i8", "random seed of the surface", "1"),
 }
-
-def __getattr__(name: str):
-    """``AXIS_ATTRS``: attributes of the sweep axes (:data:`roughcontact.study.config.axes.AXES`, read
-    when asked) and of ``seed`` as coordinates of the merged files."""
-    if name == "AXIS_ATTRS":
-        return {**{a.name: {"long_name": a.long_name, "units": a.unit} for a in AXES.values()},
-                "seed": {"long_name": "random seed of the surface", "units": "1"}}
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
 
 def _put(nc, name: str, dtype: str, dims: tuple, values, attrs: dict) -> None:
     """One variable *name* of the open NetCDF file *nc*: its type, dimensions, values and attributes."""
