@@ -165,7 +165,8 @@ def merge_runs(study, paths) -> dict:
     for layout in kind_layouts(study, table, paths):
         kind, axes, coords = layout.kind, layout.axes, layout.coords
         plastic = any(row["hardness"] is not None for row, _ in layout.rows)
-        names = runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
+        names = (runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
+                 + (runfile.PATCH_VARIABLES if study.fields.patches else ()))
         runs_of = gather(layout, lambda row: job_settings(study, row), {n: runfile.VARIABLES[n].dtype for n in names},
                          value=_generated_value)
         dims = (*axes, "seed", "force")

@@ -32,6 +32,7 @@ __all__ = [
     "ForceRange",
     "GridSettings",
     "SolverSettings",
+    "FieldsSettings",
     "ZetaFitSettings",
     "SlopeFitSettings",
     "FitSettings",
@@ -79,6 +80,14 @@ class SolverSettings:
     stiffness: str           #: ``punch`` (exact ``dF/dd``) or ``difference``
     rel_step: float          #: relative step of the ``difference`` stiffness
     maxiter: int | None = None   #: iteration limit per load (``None``: the solver's default)
+
+
+@dataclasses.dataclass(frozen=True)
+class FieldsSettings:
+    """What each generated run keeps beyond its per-load numbers (``fields``)."""
+
+    patches: bool = False   #: per load, the number of contact patches and the largest one's cells
+    at: tuple = ()          #: ``F/(E* L²)``: the loads nearest these keep their contact fields
 
 
 @dataclasses.dataclass(frozen=True)
@@ -167,6 +176,8 @@ class StudySettings:
         Tile side of a measured scan in cells (``None``: the whole square).
     stickiness : roughcontact.study.config.stickiness.StickinessSettings or None
         The stickiness sweep (claim (q); ``None``: the config has no ``stickiness`` section).
+    fields : FieldsSettings
+        What each generated run keeps beyond its per-load numbers (contact patches, fields).
     config : mapping
         The resolved configuration itself, read-only: provenance and run files record it.
     """
@@ -183,6 +194,7 @@ class StudySettings:
     spectrum: tuple = ()
     tile: int | None = None
     stickiness: object = None
+    fields: FieldsSettings = FieldsSettings()
     config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
                                         compare=False)
 
@@ -242,6 +254,8 @@ class StudySettings:
             spectrum=tuple(SpectrumInput(**entry) for entry in cfg.get("spectrum") or ()),
             tile=None if cfg.get("tile") is None else int(cfg["tile"]),
             stickiness=StickinessSettings.of(cfg),
+            fields=FieldsSettings(patches=bool((cfg.get("fields") or {}).get("patches", False)),
+                                  at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ())))),
             config=types.MappingProxyType(dict(cfg)),
         )
 

@@ -20,7 +20,7 @@ from ..config.defaults import solver_maxiter
 from ..config.records import ForcePathRecord
 from ..config.settings import StudySettings
 
-__all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
+__all__ = ["JobSettings", "job_settings", "nearest_loads", "options_of", "settings_from_wildcards"]
 
 
 @dataclasses.dataclass(frozen=True, kw_only=True)
@@ -46,6 +46,10 @@ class JobSettings(ForcePathRecord):
         the registry's order, under their configuration names and units (``hardness`` in units
         of ``E*``); each is also an attribute (``settings.rolloff``), the paper's value where
         it is not listed.
+    patches : bool
+        Whether every load also counts its contact patches (``fields.patches``).
+    field_loads : tuple of int
+        The loads (0-based, of the path) that keep their contact fields (``fields.at``).
     """
 
     hurst: float
@@ -54,6 +58,8 @@ class JobSettings(ForcePathRecord):
     seed: int
     options: tuple = ()
     realization_of: int | None = None
+    patches: bool = False
+    field_loads: tuple = ()
 
     def __getattr__(self, name: str):
         """The value of an optional axis (its paper value where :attr:`options` does not list it)."""
@@ -114,16 +120,23 @@ class JobSettings(ForcePathRecord):
         """The settings as a flat mapping of plain values: what a run file's ``config_hash``
         and attributes are made of. Optional axes at the paper's setting are left out."""
         out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
-               if field.name not in ("options", "realization_of")}
-        if self.realization_of is not None:   # runs of a grid's own surfaces keep their hash
+               if field.name not in ("options", "realization_of", "patches", "field_loads")}
+        # each at its default is left out: runs of a grid's own surfaces, and runs that keep nothing
+        # more than their per-load numbers, keep their hash
+        if self.realization_of is not None:
             out["realization_of"] = self.realization_of
+        if self.patches:
+            out["patches"] = True
+        if self.field_loads:
+            out["field_loads"] = list(self.field_loads)
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
 
     def file_spec(self) -> runfile.RunFileSpec:
         """What this run's file must be (:func:`roughcontact.study.files.io.read_run`): the run file's
         variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
         H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
-        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS,
+                     *(runfile.PATCH_VARIABLES if self.patches else ()))
         dims = ("force",)
         if self.work_of_adhesion > 0:
             variables += (*runfile.RETRACT_VARIABLES, *runfile.PULL_OFF_VARIABLES)
@@ -163,7 +176,16 @@ def job_settings(study, run: dict) -> JobSettings:
         force_from=rng.start, force_to=rng.stop, force_count=rng.count,
         tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
         maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
-        realization_of=study.grid.realization_of)
+        realization_of=study.grid.realization_of, patches=study.fields.patches,
+        field_loads=nearest_loads(rng.normalized(), study.fields.at))
+
+
+def nearest_loads(forces, at) -> tuple:
+    """The indices (sorted, once each) of the loads of *forces* nearest, in ``log F``, to each of *at*."""
+    if not at:
+        return ()
+    log_f = np.log(np.asarray(forces, dtype=float))
+    return tuple(sorted({int(np.argmin(np.abs(log_f - np.log(f)))) for f in at}))
 
 
 def settings_from_wildcards(study, wildcards) -> JobSettings:
