@@ -15,6 +15,8 @@ import numpy as np
 from ...errors import MergeError
 from ..files import provenance, runfile
 from ..config.axes import coordinate_attrs
+from ..config.units import to_metres
+from .conductance import conductance_variables
 from ..runs import naming as runs
 from .ensemble import ensemble
 from ..files.io import read_run, write_groups
@@ -177,6 +179,10 @@ def merge_runs(study, paths) -> dict:
             attrs={"surface_kind": kind, "half_space": layout.half_space,
                    "run_git_commits": provenance.canonical_json(runs_of.commits)},
         )
+        if study.conductance:   # k/E* = (k/(E* L)) L in the length unit
+            groups[kind] = groups[kind].assign(conductance_variables(
+                groups[kind]["stiffness"] / study.e_star, metres_per_unit=to_metres(study.units.length),
+                settings=study.conductance))
     return groups
 
 

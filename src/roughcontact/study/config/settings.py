@@ -33,6 +33,7 @@ __all__ = [
     "GridSettings",
     "SolverSettings",
     "FieldsSettings",
+    "ConductanceSettings",
     "ZetaFitSettings",
     "SlopeFitSettings",
     "FitSettings",
@@ -88,6 +89,17 @@ class FieldsSettings:
 
     patches: bool = False   #: per load, the number of contact patches and the largest one's cells
     at: tuple = ()          #: ``F/(E* L²)``: the loads nearest these keep their contact fields
+
+
+@dataclasses.dataclass(frozen=True)
+class ConductanceSettings:
+    """The bodies' resistivities and conductivities of the contact conductance (``conductance``)."""
+
+    resistivity: tuple | None = None    #: ``(ρ₁, ρ₂)`` in Ω·m (``None``: no electrical conductance)
+    conductivity: tuple | None = None   #: ``(K₁, K₂)`` in W/(m·K) (``None``: no thermal conductance)
+
+    def __bool__(self) -> bool:
+        return self.resistivity is not None or self.conductivity is not None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -178,6 +190,8 @@ class StudySettings:
         The stickiness sweep (claim (q); ``None``: the config has no ``stickiness`` section).
     fields : FieldsSettings
         What each generated run keeps beyond its per-load numbers (contact patches, fields).
+    conductance : ConductanceSettings
+        The bodies' resistivities and conductivities of the contact conductance (false: none).
     config : mapping
         The resolved configuration itself, read-only: provenance and run files record it.
     """
@@ -195,6 +209,7 @@ class StudySettings:
     tile: int | None = None
     stickiness: object = None
     fields: FieldsSettings = FieldsSettings()
+    conductance: ConductanceSettings = ConductanceSettings()
     config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
                                         compare=False)
 
@@ -256,6 +271,8 @@ class StudySettings:
             stickiness=StickinessSettings.of(cfg),
             fields=FieldsSettings(patches=bool((cfg.get("fields") or {}).get("patches", False)),
                                   at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ())))),
+            conductance=ConductanceSettings(**{key: None if value is None else tuple(float(v) for v in value)
+                                               for key, value in (cfg.get("conductance") or {}).items()}),
             config=types.MappingProxyType(dict(cfg)),
         )
 
