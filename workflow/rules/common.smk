@@ -68,10 +68,15 @@ def run_files(wildcards):
 
 
 def coarse_run_files(wildcards):
-    """Every run file of the companion study on grid.coarse, in the order merge expects."""
+    """The sphere run files of the companion study on grid.coarse (the grid error is the
+    spheres'; no flat run is pressed twice), in the order merge expects."""
     if COARSE is None:
         raise ValueError("grid.coarse is not set: no coarse runs")
-    return study_runs.run_paths(COARSE, COARSE_RUN_PATTERN)
+    return [
+        study_runs.run_path(run, COARSE_RUN_PATTERN)
+        for run in study_runs.runs(COARSE)
+        if run["kind"] == "sphere"
+    ]
 
 
 # The adhesive runs (work_of_adhesion > 0), in the order their merge expects; empty without.

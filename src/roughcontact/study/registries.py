@@ -30,6 +30,7 @@ ANALYSIS_CODE = {
     "claims": ("roughcontact.study.claims",),
     "figures": ("roughcontact.study.report.figures",),
     "summary": ("roughcontact.study.report.summary",),
+    "grid_error": ("roughcontact.study.analysis.grid_error",),
 }
 
 
