@@ -79,7 +79,8 @@ def _spheres(table):
 
 
 def _unresolved(r) -> str:
-    """The reason of an adhesive row below resolution (``resolved`` false, :mod:`roughcontact.study.analysis.adhesion`)."""
+    """The reason of an adhesive row below resolution (``resolved`` false,
+    :mod:`roughcontact.study.analysis.adhesion`)."""
     error = r.get("method_error", method_error(r["jkr_radius_cells"]))
     size = (f"the method's own pull-off error is {error:+.1%}" if math.isfinite(error) else
             "the method's own pull-off error is not measured (below 10 cells)")

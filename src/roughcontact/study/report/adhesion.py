@@ -98,8 +98,9 @@ def _pull_off(plt, table, path) -> None:
                 part = rows[keep]
                 y = part["pull_off_ratio"].to_numpy(float)
                 err = np.abs(np.array([y - part["pull_off_ratio_ci_low"], part["pull_off_ratio_ci_high"] - y]))
+                named = keep is fine or not fine.any()    # one legend entry per H
                 ax.errorbar(part["johnson_parameter"], y, yerr=np.nan_to_num(err), fmt="o", color=f"C{j % 10}",
-                            mfc=face, capsize=2, ms=4, label=f"H = {hurst:g}" if keep is fine or not fine.any() else None)
+                            mfc=face, capsize=2, ms=4, label=f"H = {hurst:g}" if named else None)
         ax.axhline(1.0, color="k", lw=0.8, ls=":", label="smooth sphere (JKR)")
         ax.set(xscale="log", xlabel="h_rms / δ_c (Johnson)", ylabel="pull-off / JKR's −(3/2)πwR",
                title="pull-off of rough spheres (95 % interval over seeds)\nopen: below resolution (method's "
