@@ -88,7 +88,9 @@ def stiffness_panels(groups: dict, models: dict) -> list[tuple]:
 
 def draw_stiffness_panel(ax, groups: dict, models: dict, study: StudySettings, panel) -> None:
     """One panel of :func:`stiffness_panels` on *ax*: k(F) (N, N/m) of one surface, the mean over
-    the tiles (or seeds) with its band, Hertz for a sphere, and the models' predictions named."""
+    the tiles (or seeds) with its band, Hertz for a sphere, and the models' predictions named
+    (``(outside its range)`` where the scan lies outside the model's stated range,
+    :func:`roughcontact.study.analysis.measured_scorecard.outside_range`)."""
     kind, radius, names = panel
     ds = groups[kind]
     sub = ds.sel(radius=radius) if kind == "sphere" else ds
@@ -99,12 +101,17 @@ def draw_stiffness_panel(ax, groups: dict, models: dict, study: StudySettings, p
     if np.all(np.isfinite(sub["k_ci_low"].values)):
         ax.fill_between(force, sub["k_ci_low"].values, sub["k_ci_high"].values, color="0.5", alpha=0.3, lw=0)
     if names:
+        from ..analysis.measured_scorecard import outside_range, scan_values
+
         pred = models[kind].sel(radius=radius) if kind == "sphere" else models[kind]
         order = pred["model"].values.tolist()
+        scan = scan_values(models["spectrum"].attrs if "spectrum" in models else {})
         for model in names:
             i = order.index(model)
+            # a model whose stated range the scan lies outside of is named so (the scorecard's outside_range)
+            flag = " (outside its range)" if outside_range(model, scan) else ""
             ax.loglog(pred["force"].values, pred["stiffness"].sel(model=model).values, color=f"C{i % 10}",
-                      linestyle=LINE_STYLES[i % len(LINE_STYLES)], lw=1.1, label=model)
+                      linestyle=LINE_STYLES[i % len(LINE_STYLES)], lw=1.1, label=model + flag)
     if kind == "sphere":
         from ..config.measured import to_metres, to_pascals
 
