@@ -79,7 +79,7 @@ def test_the_studys_figures_draw_without_a_warning(resolved):
 
 @pytest.mark.parametrize("with_grid, shown", [(True, True), (False, True), (False, False)])
 def test_the_scorecard_figure_draws_without_a_warning(tmp_path, monkeypatch, with_grid, shown):
-    from roughcontact.study.analysis import scorecard
+    from roughcontact.study.report import scorecard
 
     monkeypatch.setattr(scorecard, "save_png", lambda fig, path, **_: pyplot().close(fig))
     dev = 0.1 * np.linspace(-1, 1, FORCE.size)
@@ -89,19 +89,19 @@ def test_the_scorecard_figure_draws_without_a_warning(tmp_path, monkeypatch, wit
                        coords={"force_normalized": ("force", FORCE)})
     table = pd.DataFrame([{"combination": "H0.7_R0.5_h0.01", "model": m, "max_rel_dev": 0.1, "not_modelled": "",
                            "decision": d} for m, d in (("eq16_paper", "recommended"), ("mdr", "tied"))])
-    scorecard._figure(tmp_path / "f.png", "H0.7_R0.5_h0.01", curve, table)
+    scorecard.scorecard_figure(tmp_path / "f.png", "H0.7_R0.5_h0.01", curve, table)
 
 
 @pytest.mark.parametrize("rows", [2, 0])
 def test_the_exponents_figure_draws_without_a_warning(tmp_path, monkeypatch, rows):
-    from roughcontact.study.analysis import exponents
+    from roughcontact.study.report import exponents
 
     monkeypatch.setattr(exponents, "save_png", lambda fig, path, **_: pyplot().close(fig))
     table = pd.DataFrame([{"kind": kind, "hurst": 0.7, "radius": radius, "force": f, "local_exponent": 0.5,
                            "ci_low": 0.45, "ci_high": 0.55} for kind, radius in (("sphere", 0.5), ("flat", math.inf))
                           for f in FORCE[:rows]], columns=["kind", "hurst", "radius", "force", "local_exponent", "ci_low",
                                                           "ci_high"])
-    exponents._figure(table, tmp_path / "f.png")
+    exponents.exponents_figure(table, tmp_path / "f.png")
 
 
 def _pull_off_table():

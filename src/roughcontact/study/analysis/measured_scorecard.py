@@ -40,9 +40,8 @@ from ..config import axes
 from . import not_modelled as unmodelled
 from .ensemble import resolved
 from .statistics import bootstrap_indices, interval
-from ..config.settings import StudySettings
 
-__all__ = ["measured_scorecard", "run_measured_scorecard", "MEASURED_SCORECARD_LEAD", "scan_values", "range_note",
+__all__ = ["measured_scorecard", "MEASURED_SCORECARD_LEAD", "scan_values", "range_note",
            "outside_range"]
 
 #: the lead paragraph of a scan's scorecard page in the report
@@ -152,22 +151,3 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
     if len(table):
         table["rank"] = unmodelled.rank(table, ["kind", "radius"])
     return table
-
-
-def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv, out_html) -> None:
-    """``measured_scorecard`` rule: the scorecard of one scan as CSV and as an HTML page of the report."""
-    from ..files.io import read_groups, write_csv
-    from ..report.tables import write_html_table
-
-    study = StudySettings.of(study)
-    predicted = read_groups(spectrum_file)
-    table = measured_scorecard(read_groups(merged_file), predicted, name=name,
-                               min_cells=study.fit.zeta.min_cells, fit=study.fit.zeta)
-    write_csv(table, out_csv)
-    spectrum = predicted.get("spectrum")
-    note = range_note(table, spectrum.attrs if spectrum is not None else {})
-    write_html_table(table, out_html, title=f"Model scorecard of the scan {name}",
-                     lead=f"{note} {MEASURED_SCORECARD_LEAD}", verdict_columns=(),
-                     first=("kind", "radius", "model", "rank", unmodelled.COLUMN, "outside_range", "max_rel_dev",
-                            "max_rel_dev_ci_low", "max_rel_dev_ci_high", "rms_rel_dev", "rms_rel_dev_ci_low",
-                            "rms_rel_dev_ci_high", "inside_band", "n_loads"))
