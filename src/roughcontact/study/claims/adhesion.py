@@ -59,7 +59,7 @@ import math
 import numpy as np
 
 from ...models.rough_adhesion import STICKINESS_RANGE_LIMIT
-from ..analysis.adhesion import RESOLVED_CELLS, RESOLVED_ERROR, method_error, resolved
+from ..analysis.adhesion import ERROR_CELLS, METHOD_ERRORS, RESOLVED_CELLS, RESOLVED_ERROR, method_error, resolved
 from ..analysis.statistics import (NO_PREDICTION, NOT_SWEPT, OUT_OF_RANGE, UNRESOLVED, judge, split_verdict, untested,
                                    verdict_bound)
 from .registry import Claim, register, row
@@ -81,11 +81,13 @@ def _spheres(table):
 def _unresolved(r) -> str:
     """The reason of an adhesive row below resolution (``resolved`` false,
     :mod:`roughcontact.study.analysis.adhesion`)."""
-    error = r.get("method_error", method_error(r["jkr_radius_cells"]))
-    size = (f"the method's own pull-off error is {error:+.1%}" if math.isfinite(error) else
-            "the method's own pull-off error is not measured (below 10 cells)")
-    return (f"JKR's pull-off radius is {r['jkr_radius_cells']:.1f} cells, where {size}, more than "
-            f"{RESOLVED_ERROR:.0%} (resolved from {RESOLVED_CELLS:.0f} cells: refine grid.n)")
+    error = method_error(r["jkr_radius_cells"])
+    size = (f"where the method's own pull-off error is {error:+.1%}, more than {RESOLVED_ERROR:.0%}"
+            if math.isfinite(error) else
+            f"below the {ERROR_CELLS[0]:g} cells where the method's own pull-off error was measured "
+            f"({METHOD_ERRORS[0]:+.1%} there, more than {RESOLVED_ERROR:.0%})")
+    return (f"JKR's pull-off radius is {r['jkr_radius_cells']:.1f} cells, {size} (resolved from "
+            f"{RESOLVED_CELLS:.0f} cells: refine grid.n)")
 
 
 def _n(inputs):
