@@ -19,6 +19,7 @@ one), ``e_star`` in ``units.e_star``; forces normalised, ``F/(E* L²)``.
 from __future__ import annotations
 
 import dataclasses
+import math
 import types
 from typing import Mapping
 
@@ -291,9 +292,9 @@ class StudySettings:
         return self.e_star * self.grid.length ** 2
 
     def coarse_study(self) -> "StudySettings":
-        """The companion study of the grid error (``grid.coarse``): the same runs and surfaces on
-        the coarse grid (``grid.realization_of`` = this study's surfaces' grid); ``ValueError``
-        without ``grid.coarse``."""
+        """The companion study of the grid error (``grid.coarse``): the same sphere runs and
+        surfaces on the coarse grid (``grid.realization_of`` = this study's surfaces' grid);
+        ``ValueError`` without ``grid.coarse`` or without a sphere (:func:`coarse_config`)."""
         return StudySettings.of(coarse_config(self.config))
 
     def topography_entry(self, name: str) -> TopographyInput:
@@ -314,13 +315,18 @@ class StudySettings:
 def coarse_config(cfg) -> dict:
     """The resolved configuration of the companion study of the grid error of *cfg* (resolved,
     with ``grid.coarse``): ``grid.n`` = the coarse grid, ``grid.realization_of`` = the grid whose
-    surfaces *cfg* presses, everything else as in *cfg*. ``ValueError`` without ``grid.coarse``."""
+    surfaces *cfg* presses, ``radius`` the finite radii only (the grid error is the spheres'; no
+    flat run is pressed twice), everything else as in *cfg*. ``ValueError`` without
+    ``grid.coarse`` or without a sphere."""
     grid = dict(cfg["grid"])
     coarse = grid.pop("coarse", None)
     if coarse is None:
         raise ValueError("the study has no grid.coarse: there is no coarse companion study")
+    spheres = [r for r in cfg.get("radius", []) if math.isfinite(r)]
+    if not spheres:
+        raise ValueError("the study has no sphere radius: its companion on grid.coarse would have no run")
     fine = grid["n"] if grid.get("realization_of") is None else grid["realization_of"]
-    return {**cfg, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
+    return {**cfg, "radius": spheres, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
 
 
 def _rebuild(fields: dict) -> StudySettings:
