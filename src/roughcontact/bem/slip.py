@@ -114,11 +114,8 @@ def slip_kernel(apply, bound, total, start, *, tol, maxiter) -> SlipSolution:
     released = np.zeros(m, dtype=bool)
     while spent < maxiter:
         stick = ~(upper | lower)
-        if not stick.any():  # everything at a bound below the force: release the most stuck
-            order = np.argsort(q - 0.0)
-            stick[order[: max(1, m // 10)]] = True
-            upper &= ~stick
-            lower &= ~stick
+        if not stick.any():  # every cell at a bound, yet Σq < Σμp: start the active set afresh
+            upper[:], lower[:], stick[:] = False, False, True
         fixed = np.where(upper, bound, np.where(lower, -bound, 0.0))
         free = np.flatnonzero(stick)
 
