@@ -81,3 +81,13 @@ def test_forces_of_the_path(normal_path):
     expected = FRICTION * (normal_path[-1].force - np.array([s.force for s in normal_path[::-1]]))
     assert cj.forces == pytest.approx(expected, rel=1e-12, abs=0.0)
     assert cj.displacements[0] == 0.0
+
+
+@pytest.mark.parametrize("n", [96, 97])
+def test_periodic_zero_poisson_equal(n):
+    """The periodic half-space at ν = 0: the BEM path equals Ciavarella–Jäger (δ_x measured from the
+    mean plane on both sides) to the solvers' tolerance, as on the free half-space (1e-6)."""
+    heights = surfaces.rough_sphere(n, radius=1.0, hurst=0.7, h_rms=5e-3, length=1.0, seed=2)
+    states = bem.load_path(heights, np.geomspace(2e-4, 1e-3, 4), length=1.0, e_star=1.0, periodic=True)
+    cj, slip = _both(states, 0.0)
+    assert slip.displacements[1:] == pytest.approx(cj.displacements[1:], rel=1e-6)

@@ -9,7 +9,7 @@ flat-punch stiffness (:mod:`.punch`) and penetration-hardness plasticity (:mod:`
 Tangential contact, elastic only (the normal–tangential coupling neglected): the Cerruti kernel
 (:mod:`.cerruti`), the full-stick stiffness :func:`tangential_stiffness` and Cattaneo–Mindlin
 partial slip :func:`partial_slip` (:mod:`.tangential`, kernel :mod:`.slip`), and the
-Ciavarella–Jäger construction :func:`ciavarella_jager` (:mod:`.ciavarella_jager`).
+Ciavarella–Jäger construction :func:`ciavarella_jager` (:mod:`.cj_superposition`).
 Adhesive paths, elastic only: the detachment criterion (:mod:`.adhesion`) and the Maugis–Dugdale
 cohesive zone (:mod:`.cohesive`). The patches of a contact set: :func:`contact_patches`
 (:mod:`.patches`). Conventions are those of :mod:`roughcontact`.
@@ -26,7 +26,7 @@ from .contact import (
 )
 from .patches import Patches, contact_patches
 from .tangential import SlipPath, SlipState, partial_slip, tangential_stiffness
-from .ciavarella_jager import CiavarellaJagerPath, ciavarella_jager
+from .cj_superposition import CiavarellaJagerPath, ciavarella_jager
 
 #: the version of the solvers' results: bumped on purpose by a change that alters what a run computes
 #: (a run of the pipeline is computed again when it changes; a change that keeps every result does not

@@ -89,7 +89,8 @@ def slip_kernel(apply, bound, total, start, *, tol, maxiter) -> SlipSolution:
     ----------
     apply : callable
         ``v ↦ K v``, the tangential displacement on the cells under tractions ``v`` (both flat,
-        length ``m``).
+        length ``m``); if it has a method ``restrict(cells)``, that gives ``K`` restricted to
+        the flat indices ``cells`` (e.g. a dense submatrix) as such a callable.
     bound : numpy.ndarray
         ``μ p`` per cell, > 0 (force/length²).
     total : float
@@ -114,18 +115,18 @@ def slip_kernel(apply, bound, total, start, *, tol, maxiter) -> SlipSolution:
     released = np.zeros(m, dtype=bool)
     while spent < maxiter:
         stick = ~(upper | lower)
-        if not stick.any():  # everything at a bound below the force: release the most stuck
-            order = np.argsort(q - 0.0)
-            stick[order[: max(1, m // 10)]] = True
-            upper &= ~stick
-            lower &= ~stick
+        if not stick.any():  # every cell at a bound, yet Σq < Σμp: start the active set afresh
+            upper[:], lower[:], stick[:] = False, False, True
         fixed = np.where(upper, bound, np.where(lower, -bound, 0.0))
         free = np.flatnonzero(stick)
 
-        def apply_stick(values, free=free):
-            full = zero.copy()
-            full[free] = values
-            return apply(full)[free]
+        if hasattr(apply, "restrict"):
+            apply_stick = apply.restrict(free)
+        else:
+            def apply_stick(values, free=free):
+                full = zero.copy()
+                full[free] = values
+                return apply(full)[free]
 
         offset = apply(fixed)[free]
         x = q[free]

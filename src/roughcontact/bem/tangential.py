@@ -18,7 +18,7 @@ including the coupling is not offered (not built; see the guide page on tangenti
   stay at ``μp`` under a small increment), Cattaneo–Mindlin's ``k_t(0)(1 − Q/μP)^(1/3)``.
 
 The Ciavarella–Jäger construction from a normal load path is
-:func:`roughcontact.bem.ciavarella_jager.ciavarella_jager`.
+:func:`roughcontact.bem.cj_superposition.ciavarella_jager`.
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
+from scipy.sparse.linalg import cg
 
 from .._validate import check_finite_positive, is_finite_number
 from ..errors import ConvergenceError
@@ -277,18 +278,30 @@ def partial_slip(state: ContactState, fractions: Sequence[float], *, friction: f
             if stiffness:
                 stick_window = np.zeros(footprint.shape, dtype=bool)
                 stick_window.reshape(-1)[cells[~slip]] = True
-                k = punch_stiffness(operator, stick_window, tol) * state.cell_area if stick_window.any() else 0.0
+                k = _stick_stiffness(apply, operator, stick_window, ~slip, tol) * state.cell_area
         q = q_cells
         results.append(_state(state, window, cells, q_cells, slip, fraction, friction, delta, k, spent, error))
     return SlipPath(normal=state, friction=friction, poisson=poisson, full_stick_stiffness=k0,
                     states=tuple(results))
 
 
+class _DenseInfluence:
+    """``v ↦ K v`` by a dense influence matrix on the contact cells, restrictable to a subset."""
+
+    def __init__(self, matrix):
+        self.matrix = matrix
+
+    def __call__(self, values):
+        return self.matrix @ values
+
+    def restrict(self, cells):
+        return self.matrix[np.ix_(cells, cells)].__matmul__
+
+
 def _influence(operator, footprint, cells):
     """``v ↦ K v`` on the flat contact *cells* of the window *footprint*: dense or by FFT."""
     if cells.size <= dense_limit(operator):
-        matrix = operator.influence_matrix(*np.unravel_index(cells, footprint.shape))
-        return matrix.__matmul__
+        return _DenseInfluence(operator.influence_matrix(*np.unravel_index(cells, footprint.shape)))
     field = np.zeros(footprint.shape)
     flat = field.reshape(-1)
 
@@ -297,6 +310,22 @@ def _influence(operator, footprint, cells):
         return operator(field).reshape(-1)[cells]
 
     return apply
+
+
+def _stick_stiffness(apply, operator, stick_window, stick, tol) -> float:
+    """``Σ q`` of ``K q = 1`` on the stick cells (multiply by ``Δ²``): on the dense matrix's
+    submatrix when there is one, else :func:`~roughcontact.bem.punch.punch_stiffness`."""
+    if not stick.any():
+        return 0.0
+    if isinstance(apply, _DenseInfluence):
+        matrix = apply.matrix[np.ix_(stick, stick)]
+        ones = np.ones(matrix.shape[0])
+        solution, info = cg(matrix, ones, x0=ones / matrix[0, 0], rtol=tol, atol=0.0,
+                            maxiter=10 * ones.size + 100)
+        if info != 0:
+            raise ConvergenceError(f"the stick zone's stiffness solve did not converge in {info} iterations")
+        return float(solution.sum())
+    return punch_stiffness(operator, stick_window, tol)
 
 
 def _state(normal, window, cells, q_cells, slip, fraction, friction, delta, k, spent, error) -> SlipState:
