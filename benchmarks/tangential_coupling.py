@@ -4,7 +4,10 @@ Cerruti's ``u_z = −Q(1 − 2ν)/(4πG) · x/ρ²`` (Johnson 1985, eq. 2.19c) o
 ``q_x`` of :func:`roughcontact.bem.partial_slip` is added to the surface (the gap
 ``g = lift − d + u(p) + u_z(q)``) and the normal problem solved again at the same force: the change
 of the pressure and of the approach is the first step of a coupled (non-Goodman) iteration, a
-measure of what the neglect leaves out (it vanishes at ν = 1/2). The cell integral of ``x/ρ²`` is
+measure of what the neglect leaves out (it vanishes at ν = 1/2). Reported: the largest change of
+the pressure (over the contact, and inside ``r < 0.8a``, away from the edge cells that open or
+close), the mean change ``Σ|Δp|/Σp``, the shift of the pressure's centre along ``x`` in cells,
+and the changes of the approach and of the contact area. The cell integral of ``x/ρ²`` is
 ``Σ_corners ± [X atan(Y/X) + (Y/2) ln(X² + Y²)]`` (``X = i ± 1/2``, ``Y = j ± 1/2``, ``x`` along
 the first axis), convolved over signed offsets by FFT (``scipy.signal.fftconvolve``).
 
@@ -57,15 +60,23 @@ def main(argv=None) -> int:
     heights = surfaces.paraboloid(n, radius=1.0, length=1.0)
     state = bem.solve(heights, force=force, length=1.0, e_star=1.0)
     print(f"Hertz sphere, a = {args.cells} cells on {n}², mu = {args.friction}, Q/(mu P) = {args.fraction}")
-    print(f"{'nu':>5} {'max|u_z(q)|/d':>14} {'max|dp|/max p':>14} {'d_d/d':>10} {'dA/A':>8}")
+    print(f"{'nu':>5} {'max|u_z(q)|/d':>14} {'max|dp|/max p':>14} {'inner':>8} {'mean|dp|/p':>10} "
+          f"{'shift/cell':>10} {'d_d/d':>10} {'dA/A':>8}")
+    centre = np.arange(n) - n // 2
+    inner = np.hypot(centre[:, None], centre[None, :]) < 0.8 * args.cells
     for poisson in (0.0, 0.15, 0.3, 0.45, 0.5):
         path = bem.partial_slip(state, [args.fraction], friction=args.friction, poisson=poisson, stiffness=False)
         u_z = normal_displacement(path.states[0].traction, length=1.0, e_star=1.0, poisson=poisson)
         coupled = bem.solve(heights + u_z, force=force, length=1.0, e_star=1.0)
-        dp = np.abs(coupled.pressure - state.pressure).max() / state.pressure.max()
+        change = np.abs(coupled.pressure - state.pressure)
+        dp = change.max() / state.pressure.max()
+        dp_inner = change[inner].max() / state.pressure.max()
+        mean = change.sum() / state.pressure.sum()
+        shift = ((coupled.pressure.sum(axis=1) - state.pressure.sum(axis=1)) @ centre) / state.pressure.sum()
         dd = (coupled.depth + (heights + u_z).min() - heights.min()) / state.depth - 1
         da = coupled.contact_area / state.contact_area - 1
-        print(f"{poisson:5.2f} {np.abs(u_z[state.contact]).max() / state.depth:14.3e} {dp:14.3e} {dd:10.2e} {da:8.3f}")
+        print(f"{poisson:5.2f} {np.abs(u_z[state.contact]).max() / state.depth:14.3e} {dp:14.3e} {dp_inner:8.2e} "
+              f"{mean:10.2e} {shift:10.3f} {dd:10.2e} {da:8.3f}")
     return 0
 
 
