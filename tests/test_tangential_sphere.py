@@ -122,8 +122,10 @@ def test_bad_poisson(bad):
         bem.tangential_stiffness(state, poisson=bad)
 
 
-@pytest.mark.parametrize("kwargs, key", [(dict(friction=-0.1), "friction"), (dict(friction=float("nan")), "friction"),
-                                         (dict(fractions=[1.0]), "fractions"), (dict(fractions=[0.5, 0.2]), "fractions")])
+@pytest.mark.parametrize("kwargs, key", [(dict(friction=-0.1), "friction"),
+                                         (dict(friction=float("nan")), "friction"),
+                                         (dict(fractions=[1.0]), "fractions"),
+                                         (dict(fractions=[0.5, 0.2]), "fractions")])
 def test_bad_slip_arguments(kwargs, key):
     state, _, _ = _sphere(33, 4)
     arguments = dict(fractions=[0.5], friction=0.3) | kwargs

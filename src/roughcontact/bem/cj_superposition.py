@@ -2,8 +2,9 @@
 
 M. Ciavarella, "The generalized Cattaneo partial slip plane contact problem. I — Theory",
 Int. J. Solids Struct. 35, 2349 (1998), doi:10.1016/S0020-7683(97)00154-6, and J. Jäger,
-"A new principle in contact mechanics", J. Tribol. 120, 677 (1998), doi:10.1115/1.2833765: under a tangential force ``Q`` at fixed normal force ``P``
-the tractions are ``μ`` times the difference of two normal solutions,
+"A new principle in contact mechanics", J. Tribol. 120, 677 (1998), doi:10.1115/1.2833765:
+under a tangential force ``Q`` at fixed normal force ``P`` the tractions are ``μ`` times the
+difference of two normal solutions,
 
     q = μ [p(d) − p(d*)],   Q = μ [P(d) − P(d*)],
 

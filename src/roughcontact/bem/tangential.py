@@ -257,7 +257,7 @@ def partial_slip(state: ContactState, fractions: Sequence[float], *, friction: f
     apply = _influence(operator, footprint, cells)
     k0 = contact_tangential_stiffness(state.contact, length=state.length, e_star=state.e_star,
                                       poisson=poisson, periodic=state.periodic, tol=tol)
-    q = bound / bound.sum() if cells.size else bound
+    q = np.zeros(cells.size)  # the first warm start is then q ∝ p
     results = []
     for fraction in fractions:
         total = fraction * bound.sum()
