@@ -88,6 +88,24 @@ def test_good_configs_resolve():
         assert all(isinstance(s, int) for s in seeds)
 
 
+@pytest.mark.parametrize("preset", sorted(p.name for p in (ROOT / "presets").glob("*.yaml")))
+def test_presets_resolve_on_top_of_config_yaml(preset):
+    """`snakemake --configfile presets/NAME.yaml` in the checkout extends config.yaml key by key
+    (Snakemake's update_config): every preset resolves so, and keeps config.yaml's grid-error
+    companion (grid.coarse) only where it names its own grid.coarse."""
+    from snakemake.utils import update_config
+
+    merged = config.load_config(ROOT / "config.yaml")
+    raw = config.load_config(ROOT / "presets" / preset)
+    update_config(merged, raw)
+    inputs = [e if isinstance(e, str) else e["file"] for e in raw.get("topography", []) + raw.get("spectrum", [])]
+    if not all((ROOT / "presets" / f).is_file() for f in inputs):
+        pytest.skip("a measured preset without ../shared/topographies")
+    cfg = config.resolve_config(merged, base_dir=ROOT / "presets")
+    own = (raw.get("grid") or {}).get("coarse") if "grid" in raw else cfg["grid"].get("coarse")
+    assert cfg["grid"].get("coarse") == own
+
+
 def test_default_config_sweeps_every_axis():
     cfg = config.resolve_config(config.load_config(ROOT / "config.yaml"))
     for axis in ("hurst", "radius", "h_rms", "seeds"):

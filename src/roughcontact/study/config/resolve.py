@@ -116,7 +116,8 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
     coarse = cfg["grid"].get("coarse")   # absent: no grid error (resolved configs unchanged)
     if coarse is not None and int(coarse) >= cfg["grid"]["n"]:
         raise ConfigError(f"config key 'grid.coarse' = {coarse} is not allowed; allowed: null or a grid of fewer "
-                          f"than grid.n = {cfg['grid']['n']} points (the same surfaces on a coarser grid)",
+                          f"than grid.n = {cfg['grid']['n']} points (the same surfaces on a coarser grid; config.yaml sets "
+                          "193 for its 385² grid, so a config file with another grid.n names its own grid.coarse)",
                           key="grid.coarse")
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
     if isinstance(cfg["e_star"], dict):   # the two bodies: E* of eq. 4.22 of Johnson (1985)
