@@ -1,19 +1,29 @@
-"""End-to-end benchmark: a preset through ``snakemake --cores 2`` in a fresh directory.
+"""End-to-end benchmark: a sweep through ``snakemake --cores 2`` in a fresh directory, against
+the serial in-process solve of the same load paths, on the same machine in the same run.
 
-Runs the whole workflow (all indent jobs, merge, fits, figures), then the report, and
-prints the wall time of each and a table of the ``indent`` jobs from Snakemake's own
-per-job benchmark files (``results/benchmarks/indent/*.tsv``: wall seconds and peak
-resident memory ``max_rss``), split by surface kind (sphere or flat).
+First solves every run of the sweep one after another in this Python process
+(:func:`roughcontact.study.runs.indent.compute_run`: surface, warm-started load path, stiffness
+at every load; no file written), then runs the whole workflow (all indent jobs, merge, fits,
+figures, landing page) in a new directory, then the report. Prints a table of both wall times
+and their ratio (the issue's target: workflow ≤ 0.6× the serial solve on 2 cores), when the last
+run file was written, and the ``indent`` jobs from Snakemake's own per-job benchmark files
+(``results/benchmarks/indent/*.tsv``: wall seconds and peak resident memory ``max_rss``; one file
+per job, a job being ``jobs.batch`` runs), split by surface kind (sphere or flat).
+
+Timings on a shared machine are only comparable within one run: the load average before and
+after is printed.
 
 Usage::
 
-    python benchmarks/pipeline.py [--configfile presets/paper.yaml] [--cores 2] [--keep DIR]
+    python benchmarks/pipeline.py [--configfile config.yaml] [--cores 2] [--keep DIR] [--no-serial]
 """
 
 from __future__ import annotations
 
 import argparse
+import datetime
 import math
+import os
 import shutil
 import subprocess
 import sys
@@ -21,7 +31,6 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -35,12 +44,34 @@ def snakemake(workdir: Path, configfile: Path, *args: str) -> float:
     """Run snakemake on the checkout's Snakefile in ``workdir``; return its wall time (s)."""
     command = [sys.executable, "-m", "snakemake", "-s", str(REPO / "Snakefile"), "-d", str(workdir),
                "--configfile", str(configfile), *args]
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in (str(REPO / "src"), os.environ.get("PYTHONPATH"))
+                                                       if p)}
     tick = time.perf_counter()
-    result = subprocess.run(command, cwd=workdir, capture_output=True, text=True)
+    result = subprocess.run(command, cwd=workdir, capture_output=True, text=True, env=env)
     seconds = time.perf_counter() - tick
     if result.returncode != 0:
         sys.exit(f"snakemake failed ({' '.join(args)}):\n{result.stderr[-3000:]}")
     return seconds
+
+
+def serial_solve(configfile: Path) -> tuple[float, dict]:
+    """Wall seconds of solving every run of the sweep one after another in this process (imports
+    done before the clock starts), and the study's size."""
+    sys.path.insert(0, str(REPO / "src"))
+    from roughcontact.study.config.resolve import load_config, study_settings
+    from roughcontact.study.runs import jobs, naming
+    from roughcontact.study.runs.indent import compute_run
+
+    study = study_settings(load_config(configfile), base_dir=configfile.parent)
+    settings = [jobs.job_settings(study, run) for run in naming.runs(study)]
+    tick = time.perf_counter()
+    for job in settings:
+        compute_run(job)
+    seconds = time.perf_counter() - tick
+    size = {"runs": len(settings), "n": study.grid.n,
+            "loads": "/".join(f"{kind} {study.forces[kind].count}" for kind in sorted({s.kind for s in settings})),
+            "batch": study.jobs.batch}
+    return seconds, size
 
 
 def job_table(workdir: Path) -> pd.DataFrame:
@@ -58,28 +89,48 @@ def job_table(workdir: Path) -> pd.DataFrame:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--configfile", type=Path, default=REPO / "presets/paper.yaml",
-                        help="sweep to run (default presets/paper.yaml)")
+    parser.add_argument("--configfile", type=Path, default=REPO / "config.yaml",
+                        help="sweep to run (default config.yaml, the default run)")
     parser.add_argument("--cores", type=int, default=2, help="snakemake --cores (default 2)")
     parser.add_argument("--keep", type=Path, default=None,
                         help="run in this (new) directory and keep it; default: a temporary one")
+    parser.add_argument("--no-serial", action="store_true", help="skip the serial in-process solve")
     args = parser.parse_args(argv)
     configfile = args.configfile.resolve()
 
     for line in machine_lines([]):
         print(line)
+    started = datetime.datetime.now(datetime.timezone.utc)
+    load_before = os.getloadavg()
+    serial, size = (math.nan, None) if args.no_serial else serial_solve(configfile)
     workdir = args.keep.resolve() if args.keep else Path(tempfile.mkdtemp(prefix="rc-pipeline-"))
     workdir.mkdir(parents=True, exist_ok=True)
     try:
+        tick = time.time()
         run_seconds = snakemake(workdir, configfile, "--cores", str(args.cores))
+        runs_done = max(p.stat().st_mtime for p in (workdir / "results/runs").rglob("*.nc")) - tick
         report_seconds = snakemake(workdir, configfile, "--report", "results/report.html")
         jobs = job_table(workdir)
     finally:
         if args.keep is None:
             shutil.rmtree(workdir, ignore_errors=True)
+    load_after = os.getloadavg()
 
-    print(f"sweep: {configfile.relative_to(REPO) if configfile.is_relative_to(REPO) else configfile}, "
-          f"snakemake --cores {args.cores}, fresh directory")
+    name = configfile.relative_to(REPO) if configfile.is_relative_to(REPO) else configfile
+    print(f"sweep: {name}, snakemake --cores {args.cores}, fresh directory; started {started:%Y-%m-%d %H:%M} UTC; "
+          f"load average (1, 5, 15 min) before {', '.join(f'{x:.1f}' for x in load_before)}, "
+          f"after {', '.join(f'{x:.1f}' for x in load_after)}")
+    if size is not None:
+        print(f"problem: {size['runs']} runs on {size['n']}² (loads: {size['loads']}), jobs.batch = {size['batch']}, "
+              f"{len(jobs)} indent jobs")
+    header = f"{'':>38} {'wall s':>8} {'/ serial':>9}"
+    print(header)
+    print("-" * len(header))
+    for label, seconds in (("serial in-process solve (1 core)", serial),
+                           (f"snakemake --cores {args.cores}: last run file", runs_done),
+                           (f"snakemake --cores {args.cores}: whole workflow", run_seconds)):
+        print(f"{label:>38} {seconds:8.1f} {seconds / serial:9.2f}")
+    print("-" * len(header))
     header = (f"{'kind':>7} {'jobs':>5} | {'job s median':>12} {'max':>7} {'sum':>8} | "
               f"{'peak RSS MB median':>18} {'max':>7}")
     print(header)

@@ -58,6 +58,13 @@ BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_seed{seed}.tsv"
 COARSE_RUN_PATTERN = "results/indent_coarse/{combo}/seed{seed}.nc"
 COARSE_LOG_PATTERN = "logs/indent_coarse/{combo}_seed{seed}.log"
 COARSE_BENCHMARK_PATTERN = "results/benchmarks/indent_coarse/{combo}_seed{seed}.tsv"
+# ... of an indent job of several runs (jobs.batch > 1): one benchmark per job, "{block}" its
+# seeds (e.g. seeds0_5); the run files and logs stay one per run
+BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_{block}.tsv"
+COARSE_BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent_coarse/{combo}_{block}.tsv"
+# The runs of a combination go to jobs in blocks of jobs.batch seeds (1: a job per run).
+INDENT_BATCH = STUDY.jobs.batch
+INDENT_BLOCKS = study_runs.seed_blocks(STUDY.seeds, INDENT_BATCH)
 FIGURE_DIR = "results/figures"
 CAPTION_DIR = "../report"  # relative to workflow/rules/
 
@@ -120,6 +127,26 @@ def grid_error_table(wildcards):
     return rules.grid_error.output.csv if COARSE is not None else []
 
 
+# A quiet console (profiles/default: --quiet rules): a failed indent job is the one line its script
+# prints (the rule, the run's error, its log); Snakemake's own three lines on the script's exit
+# status 1 add nothing and are left out (a job killed by a signal still shows).
+def _one_line_failures():
+    from snakemake.logging import logger as snakemake_logger
+    from snakemake.settings.enums import Quietness
+
+    settings = getattr(workflow, "output_settings", None)
+    if Quietness.RULES in (getattr(settings, "quiet", None) or ()):
+        snakemake_logger.addFilter(
+            lambda record: not (
+                "CalledProcessError" in str(record.msg)
+                and ".indent.py' returned non-zero exit status 1." in str(record.msg)
+            )
+        )
+
+
+_one_line_failures()
+
+
 # Scheduler resources of one indent job; both grow with the attempt: a job killed over a
 # limit is retried with more.
 def indent_mem_mb(wildcards, attempt):
@@ -128,6 +155,24 @@ def indent_mem_mb(wildcards, attempt):
 
 def indent_runtime(wildcards, attempt):
     return study_runs.indent_resources(STUDY)["runtime"] * attempt
+
+
+def batch_runtime(runs):
+    """The runtime of an indent job of *runs* runs (minutes), growing with the attempt."""
+    return (
+        lambda wildcards, attempt: study_runs.indent_resources(STUDY, runs)["runtime"]
+        * attempt
+    )
+
+
+def batch_settings(study, seeds):
+    """The params of an indent job of *seeds*: the JobSettings of each of its runs, in order."""
+    return lambda wildcards: tuple(
+        study_settings.job_settings(
+            study, {**study_runs.parse_combo(wildcards.combo), "seed": seed}
+        )
+        for seed in seeds
+    )
 
 
 # The measured inputs (workflow/rules/measured.smk): scans by name, spectra by name, radii.
