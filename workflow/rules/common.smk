@@ -127,21 +127,42 @@ def grid_error_table(wildcards):
     return rules.grid_error.output.csv if COARSE is not None else []
 
 
-# A quiet console (profiles/default: --quiet rules): a failed indent job is the one line its script
-# prints (the rule, the run's error, its log); Snakemake's own three lines on the script's exit
-# status 1 add nothing and are left out (a job killed by a signal still shows).
+# A quiet console (profiles/default: --quiet rules) hides Snakemake's block of a failed job too:
+# every failed job is one line instead. A local indent job's script prints its own (the run's
+# error and its log), so Snakemake's block and its three lines on the script's exit status 1 are
+# left out; any other failed job (another rule, a job the scheduler ended) is its rule, Snakemake's
+# message and its logs on one line. Without --quiet rules nothing changes.
 def _one_line_failures():
-    from snakemake.logging import logger as snakemake_logger
+    from snakemake.logging import LogEvent, logger as snakemake_logger
     from snakemake.settings.enums import Quietness
 
     settings = getattr(workflow, "output_settings", None)
-    if Quietness.RULES in (getattr(settings, "quiet", None) or ()):
-        snakemake_logger.addFilter(
-            lambda record: not (
-                "CalledProcessError" in str(record.msg)
-                and ".indent.py' returned non-zero exit status 1." in str(record.msg)
-            )
+    if Quietness.RULES not in (getattr(settings, "quiet", None) or ()):
+        return
+
+    def one_line(record):
+        text = str(record.msg)
+        if (
+            "CalledProcessError" in text
+            and ".indent.py' returned non-zero exit status 1." in text
+        ):
+            return False
+        if getattr(record, "event", None) != LogEvent.JOB_ERROR:
+            return True
+        name, message = getattr(record, "rule_name", "?"), getattr(
+            record, "rule_msg", None
         )
+        if str(name).startswith("indent") and message is None:
+            return False
+        logs = ", ".join(str(log) for log in getattr(record, "log", None) or ())
+        where = " ".join(("Error in rule", str(name)))
+        record.msg = f"{where}: {message or 'failed'}" + (
+            f" (log: {logs})" if logs else ""
+        )
+        record.event = None  # a plain line, which --quiet rules lets through
+        return True
+
+    snakemake_logger.addFilter(one_line)
 
 
 _one_line_failures()
