@@ -11,7 +11,9 @@ run file was written, and the ``indent`` jobs from Snakemake's own per-job bench
 per job, a job being ``jobs.batch`` runs), split by surface kind (sphere or flat).
 
 Timings on a shared machine are only comparable within one run: the load average before and
-after is printed.
+after is printed, and the CPU time (user + system) of the serial solve and of the workflow with
+all its jobs beside the wall times (on a loaded machine the workflow's several processes get a
+larger share of the cores than the one serial process, so its wall-time ratio flatters it).
 
 Usage::
 
@@ -24,6 +26,7 @@ import argparse
 import datetime
 import math
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -40,23 +43,26 @@ from run import machine_lines  # noqa: E402
 REPO = Path(__file__).resolve().parents[1]
 
 
-def snakemake(workdir: Path, configfile: Path, *args: str) -> float:
-    """Run snakemake on the checkout's Snakefile in ``workdir``; return its wall time (s)."""
+def snakemake(workdir: Path, configfile: Path, *args: str) -> tuple[float, float]:
+    """Run snakemake on the checkout's Snakefile in ``workdir``; return its wall time and the CPU
+    time (user + system) of it and all its jobs (s)."""
     command = [sys.executable, "-m", "snakemake", "-s", str(REPO / "Snakefile"), "-d", str(workdir),
                "--configfile", str(configfile), *args]
     env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in (str(REPO / "src"), os.environ.get("PYTHONPATH"))
                                                        if p)}
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     tick = time.perf_counter()
     result = subprocess.run(command, cwd=workdir, capture_output=True, text=True, env=env)
     seconds = time.perf_counter() - tick
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if result.returncode != 0:
         sys.exit(f"snakemake failed ({' '.join(args)}):\n{result.stderr[-3000:]}")
-    return seconds
+    return seconds, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
-def serial_solve(configfile: Path) -> tuple[float, dict]:
-    """Wall seconds of solving every run of the sweep one after another in this process (imports
-    done before the clock starts), and the study's size."""
+def serial_solve(configfile: Path) -> tuple[float, float, dict]:
+    """Wall and CPU seconds of solving every run of the sweep one after another in this process
+    (imports done before the clock starts), and the study's size."""
     sys.path.insert(0, str(REPO / "src"))
     from roughcontact.study.config.resolve import load_config, study_settings
     from roughcontact.study.runs import jobs, naming
@@ -64,14 +70,14 @@ def serial_solve(configfile: Path) -> tuple[float, dict]:
 
     study = study_settings(load_config(configfile), base_dir=configfile.parent)
     settings = [jobs.job_settings(study, run) for run in naming.runs(study)]
-    tick = time.perf_counter()
+    tick, cpu = time.perf_counter(), time.process_time()
     for job in settings:
         compute_run(job)
-    seconds = time.perf_counter() - tick
+    seconds, cpu = time.perf_counter() - tick, time.process_time() - cpu
     size = {"runs": len(settings), "n": study.grid.n,
             "loads": "/".join(f"{kind} {study.forces[kind].count}" for kind in sorted({s.kind for s in settings})),
             "batch": study.jobs.batch}
-    return seconds, size
+    return seconds, cpu, size
 
 
 def job_table(workdir: Path) -> pd.DataFrame:
@@ -102,14 +108,14 @@ def main(argv=None) -> int:
         print(line)
     started = datetime.datetime.now(datetime.timezone.utc)
     load_before = os.getloadavg()
-    serial, size = (math.nan, None) if args.no_serial else serial_solve(configfile)
+    serial, serial_cpu, size = (math.nan, math.nan, None) if args.no_serial else serial_solve(configfile)
     workdir = args.keep.resolve() if args.keep else Path(tempfile.mkdtemp(prefix="rc-pipeline-"))
     workdir.mkdir(parents=True, exist_ok=True)
     try:
         tick = time.time()
-        run_seconds = snakemake(workdir, configfile, "--cores", str(args.cores))
+        run_seconds, run_cpu = snakemake(workdir, configfile, "--cores", str(args.cores))
         runs_done = max(p.stat().st_mtime for p in (workdir / "results/runs").rglob("*.nc")) - tick
-        report_seconds = snakemake(workdir, configfile, "--report", "results/report.html")
+        report_seconds, _ = snakemake(workdir, configfile, "--report", "results/report.html")
         jobs = job_table(workdir)
     finally:
         if args.keep is None:
@@ -123,14 +129,16 @@ def main(argv=None) -> int:
     if size is not None:
         print(f"problem: {size['runs']} runs on {size['n']}² (loads: {size['loads']}), jobs.batch = {size['batch']}, "
               f"{len(jobs)} indent jobs")
-    header = f"{'':>38} {'wall s':>8} {'/ serial':>9}"
+    header = f"{'':>38} {'wall s':>8} {'/ serial':>9} {'CPU s':>8} {'/ serial':>9}"
     print(header)
     print("-" * len(header))
-    for label, seconds in (("serial in-process solve (1 core)", serial),
-                           (f"snakemake --cores {args.cores}: last run file", runs_done),
-                           (f"snakemake --cores {args.cores}: whole workflow", run_seconds)):
-        print(f"{label:>38} {seconds:8.1f} {seconds / serial:9.2f}")
+    for label, seconds, cpu in (("serial in-process solve (1 core)", serial, serial_cpu),
+                                (f"snakemake --cores {args.cores}: last run file", runs_done, math.nan),
+                                (f"snakemake --cores {args.cores}: whole workflow", run_seconds, run_cpu)):
+        print(f"{label:>38} {seconds:8.1f} {seconds / serial:9.2f} {cpu:8.1f} {cpu / serial_cpu:9.2f}")
     print("-" * len(header))
+    print(f"(CPU: user + system of the process, or of snakemake and all its jobs; on {args.cores} idle cores the "
+          f"workflow's wall time is at least its CPU time / {args.cores})")
     header = (f"{'kind':>7} {'jobs':>5} | {'job s median':>12} {'max':>7} {'sum':>8} | "
               f"{'peak RSS MB median':>18} {'max':>7}")
     print(header)
