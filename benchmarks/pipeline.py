@@ -1,9 +1,9 @@
 """End-to-end benchmark: a sweep through ``snakemake --cores 2`` in a fresh directory, against
 the serial in-process solve of the same load paths, on the same machine in the same run.
 
-First solves every run of the sweep one after another in this Python process
-(:func:`roughcontact.study.runs.indent.compute_run`: surface, warm-started load path, stiffness
-at every load; no file written), then runs the whole workflow (all indent jobs, merge, fits,
+First solves every run of the sweep one after another in one Python process with one BLAS and
+OpenMP thread, as Snakemake runs an indent job (:func:`roughcontact.study.runs.indent.compute_run`:
+surface, warm-started load path, stiffness at every load; no file written), then runs the whole workflow (all indent jobs, merge, fits,
 figures, landing page) in a new directory, then the report. Prints a table of both wall times
 and their ratio (the issue's target: workflow ≤ 0.6× the serial solve on 2 cores), when the last
 run file was written, and the ``indent`` jobs from Snakemake's own per-job benchmark files
@@ -60,9 +60,29 @@ def snakemake(workdir: Path, configfile: Path, *args: str) -> tuple[float, float
     return seconds, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
+#: what Snakemake sets for a job of one thread (the indent jobs): one BLAS and OpenMP thread
+ONE_THREAD = {name: "1" for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
+                                     "VECLIB_MAXIMUM_THREADS", "NUMEXPR_NUM_THREADS")}
+
+
 def serial_solve(configfile: Path) -> tuple[float, float, dict]:
-    """Wall and CPU seconds of solving every run of the sweep one after another in this process
-    (imports done before the clock starts), and the study's size."""
+    """Wall and CPU seconds of solving every run of the sweep one after another in one new Python
+    process with one thread, as an indent job has (imports done before the clock starts), and
+    the study's size."""
+    import json
+
+    env = {**os.environ, **ONE_THREAD,
+           "PYTHONPATH": os.pathsep.join(p for p in (str(REPO / "src"), os.environ.get("PYTHONPATH")) if p)}
+    result = subprocess.run([sys.executable, __file__, "--serial-only", "--configfile", str(configfile)],
+                            capture_output=True, text=True, env=env)
+    if result.returncode != 0:
+        sys.exit(f"the serial solve failed:\n{result.stderr[-3000:]}")
+    out = json.loads(result.stdout.strip().splitlines()[-1])
+    return out["seconds"], out["cpu"], out["size"]
+
+
+def _serial_solve_here(configfile: Path) -> dict:
+    """The serial solve in this process (:func:`serial_solve`)."""
     sys.path.insert(0, str(REPO / "src"))
     from roughcontact.study.config.resolve import load_config, study_settings
     from roughcontact.study.runs import jobs, naming
@@ -77,7 +97,7 @@ def serial_solve(configfile: Path) -> tuple[float, float, dict]:
     size = {"runs": len(settings), "n": study.grid.n,
             "loads": "/".join(f"{kind} {study.forces[kind].count}" for kind in sorted({s.kind for s in settings})),
             "batch": study.jobs.batch}
-    return seconds, cpu, size
+    return {"seconds": seconds, "cpu": cpu, "size": size}
 
 
 def job_table(workdir: Path) -> pd.DataFrame:
@@ -101,8 +121,14 @@ def main(argv=None) -> int:
     parser.add_argument("--keep", type=Path, default=None,
                         help="run in this (new) directory and keep it; default: a temporary one")
     parser.add_argument("--no-serial", action="store_true", help="skip the serial in-process solve")
+    parser.add_argument("--serial-only", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     configfile = args.configfile.resolve()
+    if args.serial_only:   # the child of serial_solve: one JSON line
+        import json
+
+        print(json.dumps(_serial_solve_here(configfile)))
+        return 0
 
     for line in machine_lines([]):
         print(line)
