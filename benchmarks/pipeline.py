@@ -121,6 +121,8 @@ def main(argv=None) -> int:
     parser.add_argument("--keep", type=Path, default=None,
                         help="run in this (new) directory and keep it; default: a temporary one")
     parser.add_argument("--no-serial", action="store_true", help="skip the serial in-process solve")
+    parser.add_argument("--batch", type=int, default=None,
+                        help="run the workflow with this jobs.batch (default: the config's; 1 = a job per run)")
     parser.add_argument("--serial-only", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     configfile = args.configfile.resolve()
@@ -139,9 +141,10 @@ def main(argv=None) -> int:
     workdir.mkdir(parents=True, exist_ok=True)
     try:
         tick = time.time()
-        run_seconds, run_cpu = snakemake(workdir, configfile, "--cores", str(args.cores))
+        batch = () if args.batch is None else ("--config", f"jobs={{batch: {args.batch}}}")
+        run_seconds, run_cpu = snakemake(workdir, configfile, "--cores", str(args.cores), *batch)
         runs_done = max(p.stat().st_mtime for p in (workdir / "results/runs").rglob("*.nc")) - tick
-        report_seconds, _ = snakemake(workdir, configfile, "--report", "results/report.html")
+        report_seconds, _ = snakemake(workdir, configfile, "--report", "results/report.html", *batch)
         jobs = job_table(workdir)
     finally:
         if args.keep is None:
@@ -149,12 +152,12 @@ def main(argv=None) -> int:
     load_after = os.getloadavg()
 
     name = configfile.relative_to(REPO) if configfile.is_relative_to(REPO) else configfile
-    print(f"sweep: {name}, snakemake --cores {args.cores}, fresh directory; started {started:%Y-%m-%d %H:%M} UTC; "
+    print(f"sweep: {name}, snakemake --cores {args.cores}"
+          f"{'' if args.batch is None else f' --config jobs={{batch: {args.batch}}}'}, fresh directory; started {started:%Y-%m-%d %H:%M} UTC; "
           f"load average (1, 5, 15 min) before {', '.join(f'{x:.1f}' for x in load_before)}, "
           f"after {', '.join(f'{x:.1f}' for x in load_after)}")
     if size is not None:
-        print(f"problem: {size['runs']} runs on {size['n']}² (loads: {size['loads']}), jobs.batch = {size['batch']}, "
-              f"{len(jobs)} indent jobs")
+        print(f"problem: {size['runs']} runs on {size['n']}² (loads: {size['loads']}), {len(jobs)} indent jobs")
     header = f"{'':>38} {'wall s':>8} {'/ serial':>9} {'CPU s':>8} {'/ serial':>9}"
     print(header)
     print("-" * len(header))
@@ -162,6 +165,8 @@ def main(argv=None) -> int:
                                 (f"snakemake --cores {args.cores}: last run file", runs_done, math.nan),
                                 (f"snakemake --cores {args.cores}: whole workflow", run_seconds, run_cpu)):
         print(f"{label:>38} {seconds:8.1f} {seconds / serial:9.2f} {cpu:8.1f} {cpu / serial_cpu:9.2f}")
+    print(f"{'after the last run file (merge ... summary)':>38} {run_seconds - runs_done:8.1f} "
+          f"{(run_seconds - runs_done) / serial:9.2f}")
     print("-" * len(header))
     print(f"(CPU: user + system of the process, or of snakemake and all its jobs; on {args.cores} idle cores the "
           f"workflow's wall time is at least its CPU time / {args.cores})")
