@@ -387,7 +387,8 @@ def test_seeded_sample_through_snakemake_dry_run(tmp_path):
             assert code == 0, f"{d.name}: snakemake -n failed on an accepted config\n{out}"
             assert printed == [], f"{d.name}: snakemake -n rejected an accepted config: {printed}"
             # one indent job per combination and block of jobs.batch seeds (rules indent_seeds0_5, ...)
-            planned = re.findall(r"^indent(?:_seeds\d+_\d+)?\s+(\d+)$", out, re.MULTILINE)
+            table = out.split("Job stats:", 1)[-1].split("\n\n", 1)[0]   # the first table (a dry run prints two)
+            planned = re.findall(r"^indent(?:_seeds\d+_\d+)?\s+(\d+)$", table, re.MULTILINE)
             assert planned, f"{d.name}: no indent jobs planned\n{out}"
             count = check_accepted(result)
             blocks = runs.seed_blocks(result["seeds"], result["jobs"]["batch"])
