@@ -90,11 +90,15 @@ def _serial_solve_here(configfile: Path) -> dict:
 
     study = study_settings(load_config(configfile), base_dir=configfile.parent)
     settings = [jobs.job_settings(study, run) for run in naming.runs(study)]
+    if study.grid.coarse is not None and any(kind == "sphere" for kind in (s.kind for s in settings)):
+        coarse = study.coarse_study()   # the grid error's companion runs (grid.coarse), as the workflow runs them
+        settings += [jobs.job_settings(coarse, run) for run in naming.runs(coarse)]
     tick, cpu = time.perf_counter(), time.process_time()
     for job in settings:
         compute_run(job)
     seconds, cpu = time.perf_counter() - tick, time.process_time() - cpu
-    size = {"runs": len(settings), "n": study.grid.n,
+    size = {"runs": len(settings), "n": study.grid.n if study.grid.coarse is None
+            else f"{study.grid.n}² and {study.grid.coarse}",
             "loads": "/".join(f"{kind} {study.forces[kind].count}" for kind in sorted({s.kind for s in settings})),
             "batch": study.jobs.batch}
     return {"seconds": seconds, "cpu": cpu, "size": size}

@@ -13,7 +13,8 @@ import argparse
 from pathlib import Path
 
 import pandas as pd
-import xarray as xr
+
+from roughcontact.study.files.directory import StudyDirectory
 
 from make_results import SCORE_COLUMNS, _machine, _table
 
@@ -23,7 +24,7 @@ DOCS = Path(__file__).resolve().parent
 def _scores(dirs) -> pd.DataFrame:
     tables = []
     for workdir in map(Path, dirs):
-        table = pd.read_csv(workdir / "results" / "models.csv")
+        table = StudyDirectory(workdir).table("models")
         table.insert(0, "study", workdir.name)
         tables.append(table[table["paper_setting"].astype(bool)])
     return pd.concat(tables, ignore_index=True)
@@ -36,8 +37,8 @@ def _summary(scores: pd.DataFrame) -> pd.DataFrame:
 
 
 def _commit(workdir: Path) -> str:
-    with xr.open_datatree(workdir / "results" / "models.nc") as tree:
-        return f"{workdir.name}: `{tree.attrs.get('git_commit', 'unknown')}`, {tree.attrs.get('created_utc', '')}"
+    attrs = StudyDirectory(workdir).attrs("models_fit")
+    return f"{workdir.name}: `{attrs.get('git_commit', 'unknown')}`, {attrs.get('created_utc', '')}"
 
 
 def make_page(calibration, validation) -> Path:

@@ -14,10 +14,10 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-import xarray as xr
 
 from make_results import _machine, _table
 from roughcontact.study.analysis import convergence
+from roughcontact.study.files.directory import StudyDirectory
 
 DOCS = Path(__file__).resolve().parent
 SUMMARY_COLUMNS = ["n", "seeds", "zeta", "zeta_ci_low", "zeta_ci_high", "zeta_sphere", "zeta_sphere_ci_low",
@@ -53,9 +53,9 @@ def make_page(workdirs) -> Path:
     deviations = convergence.against_eq16(workdirs)
     commits = []
     for workdir in workdirs:
-        with xr.open_dataset(Path(workdir) / "results" / "zeta.nc") as ds:
-            commits.append(f"{Path(workdir).name}: `{ds.attrs.get('git_commit', 'unknown')}`, "
-                           f"{ds.attrs.get('created_utc', 'unknown')}")
+        attrs = StudyDirectory(workdir).attrs("zeta_fit")
+        commits.append(f"{Path(workdir).name}: `{attrs.get('git_commit', 'unknown')}`, "
+                       f"{attrs.get('created_utc', 'unknown')}")
     out = DOCS / "results" / "convergence.md"
     figure = out.with_name("convergence_stiffness.png")
     _figure(deviations, figure)

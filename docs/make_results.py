@@ -18,7 +18,8 @@ import shutil
 from pathlib import Path
 
 import pandas as pd
-import xarray as xr
+
+from roughcontact.study.files.directory import StudyDirectory
 
 DOCS = Path(__file__).resolve().parent
 #: the figure shown for each preset (a file of results/figures/, first match)
@@ -66,26 +67,22 @@ def _figure(preset: str, results: Path) -> Path | None:
 
 
 def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
-    results = workdir / "results"
-    with xr.open_dataset(results / "zeta.nc") as zeta_ds:
-        attrs = dict(zeta_ds.attrs)
+    study = StudyDirectory(workdir)
+    results = study.root / "results"
+    attrs = study.attrs("zeta_fit")
     config = json.loads(attrs["config"])
-    later = {}
-    if (results / "models.nc").is_file():  # the analysis may be newer than the runs
-        with xr.open_datatree(results / "models.nc") as tree:
-            later = dict(tree.attrs)
-    zeta = pd.read_csv(results / "zeta.csv")
-    claims = pd.read_csv(results / "claims.csv")
+    later = study.attrs("models_fit") if study.has("models_fit") else {}  # the analysis may be newer than the runs
+    zeta = study.table("zeta")
+    claims = study.table("claims")
     out_dir = DOCS / "results" / "presets"
     out_dir.mkdir(parents=True, exist_ok=True)
     cfgfile = "config.yaml" if preset == "default" else f"presets/{preset}.yaml"
-    runs = len(list((results / "runs").rglob("seed*.nc")))
+    runs = len(study.run_files("indent"))
     counts = claims["verdict"].value_counts().to_dict()
     stickiness = {}
-    if (results / "stickiness" / "stickiness.nc").is_file():
-        with xr.open_dataset(results / "stickiness" / "stickiness.nc") as sticky_ds:
-            stickiness = dict(sticky_ds.attrs)
-        stickiness["runs"] = len(list((results / "stickiness_run").rglob("seed*.nc")))
+    if study.has("stickiness_fit"):
+        stickiness = study.attrs("stickiness_fit")
+        stickiness["runs"] = len(study.run_files("stickiness_run"))
     lines = [
         f"# Preset `{preset}`",
         "",
@@ -116,8 +113,8 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
         _table(claims[[c for c in CLAIM_COLUMNS if c in claims.columns]]),
         "",
     ]
-    if (results / "models.csv").is_file() and (results / "models.csv").stat().st_size > 1:
-        models = pd.read_csv(results / "models.csv")
+    if study.has("models") and study.path("models").stat().st_size > 1:
+        models = study.table("models")
         decided = "decision" in models
         if not decided:
             models = models.sort_values(["combination", "rank"])     # a decided table comes sorted
@@ -131,13 +128,12 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
                      "the grid error is in it)."
                      if decided else ""),
                   "", _table(models[columns]), ""]
-    sticky = results / "stickiness" / "stickiness.csv"
-    if sticky.is_file():
+    if study.has("stickiness"):
         lines += ["## Stickiness of flat surfaces (claim q)", "",
                   "Per Pastewka & Robbins number N: the mean loading slope F/A (units of h'E*) where the contact "
                   "covers `stickiness.area` of the grid, with its 95 % bootstrap-over-seeds interval (negative: "
                   "sticky), and the measured threshold N where the mean slope changes sign.", "",
-                  _table(pd.read_csv(sticky)[STICKINESS_COLUMNS]), ""]
+                  _table(study.table("stickiness")[STICKINESS_COLUMNS]), ""]
     figures = [f for f in (_figure(preset, results), results / "stickiness_figures" / "loading.png")
                if f is not None and f.is_file()]
     for i, figure in enumerate(figures):

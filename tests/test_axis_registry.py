@@ -64,8 +64,8 @@ def test_settings_pass_the_axis_to_its_role(toy_axis):
 
 
 def test_merged_coordinate_has_the_axis_attributes(toy_axis):
-    assert runfile.AXIS_ATTRS["rolloff_power"] == {"long_name": "power of the roll-off", "units": "1"}, \
-        f"attributes: {runfile.AXIS_ATTRS.get('rolloff_power')}"
+    assert axes.coordinate_attrs("rolloff_power") == {"long_name": "power of the roll-off", "units": "1"}, \
+        f"attributes: {axes.coordinate_attrs('rolloff_power')}"
 
 
 def test_command_line_has_the_axis_flag(toy_axis):

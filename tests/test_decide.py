@@ -11,6 +11,7 @@ import xarray as xr
 from roughcontact.models import paper
 from roughcontact.models import scorecard as registry
 from roughcontact.study.analysis import decision, scorecard
+from roughcontact.study.report import scorecard as report_scorecard
 from roughcontact.study.config.resolve import resolve_config
 from roughcontact.study.analysis.statistics import bootstrap_indices
 from roughcontact.study.config.settings import StudySettings
@@ -217,7 +218,7 @@ def test_an_unmeasured_grid_error_is_said_so(out_of_range_table):
 
 
 def test_the_page_says_the_grid_error_is_not_measured(out_of_range_table):
-    assert "NOT measured" in scorecard.scorecard_lead(out_of_range_table), "lead"
+    assert "NOT measured" in report_scorecard.scorecard_lead(out_of_range_table), "lead"
 
 
 def test_the_exact_model_outside_its_range_is_flagged(out_of_range_table):

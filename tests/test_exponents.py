@@ -8,6 +8,7 @@ import pandas as pd
 import pytest
 
 from roughcontact.study.analysis import exponents
+from roughcontact.study.report import exponents as report_exponents
 from roughcontact.study.claims.exponents import exponent_rows
 from roughcontact.study.config.resolve import resolve_config
 from roughcontact.study.config.settings import StudySettings
@@ -100,6 +101,6 @@ def test_the_figure_draws_flat_surfaces_that_have_no_radius():
     """Flat rows carry NaN radius and body exponent; every (H, roll-off) is still a curve."""
     flat = pd.concat([_table([0.6, 0.7], 0.05).assign(radius=np.nan, exponent=np.nan, rolloff=r)
                       for r in (0.25, 1.0)])
-    drawn = exponents.curves(flat, "flat")
+    drawn = report_exponents.curves(flat, "flat")
     assert len(drawn) == 2, f"{len(drawn)} curves for two roll-offs"
     assert all("rolloff" in label for label, _ in drawn), [label for label, _ in drawn]

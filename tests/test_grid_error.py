@@ -3,6 +3,7 @@ known grid error, Richardson extrapolation against a sequence with a known limit
 grid.realization_of from the configuration to the surface."""
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -12,7 +13,8 @@ import xarray as xr
 from roughcontact import errors, surfaces
 from roughcontact.study.config import resolve as config
 from roughcontact.study.runs import indent, naming as runs, jobs as settings
-from roughcontact.study.analysis.grid_error import grid_error, richardson
+from roughcontact.study.analysis.grid_error import (GRID_ERROR_ORDER, GRID_ERROR_SAFETY, estimate, grid_error,
+                                                    richardson)
 from snakemake_dry import dry_run
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -35,7 +37,7 @@ def _sphere(k: np.ndarray, cells=CELLS) -> xr.Dataset:
 
 
 def _table(coarse, fine):
-    return grid_error(coarse, fine, min_cells=20, bootstrap=200, confidence=0.95)
+    return grid_error(coarse, fine, min_cells=20, bootstrap=200, confidence=0.95, ratio=2.0)
 
 
 def test_known_grid_error_is_recovered():
@@ -54,6 +56,16 @@ def test_paired_interval_of_an_exact_ratio_is_a_point():
     table = _table(_sphere(fine * 1.05), _sphere(fine))
     np.testing.assert_allclose(table["grid_error_ci_high"] - table["grid_error_ci_low"], 0.0, atol=1e-12,
                                err_msg="interval width")
+
+
+def test_estimate_is_taken_at_the_far_end_of_the_interval():
+    """Coarse = 1.05 × fine on every seed: the interval is the point 0.05, and the table's estimate is
+    estimate(0.05) on its ratio (2), F_s · 0.05/(1 − 0.05) with p = 1."""
+    rng = np.random.default_rng(1)
+    fine = 1 + 0.2 * rng.random((10, FORCE.size))
+    table = _table(_sphere(fine * 1.05), _sphere(fine))
+    np.testing.assert_allclose(table["grid_error_estimate"], GRID_ERROR_SAFETY * 0.05 / 0.95, rtol=1e-10,
+                               err_msg="estimate of an exact 5 % difference")
 
 
 def test_grid_resolved_compares_the_error_with_the_band():
@@ -87,6 +99,38 @@ def test_richardson_recovers_limit_and_order():
     limit, order = richardson(k[0], k[1], k[2], 2.0)
     assert float(limit) == pytest.approx(2.0, rel=1e-12), f"limit {limit}"
     assert float(order) == pytest.approx(1.5, rel=1e-10), f"order {order}"
+
+
+@pytest.mark.parametrize("n, n_coarse", [(65, 33), (64, 32), (385, 193)])
+def test_estimate_of_a_power_law_sequence_is_its_exact_error(n, n_coarse):
+    """k_n = k∞ + C n^(−p) (p = 1.7): with the true order and F_s = 1 the estimate from the two
+    grids is the exact |k_n/k∞ − 1| = C n^(−p)/k∞, to round-off (1e-12)."""
+    k_inf, c, p = 2.0, 40.0, 1.7
+    k_n, k_c = k_inf + c * n ** -p, k_inf + c * n_coarse ** -p
+    value = estimate(k_c / k_n - 1, n / n_coarse, order=p, safety=1.0)
+    assert float(value) == pytest.approx(c * n ** -p / k_inf, rel=1e-12), f"estimate {value}"
+
+
+@pytest.mark.parametrize("true_order", [GRID_ERROR_ORDER, GRID_ERROR_ORDER + 1.0, 3.0])
+def test_default_estimate_bounds_the_error_against_a_twice_finer_grid(true_order):
+    """A sequence k_n = k∞ + C n^(−q) converging at q ≥ the assumed order, without scatter: the
+    default estimate from 385² and its 193² companion is at least |k_385/k_770 − 1| (the error the
+    validation measures: for q = 1 it is half the error against k∞, and F_s = 0.75 keeps 3/2 of it)."""
+    k_inf, c, n, n_coarse = 1.0, 5.0, 385, 193
+    k = {m: k_inf + c * m ** -true_order for m in (n_coarse, n, 2 * n)}
+    against_finer = abs(k[n] / k[2 * n] - 1)
+    value = float(estimate(k[n_coarse] / k[n] - 1, n / n_coarse))
+    assert value >= against_finer, f"estimate {value:.4g} below {against_finer:.4g} (F_s {GRID_ERROR_SAFETY})"
+
+
+def test_estimate_is_infinite_where_the_companion_is_too_far():
+    """a = g/(r^p − 1) ≥ 1 (the coarse grid twice as stiff on r = 2, p = 1): no finite estimate."""
+    assert math.isinf(float(estimate(1.0, 2.0, order=1.0))), "a = 1 gives a finite estimate"
+
+
+def test_estimate_needs_a_finer_grid():
+    with pytest.raises(ValueError, match="ratio > 1"):
+        estimate(0.1, 1.0)
 
 
 def test_richardson_refuses_a_non_monotone_sequence():
@@ -131,15 +175,16 @@ def _dry_dirs(tmp_path, coarse):
 
 
 def test_grid_coarse_adds_a_coarse_run_per_run(tmp_path):
-    """grid.coarse: snakemake -n plans one indent_coarse job per indent job, their merge and the grid
-    error table; without it, none of them."""
+    """grid.coarse: snakemake -n plans one indent_coarse job per sphere run (none for the flat
+    ones), their merge and the grid error table; without it, none of them."""
     with_coarse, without = _dry_dirs(tmp_path, 33), _dry_dirs(tmp_path, None)
     (rc1, out1), (rc2, out2) = dry_run(ROOT / "Snakefile", "c.yaml", [with_coarse, without])
     assert rc1 == 0 and rc2 == 0, out1[-2000:] + out2[-2000:]
     study = config.study_settings(config.load_config(with_coarse / "c.yaml"))
     blocks = runs.seed_blocks(study.seeds, study.jobs.batch)
+    spheres = [combo for combo in runs.combinations(study) if combo["kind"] == "sphere"]
     planned = sum(_count(out1, f"indent_coarse_{b.name}") for b in blocks)
-    assert planned == len(runs.combinations(study)) * len(blocks), out1[-3000:]
+    assert planned == len(spheres) * len(blocks), out1[-3000:]
     assert _count(out1, "grid_error") == 1, "one grid error table"
     assert sum(_count(out2, f"indent_coarse_{b.name}") for b in blocks) == 0, "no coarse runs without grid.coarse"
 
@@ -151,3 +196,14 @@ def _count(out: str, rule: str) -> int:
         if len(parts) == 2 and parts[0] == rule and parts[1].isdigit():
             return int(parts[1])
     return 0
+
+
+def test_default_config_measures_the_grid_error():
+    """config.yaml resolves to a study with a companion on a coarser grid (the grid error by default)."""
+    study = config.study_settings(config.load_config(ROOT / "config.yaml"))
+    assert study.grid.coarse is not None and study.grid.coarse < study.grid.n, study.grid
+
+
+def test_default_companion_presses_the_default_surfaces():
+    study = config.study_settings(config.load_config(ROOT / "config.yaml"))
+    assert study.coarse_study().grid.realization_of == study.grid.n, study.coarse_study().grid

@@ -359,6 +359,23 @@ def test_spectrum_runs_and_merge(tmp_path):
     assert groups["sphere"].attrs["half_space"] == "free (non-periodic)"
 
 
+def test_measured_merge_gives_the_conductance(tmp_path):
+    """With conductance.resistivity, the measured merge's electrical_conductance is Barber's
+    2k/(E*(rho1 + rho2)) of each run's k (N/m) and E* (GPa -> Pa), in S."""
+    table = _psd(tmp_path / "psd.csv")
+    rho = [1.7e-8, 2.0e-7]
+    cfg = _resolved(tmp_path, spectrum=["psd.csv"], seeds=2, grid={"n": 33, "length": 3.2},
+                    conductance={"resistivity": rho})
+    files = []
+    for radius, seed in measured.run_order(cfg, "spectrum", "psd", 0):
+        files.append(tmp_path / f"R{radius}_seed{seed}.nc")
+        measured.run_job(measured.job_of(cfg, "spectrum", "psd", radius, seed), table, files[-1])
+    merge_surface(cfg, "spectrum", "psd", files, tmp_path / "psd.nc")
+    sphere = read_groups(tmp_path / "psd.nc")["sphere"]
+    expected = 2 * sphere["stiffness"].values / (E_STAR * 1e9 * sum(rho))
+    np.testing.assert_allclose(sphere["electrical_conductance"].values, expected, rtol=1e-14)
+
+
 def test_tiles_match_the_same_heights_pressed_directly(pipeline):
     """k(F) of every tile equals bem on the same heights: z = -(h - mean h) of the 64² scan, a
     32² block re-centred, plus r²/2R; the file round trip is exact (float64 NetCDF) and the

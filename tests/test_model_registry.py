@@ -13,6 +13,7 @@ from test_scorecard import CFG, FORCE, HURST, ZETA, _groups
 from roughcontact.models import paper
 from roughcontact.models import scorecard as registry
 from roughcontact.study.analysis import scorecard
+from roughcontact.study.report import scorecard as report_scorecard
 from roughcontact.study.analysis.measured_models import predict
 from roughcontact.surfaces import self_affine
 from roughcontact.surfaces.spectrum_fit import fit_spectrum
@@ -59,7 +60,7 @@ def test_registered_model_deviation_is_its_closed_form(hertz_model):
 
 
 def test_lead_paragraph_names_a_registered_model(hertz_model):
-    assert "smooth_body: the smooth body of revolution, eq. 7 (eq. 9 for the paraboloid)" in scorecard.scorecard_lead(), "lead paragraph"
+    assert "smooth_body: the smooth body of revolution, eq. 7 (eq. 9 for the paraboloid)" in report_scorecard.scorecard_lead(), "lead paragraph"
 
 
 def test_measured_scorecard_predicts_a_registered_model(hertz_model):

@@ -131,9 +131,27 @@ def _with_grid(scale, g):
     return _row(scorecard.scorecard(_groups(scale), zeta, CFG, _grid_table(g))[0], "eq16_fitted")
 
 
-def test_grid_error_columns_only_with_a_grid_error():
+def test_grid_error_columns_are_nan_without_a_grid_error():
     row = _row(_constant_offset_table(np.ones(4)), "eq16_fitted")
-    assert "grid_error_max" not in row.index, "no grid.coarse: no grid-error column"
+    assert math.isnan(row["grid_error_max"]), "no grid.coarse: the grid-error column is NaN"
+
+
+def test_the_row_says_why_its_grid_error_is_not_measured():
+    row = _row(_constant_offset_table(np.ones(4)), "eq16_fitted")
+    assert row["grid_error_note"] == scorecard.NOT_MEASURED, row["grid_error_note"]
+
+
+def test_the_total_verdict_says_the_grid_error_is_not_measured():
+    row = _row(_constant_offset_table(np.ones(4)), "eq16_fitted")
+    assert row["systematic_high_total_verdict"] == "untested: grid error not measured", row.to_dict()
+
+
+def test_the_estimate_is_read_before_the_raw_difference():
+    """A table with grid_error = 30 % and its estimate 4 %: the scorecard's grid error is the estimate."""
+    zeta = pd.DataFrame({"hurst": [HURST], "zeta": [ZETA]})
+    table = _grid_table(0.3).assign(grid_error_estimate=0.04)
+    row = _row(scorecard.scorecard(_groups(np.ones(4)), zeta, CFG, table)[0], "eq16_fitted")
+    assert row["grid_error_max"] == pytest.approx(0.04, rel=1e-12), "the estimate"
 
 
 def test_grid_error_max_is_the_largest_bound():

@@ -13,6 +13,7 @@ from roughcontact.errors import ConfigError
 from roughcontact.study.config import axes, schema
 from roughcontact.study.config.resolve import load_config, resolve_config, study_settings
 from roughcontact.study.files.provenance import canonical_json
+from roughcontact.study.runs import naming as runs
 from roughcontact.study.config.settings import ForceRange, StudySettings
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -113,7 +114,8 @@ def test_coarse_companion_presses_the_same_surfaces():
     study = study_settings({**load_config(ROOT / "presets" / "tiny.yaml"), "grid": {"n": 65, "coarse": 33}})
     coarse = study.coarse_study()
     assert (coarse.grid.n, coarse.grid.realization_of, coarse.grid.coarse) == (33, 65, None), coarse.grid
-    assert coarse.sweep == study.sweep and coarse.seeds == study.seeds, "the same runs"
+    spheres = [run for run in runs.runs(study) if run["kind"] == "sphere"]
+    assert runs.runs(coarse) == spheres, "the study's sphere runs, and no flat one"
 
 
 def test_coarse_grid_must_be_coarser():

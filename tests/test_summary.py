@@ -46,3 +46,19 @@ def test_no_recommended_row_says_so():
                                 pd.DataFrame(), pd.DataFrame(columns=["hurst", "zeta", "zeta_ci_low", "zeta_ci_high",
                                                                       "zeta_estimate"]), table, None)
     assert summary.NO_RECOMMENDATION in html and "0.1235" in html
+
+
+def _landing(models):
+    return summary.summary_html(pd.DataFrame({"claim": ["a"], "statement": ["s"], "verdict": ["consistent"]}),
+                                pd.DataFrame(), pd.DataFrame(columns=["hurst", "zeta", "zeta_ci_low", "zeta_ci_high",
+                                                                      "zeta_estimate"]), models, None)
+
+
+def test_the_landing_page_says_the_grid_error_is_not_measured():
+    html = _landing(_models(grid_error_measured=[False] * 4))
+    assert "grid error not measured" in html.lower(), "no statement that the grid error is not measured"
+
+
+def test_the_landing_page_says_the_grid_error_is_measured():
+    html = _landing(_models(grid_error_measured=[True] * 4))
+    assert "grid error is measured" in html.lower(), "no statement that the grid error is measured"

@@ -25,7 +25,8 @@ rule merge:
         "../scripts/merge.py"
 
 
-# The companion runs on grid.coarse, merged; the grid error of every load (study.grid_error).
+# The companion's sphere runs on grid.coarse, merged; the grid error of every load and its
+# estimate for the study's grid (study.analysis.grid_error).
 rule merge_coarse:
     input:
         runs=coarse_run_files,
@@ -60,6 +61,7 @@ rule grid_error:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["grid_error"],  # the estimate's rule and constants (study.analysis.grid_error)
     script:
         "../scripts/grid_error.py"
 

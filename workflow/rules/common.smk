@@ -45,8 +45,12 @@ config.update(C)  # the report and the jobs see the resolved values
 # the same, typed, for the input functions and params below (jobs get the mapping: it is the
 # resolved configuration their files record)
 STUDY = StudySettings.of(config)
-# the companion study of the grid error (grid.coarse): the same runs on the coarse grid
-COARSE_CONFIG = coarse_config(config) if STUDY.grid.coarse is not None else None
+# the companion study of the grid error (grid.coarse): the same sphere runs on the coarse grid
+COARSE_CONFIG = (
+    coarse_config(config)
+    if STUDY.grid.coarse is not None and any(r != float("inf") for r in STUDY.radius)
+    else None
+)
 COARSE = StudySettings.of(COARSE_CONFIG) if COARSE_CONFIG is not None else None
 
 # The workflow's paths: one run file, log and benchmark per (combination, seed).
@@ -75,7 +79,8 @@ def run_files(wildcards):
 
 
 def coarse_run_files(wildcards):
-    """Every run file of the companion study on grid.coarse, in the order merge expects."""
+    """Every run file of the companion study on grid.coarse (its sphere runs: coarse_config),
+    in the order merge expects."""
     if COARSE is None:
         raise ValueError("grid.coarse is not set: no coarse runs")
     return study_runs.run_paths(COARSE, COARSE_RUN_PATTERN)

@@ -1,5 +1,5 @@
 """Snakemake `exponents` job: stiffness.nc -> results/exponents.csv and a figure (local d ln k/d ln F with intervals)."""
-from roughcontact.study.analysis.exponents import run_exponents
+from roughcontact.study.report.exponents import run_exponents
 from roughcontact.study.files.logs import log_to
 from roughcontact.study.report.tables import csv_to_html
 

@@ -1,6 +1,6 @@
 """Snakemake `measured_scorecard` job: every model against the tiles of one scan (CSV and report page)."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.analysis.measured_scorecard import run_measured_scorecard
+from roughcontact.study.report.measured import run_measured_scorecard
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

@@ -1,6 +1,6 @@
 """Snakemake `models` job: stiffness + zeta (+ grid error) -> results/models.csv, .nc, .html and one figure per sphere combination."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.analysis.scorecard import run_models
+from roughcontact.study.report.scorecard import run_models
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):

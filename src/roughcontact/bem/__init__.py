@@ -6,8 +6,13 @@ The face is :func:`solve` (one load), :func:`load_path` and :func:`iter_load_pat
 operators (:mod:`.operators`), the constrained conjugate-gradient kernels
 (:mod:`.solver`), the windows and working sets they run on (:mod:`.active_sets`), the
 flat-punch stiffness (:mod:`.punch`) and penetration-hardness plasticity (:mod:`.plastic`).
+Tangential contact, elastic only (the normal–tangential coupling neglected): the Cerruti kernel
+(:mod:`.cerruti`), the full-stick stiffness :func:`tangential_stiffness` and Cattaneo–Mindlin
+partial slip :func:`partial_slip` (:mod:`.tangential`, kernel :mod:`.slip`), and the
+Ciavarella–Jäger construction :func:`ciavarella_jager` (:mod:`.cj_superposition`).
 Adhesive paths, elastic only: the detachment criterion (:mod:`.adhesion`) and the Maugis–Dugdale
-cohesive zone (:mod:`.cohesive`). Conventions are those of :mod:`roughcontact`.
+cohesive zone (:mod:`.cohesive`). The patches of a contact set: :func:`contact_patches`
+(:mod:`.patches`). Conventions are those of :mod:`roughcontact`.
 """
 
 from .contact import (
@@ -19,6 +24,9 @@ from .contact import (
     solve,
     stiffness,
 )
+from .patches import Patches, contact_patches
+from .tangential import SlipPath, SlipState, partial_slip, tangential_stiffness
+from .cj_superposition import CiavarellaJagerPath, ciavarella_jager
 
 #: the version of the solvers' results: bumped on purpose by a change that alters what a run computes
 #: (a run of the pipeline is computed again when it changes; a change that keeps every result does not
@@ -26,4 +34,5 @@ from .contact import (
 SOLVER_VERSION = 1
 
 __all__ = ["SOLVER_VERSION", "DEFAULT_MAXITER", "ContactState", "displacement", "iter_load_path", "load_path", "solve",
-           "stiffness"]
+           "stiffness", "Patches", "contact_patches", "SlipPath", "SlipState", "partial_slip", "tangential_stiffness",
+           "CiavarellaJagerPath", "ciavarella_jager"]

@@ -115,8 +115,13 @@ class FreeSpaceOperator:
         """
         if self._table.shape[0] < size:
             side = min(self.n, max(size, (3 * self._table.shape[0]) // 2, 64))
-            self._table = love_coefficients(side) * (self.spacing / (np.pi * self.e_star))
+            self._table = self._unit_table(side)
         return self._table
+
+    def _unit_table(self, side: int) -> np.ndarray:
+        """Displacements under a unit cell pressure at offsets ``[0, side)²`` (Love's formula;
+        a subclass with another kernel of the same symmetry overrides this)."""
+        return love_coefficients(side) * (self.spacing / (np.pi * self.e_star))
 
     @property
     def coefficients(self) -> np.ndarray:

@@ -188,8 +188,9 @@ def main(argv=None) -> int:
             scans = (f"; measured: {len(study.topography)} scan(s) x {len(study.radius)} radii x their tiles, "
                      f"{len(study.spectrum)} spectrum(s) x {len(study.radius)} radii x "
                      f"{len(study.seeds) if study.spectrum else 0} seeds")
-        coarse = (f", and as many on the coarse grid {study.grid.coarse}² (grid.coarse)"
-                  if study.grid.coarse is not None and study.generated else "")
+        spheres = sum(run["kind"] == "sphere" for run in runs.runs(study))
+        coarse = (f", and {spheres} (the sphere runs) on the coarse grid {study.grid.coarse}² (grid.coarse)"
+                  if study.grid.coarse is not None and study.generated and spheres else "")
         sticky = StickinessSettings.of(study)
         sticky = ("" if sticky is None else
                   f"; stickiness: {len(sticky.jobs())} runs ({len(sticky.hurst)} H x {len(sticky.number)} N x "

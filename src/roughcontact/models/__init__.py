@@ -7,11 +7,12 @@ summit statistics of :mod:`.asperities`; :mod:`.mdr` the method of dimensionalit
 :func:`effective_modulus` gives ``E*`` of two elastic bodies; :mod:`.adhesion` the adhesive smooth
 sphere (JKR, DMT, Maugis–Dugdale); :mod:`.rough_adhesion` adhesion of rough surfaces (Fuller &
 Tabor's asperities, Johnson's rough-sphere parameter, Pastewka & Robbins' stickiness);
+:mod:`.tangential` the tangential stiffness (Mindlin, Cattaneo–Mindlin, the MDR's rough sphere);
 :mod:`.scorecard` the registry of the scorecard's models. Models use the spectra and profiles of
 :mod:`roughcontact.surfaces` and never the boundary-element method.
 """
 
-from . import asperities, axisymmetric, greenwood_tripp, mdr, paper, persson
+from . import asperities, axisymmetric, greenwood_tripp, mdr, paper, persson, tangential
 from .elasticity import effective_modulus
 
-__all__ = ["asperities", "axisymmetric", "greenwood_tripp", "mdr", "paper", "persson", "effective_modulus"]
+__all__ = ["asperities", "axisymmetric", "greenwood_tripp", "mdr", "paper", "persson", "tangential", "effective_modulus"]

@@ -31,6 +31,8 @@ import numpy as np
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk, logsumexp
 
+from .paper import hertz_contact_radius
+
 _MAX_LOG_STEP = 5.0
 
 
@@ -98,7 +100,7 @@ def solve(force, *, radius, e_star, law, r_max, n_rings, tolerance=1e-10, max_it
     ring_area = np.pi * np.diff(edges**2)
     influence = influence_matrix(radii, edges) / e_star
     profile = radii**2 / (2.0 * radius)
-    hertz_radius = np.cbrt(3.0 * force * radius / (4.0 * e_star))
+    hertz_radius = hertz_contact_radius(force, radius=radius, e_star=e_star)
     hertz_approach = hertz_radius**2 / radius
     length_scale = hertz_approach + law.scale
 

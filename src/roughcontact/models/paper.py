@@ -32,6 +32,8 @@ __all__ = [
     "kappa",
     "zeta_estimate",
     "hertz_stiffness",
+    "hertz_contact_radius",
+    "hertz_approach",
     "body_prefactor",
     "body_stiffness",
     "fractal_stiffness",
@@ -63,6 +65,18 @@ def zeta_estimate(hurst):
 def hertz_stiffness(force, *, radius, e_star):
     """Hertzian stiffness k = E* (6 R F/E*)^(1/3) (eq. 9); :func:`body_stiffness` with m = 2."""
     return body_stiffness(force, radius=radius, e_star=e_star)
+
+
+def hertz_contact_radius(force, *, radius, e_star):
+    """Hertz's contact radius ``a = (3FR/(4E*))^(1/3)`` of a paraboloid of radius *radius*
+    (Johnson 1985, eq. 4.22; eq. 9's ``k = 2E*a``). Same units as *radius*."""
+    return np.cbrt(3.0 * np.asarray(force, dtype=float) * radius / (4.0 * e_star))
+
+
+def hertz_approach(force, *, radius, e_star):
+    """Hertz's approach ``d = a²/R`` (Johnson 1985, eq. 4.23), ``a`` of :func:`hertz_contact_radius`."""
+    a = hertz_contact_radius(force, radius=radius, e_star=e_star)
+    return a * a / radius
 
 
 def body_prefactor(radius, *, exponent=2.0):

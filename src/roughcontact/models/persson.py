@@ -38,6 +38,7 @@ from scipy.special import erf, exp1
 from .._validate import check_finite_positive
 from ..surfaces.spectra import Spectrum
 from . import axisymmetric
+from .paper import hertz_contact_radius
 
 __all__ = [
     "SphereStiffness",
@@ -399,7 +400,7 @@ def sphere_stiffness(force, spectrum, *, radius, e_star, gamma=0.42, method="axi
 
 def _axisymmetric_contact(force, radius, e_star, law, n_rings):
     """Solve on a domain large enough that the outer tenth of the rings carries < 1e-9 of F."""
-    hertz_radius = np.cbrt(3.0 * force * radius / (4.0 * e_star))
+    hertz_radius = hertz_contact_radius(force, radius=radius, e_star=e_star)
     r_max = math.sqrt((1.6 * hertz_radius) ** 2 + 80.0 * radius * law.scale)
     for _ in range(4):
         contact = axisymmetric.solve(force, radius=radius, e_star=e_star, law=law,

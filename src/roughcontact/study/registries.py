@@ -25,11 +25,12 @@ REGISTRIES = ("axes", "models", "claims")
 
 #: the entry modules of each analysis rule, for :func:`code_fingerprint` (which follows their imports)
 ANALYSIS_CODE = {
-    "models": ("roughcontact.study.analysis.scorecard", "roughcontact.study.analysis.measured_scorecard",
+    "models": ("roughcontact.study.report.scorecard", "roughcontact.study.report.measured",
                "roughcontact.study.analysis.measured_spectrum"),
     "claims": ("roughcontact.study.claims",),
     "figures": ("roughcontact.study.report.figures",),
     "summary": ("roughcontact.study.report.summary",),
+    "grid_error": ("roughcontact.study.analysis.grid_error",),
 }
 
 

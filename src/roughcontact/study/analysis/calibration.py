@@ -21,7 +21,6 @@ so.
 from __future__ import annotations
 
 import argparse
-import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,7 +32,7 @@ from ...models import superposition
 from ..config import axes
 from .ensemble import combinations, resolved
 from ..config.settings import StudySettings
-from ..files.io import read_groups
+from ..files.directory import StudyDirectory
 
 __all__ = ["Calibration", "ensemble_points", "calibrate", "main"]
 
@@ -45,12 +44,9 @@ def ensemble_points(study) -> list[dict]:
     """Per sphere combination at the paper's setting of *study* (a directory a preset ran
     in; :func:`roughcontact.study.config.axes.paper_setting`, none where the sweep lacks it): ``hurst``, ``radius``, ``h_rms``, ``length``, ``e_star``, the resolved forces, the
     ensemble-mean stiffness and its relative standard error."""
-    import xarray as xr
-
-    path = Path(study) / "results" / "stiffness.nc"
-    with xr.open_datatree(path, engine="netcdf4") as tree:
-        study_of_file = StudySettings.of(json.loads(tree.attrs["config"]))
-    groups = read_groups(path)
+    results = StudyDirectory(study)
+    study_of_file = StudySettings.of(results.configuration())
+    groups = results.groups("stiffness")
     if "sphere" not in groups:
         return []
     length, e_star = study_of_file.grid.length, study_of_file.e_star

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..files.io import read_groups
+from ..files.directory import StudyDirectory
 from .statistics import BOOTSTRAP_SEED, interval
 
 __all__ = ["summary", "stiffness_ratios", "against_eq16"]
@@ -28,15 +28,13 @@ __all__ = ["summary", "stiffness_ratios", "against_eq16"]
 
 def _sphere(study: Path):
     """The sphere group of *study*'s stiffness.nc, its axes of length one dropped, and the grid n."""
-    import xarray as xr
-
-    path = study / "results" / "stiffness.nc"
-    with xr.open_datatree(path, engine="netcdf4") as tree:
-        n = int(tree.attrs["grid_n"])
-        length, e_star = float(tree.attrs.get("grid_length", 1.0)), float(tree.attrs.get("e_star", 1.0))
-    groups = read_groups(path)
+    results = StudyDirectory(study)
+    attrs = results.attrs("stiffness")
+    n = int(attrs["grid_n"])
+    length, e_star = float(attrs.get("grid_length", 1.0)), float(attrs.get("e_star", 1.0))
+    groups = results.groups("stiffness")
     if "sphere" not in groups:
-        raise ValueError(f"{study}: no sphere runs in {path}")
+        raise ValueError(f"{study}: no sphere runs in {results.path('stiffness')}")
     ds = groups["sphere"]
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
     if any(ds.sizes[a] != 1 for a in axes):
@@ -53,9 +51,9 @@ def summary(studies):
 
     rows = []
     for study in map(Path, studies):
-        results = study / "results"
-        zeta = pd.read_csv(results / "zeta.csv").iloc[0]
-        cross = pd.read_csv(results / "crossover.csv").iloc[0]
+        results = StudyDirectory(study)
+        zeta = results.table("zeta").iloc[0]
+        cross = results.table("crossover").iloc[0]
         ds, n = _sphere(study)
         row = {"n": n, "seeds": ds.sizes["seed"]}
         for name, table, ci in (("zeta", zeta, "zeta"), ("zeta_sphere", cross, "zeta_sphere"),
@@ -64,7 +62,7 @@ def summary(studies):
                         f"{name}_ci_high": table[f"{ci}_ci_high"]})
         row.update(zeta_window_force_min=zeta["force_min"], zeta_window_force_max=zeta["force_max"],
                    zeta_window_points=int(zeta["n_points"]))
-        bench = [pd.read_csv(p, sep="\t").iloc[0] for p in sorted((results / "benchmarks" / "indent").glob("*.tsv"))]
+        bench = results.benchmarks("indent")
         row.update(job_wall_s_median=float(np.nanmedian([b["s"] for b in bench])) if bench else math.nan,
                    job_peak_rss_mb_max=float(np.nanmax([b["max_rss"] for b in bench])) if bench else math.nan)
         row["study"] = study.name

@@ -2,7 +2,8 @@
 
 Rule (:data:`RULE`). For a model ``m`` of a sphere combination, with ``d_F = k_model/k_BEM − 1``
 its deviation from the ensemble mean at each resolved load ``F`` and ``g_F`` the grid error
-there (``|k̄_coarse/k̄ − 1|`` measured with ``grid.coarse``, :mod:`roughcontact.study.analysis.grid_error`;
+there (the estimate ``ê`` of the study grid's error from its companion on ``grid.coarse``,
+:func:`roughcontact.study.analysis.grid_error.estimate`;
 0 where it is not measured, and then every table and page says so), the score is the larger of
 the two branches' (below/above the crossover force of eq. 17) root-mean-square deviation, each
 load's deviation enlarged by the grid error there::
@@ -76,7 +77,8 @@ def inputs(k_model, k_mean, k_boot, use, branches: dict, g=None) -> dict:
     branches : dict of str to numpy.ndarray of bool
         Branch name -> its loads (subsets of *use*).
     g : numpy.ndarray, optional
-        The grid error ``k̄_coarse/k̄ − 1`` at every load (NaN: none there); ``None``: not measured.
+        The grid error (its estimate ``ê`` or ``k̄_coarse/k̄ − 1``) at every load (NaN: none there);
+        ``None``: not measured.
 
     Returns
     -------
@@ -232,11 +234,13 @@ def grid_note(table) -> str:
         per = table.groupby("combination")["grid_error_measured"].any()
         measured, total = int(per.sum()), int(per.size)
     if total and measured == total:
-        return "The grid error is measured (grid.coarse) and included in S and in the ties."
+        return ("The grid error is measured (grid.coarse: Richardson's estimate from the companion grid, "
+                "grid_error.csv) and included in S and in the ties.")
     if measured:
         return (f"The grid error is measured (grid.coarse) for {measured} of {total} combinations only; on the "
                 "others (grid_error_measured false) S and the ties hold the sampling error only.")
-    return ("The grid error is NOT measured for this study (no grid.coarse): S and the ties hold the sampling "
+    return ("Grid error NOT measured for this study (grid.coarse is null: no companion study): S and the ties "
+            "hold the sampling "
             "error only, and a reader cannot tell the grid's share of a deviation.")
 
 

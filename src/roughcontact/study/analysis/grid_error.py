@@ -5,13 +5,35 @@ grid seen on its own (their Fourier modes ``|k| < n/2``; :func:`roughcontact.sur
 so that, seed by seed, it and the study on ``N`` press the same physical surfaces. Per sphere
 combination and load:
 
-* ``grid_error = k̄_n/k̄_N − 1`` (ensemble means over the common seeds), with a percentile
-  bootstrap interval whose resamples draw the *same* seeds on both grids (paired: the grid error
-  of one realisation is far smaller than the scatter between realisations);
+* ``grid_error = g = k̄_n/k̄_N − 1`` (ensemble means over the common seeds), with a percentile
+  bootstrap interval ``[g₋, g₊]`` whose resamples draw the *same* seeds on both grids (paired: the
+  grid error of one realisation is far smaller than the scatter between realisations);
+* ``grid_error_estimate``, the estimate ``ê`` of the finer grid's own error ``|k̄_N/k̄_∞ − 1|``
+  (below), with ``grid_ratio`` ``r = N/n``;
 * ``band`` the half-width of the bootstrap interval of ``k̄_N`` relative to ``k̄_N`` (the
   sampling error of the finer ensemble);
-* ``grid_resolved``: ``|grid_error| ≤ fraction · band`` — a load is resolved when its grid error
-  is a small part of its sampling error, measured, not guessed from a cell count.
+* ``grid_resolved``: ``ê ≤ fraction · band`` — a load is resolved when its grid error is a small
+  part of its sampling error, measured, not guessed from a cell count.
+
+The estimate (the rule of the study's grid error; ``grid.coarse``)::
+
+    G = max(|g₋|, |g₊|),    a = G/(r^p − 1),    ê = F_s · a/(1 − a)       (∞ where a ≥ 1)
+
+Richardson's error estimate (:func:`estimate`; the grid convergence index of P. J. Roache,
+J. Fluids Eng. 116, 405 (1994), doi:10.1115/1.2910291) applied to the far end ``G`` of the
+paired interval of the difference, not to ``|g|``: the grid error of an ensemble mean is mostly
+the mean of per-seed errors of either sign (the contact moves between asperities as the grid
+refines), so ``g`` changes sign from load to load and the twice finer grid's difference is not
+``g/r^p`` load by load; ``G`` bounds its magnitude at the study's confidence. Measured
+2026-11-27 on ``presets/grid-error-calibration.yaml`` (the default study's H, R, h_rms and
+loads; 97², 193² and the reference 385², the same surfaces, 6 seeds): the rms of ``g`` over
+the loads with ≥ 20 coarse contact cells falls with the grid at an order 1.0–1.4 (and 0.3–0.5
+below 20 cells, where the finer grid resolves new asperities), so ``p = 1``
+(:data:`GRID_ERROR_ORDER`); with it ``ê`` bounds ``|k̄_n/k̄_2n − 1|`` at 42 of the 44 loads with
+≥ 20 study cells for ``F_s`` = 0.75 or 1, and at 41 for 0.5 or 0.6, so ``F_s = 0.75``
+(:data:`GRID_ERROR_SAFETY`, the smallest that keeps ≥ 95 %). The raw ``|g|`` bounds it at
+28 of those 44 loads only. The held-out validation (``presets/grid-error-validation.yaml``,
+:mod:`roughcontact.study.analysis.grid_error_validation`) is in docs/guide/pipeline.md.
 
 With three grids ``n₁ < n₂ < n₃`` (ratio ``r = n₃/n₂``) and a monotone sequence,
 :func:`richardson` extrapolates ``k̄`` to the infinitely fine grid (L. F. Richardson, Phil. Trans.
@@ -32,10 +54,52 @@ from .ensemble import combinations, resolved
 from ..config.settings import StudySettings
 from .statistics import bootstrap_indices, interval
 
-__all__ = ["grid_error", "richardson", "run_grid_error", "run_study_grid_error", "GRID_ERROR_FRACTION"]
+__all__ = ["grid_error", "richardson", "estimate", "run_grid_error", "run_study_grid_error", "GRID_ERROR_FRACTION",
+           "GRID_ERROR_ORDER", "GRID_ERROR_SAFETY"]
 
 #: a load is resolved when its grid error is at most this fraction of the finer ensemble's band
 GRID_ERROR_FRACTION = 0.5
+#: the convergence order p of the ensemble-mean stiffness in the cell size L/n that the study's
+#: estimate assumes (measured on presets/grid-error-calibration.yaml, module docstring)
+GRID_ERROR_ORDER = 1.0
+#: the factor F_s of the study's estimate on the far end of the difference's interval (module docstring)
+GRID_ERROR_SAFETY = 0.75
+
+
+def estimate(g, ratio: float, *, order: float = GRID_ERROR_ORDER, safety: float = GRID_ERROR_SAFETY):
+    """The grid error of the finer grid from the coarser grid's difference (Richardson's error estimate).
+
+    With ``k_n = k_∞ + C (L/n)^p`` on the finer grid ``n`` and the coarser ``n_c = n/r``,
+    ``k_{n_c} − k_n = (r^p − 1)(k_n − k_∞)``; in terms of ``g = k_{n_c}/k_n − 1``::
+
+        a = g/(r^p − 1),     k_n/k_∞ − 1 = a/(1 − a),     ê = F_s |a/(1 − a)|
+
+    (the grid convergence index of P. J. Roache, J. Fluids Eng. 116, 405 (1994),
+    doi:10.1115/1.2910291, on the ensemble mean; ``F_s = 1`` and the true order give the exact
+    error of such a sequence).
+
+    Parameters
+    ----------
+    g : array_like
+        ``k̄_{n_c}/k̄_n − 1`` at each load (1).
+    ratio : float
+        The refinement ratio ``r = n/n_c`` (> 1).
+    order : float, keyword-only
+        The convergence order ``p`` (> 0).
+    safety : float, keyword-only
+        The safety factor ``F_s`` (≥ 1 for a bound).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``ê``, the estimated ``|k̄_n/k̄_∞ − 1|`` (1); NaN where *g* is NaN, ∞ where ``a ≥ 1``
+        (the coarser grid too far from the finer one for an estimate).
+    """
+    if not ratio > 1 or not order > 0:
+        raise ValueError(f"the grid error estimate needs a ratio > 1 and an order > 0, got {ratio}, {order}")
+    a = np.asarray(g, dtype=float) / (ratio ** order - 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(a < 1.0, safety * np.abs(a / (1.0 - a)), np.where(np.isnan(a), np.nan, np.inf))
 
 
 def richardson(k_coarse, k_medium, k_fine, ratio: float):
@@ -57,11 +121,13 @@ def _combinations(ds):
     return [where for where, _ in combinations(ds)]
 
 
-def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: float,
-               fraction: float = GRID_ERROR_FRACTION):
+def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: float, ratio: float,
+               fraction: float = GRID_ERROR_FRACTION, order: float = GRID_ERROR_ORDER,
+               safety: float = GRID_ERROR_SAFETY):
     """One row per sphere combination and load of the merged sphere Datasets *coarse* (a study on
-    ``n`` with ``grid.realization_of`` = the *fine* study's grid) and *fine*, over their common
-    seeds and the loads of both (module docstring)."""
+    ``n_c`` with ``grid.realization_of`` = the *fine* study's grid) and *fine* (on ``n = ratio·n_c``),
+    over their common seeds and the loads of both (module docstring); ``grid_error_estimate`` is
+    :func:`estimate` of the far end ``G`` of the paired interval, with *order* and *safety*."""
     import pandas as pd
 
     seeds = sorted(set(coarse["seed"].values.tolist()) & set(fine["seed"].values.tolist()))
@@ -84,13 +150,15 @@ def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: floa
         boot_fine = kf[indices].mean(1) / kf.mean(0) - 1
         for j in range(force.size):
             low, high = interval(boot_error[:, j], confidence)
+            bound = float(estimate(max(abs(low), abs(high)), ratio, order=order, safety=safety))
             b_low, b_high = interval(boot_fine[:, j], confidence)
             band = 0.5 * (b_high - b_low)
             rows.append({**pick, "force_normalized": float(force[j]), "contact_cells_coarse": float(cells_c[j]),
                          "contact_cells_fine": float(cells_f[j]), "grid_error": float(error[j]),
-                         "grid_error_ci_low": low, "grid_error_ci_high": high, "band": band,
+                         "grid_error_ci_low": low, "grid_error_ci_high": high, "grid_ratio": float(ratio),
+                         "grid_error_estimate": bound, "band": band,
                          "cell_resolved": bool(resolved(cells_c[j], min_cells)),
-                         "grid_resolved": bool(abs(error[j]) <= fraction * band)})
+                         "grid_resolved": bool(bound <= fraction * band)})
     return pd.DataFrame(rows)
 
 
@@ -102,10 +170,12 @@ def run_study_grid_error(study, fine_nc, coarse_nc, out_csv) -> None:
 
     from ..files.io import read_groups, write_csv
 
-    zeta = StudySettings.of(study).fit.zeta
+    study = StudySettings.of(study)
+    zeta = study.fit.zeta
     fine, coarse = read_groups(fine_nc), read_groups(coarse_nc)
     table = (grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
-                        confidence=zeta.confidence) if "sphere" in fine and "sphere" in coarse else pd.DataFrame())
+                        confidence=zeta.confidence, ratio=study.grid.n / study.grid.coarse)
+             if "sphere" in fine and "sphere" in coarse else pd.DataFrame())
     write_csv(table, out_csv)
 
 
@@ -127,8 +197,13 @@ def run_grid_error(coarse_results, fine_results, out_csv, *, fraction: float = G
         raise MergeError(f"{coarse_results} and {fine_results}: the grid error needs sphere runs in both studies")
     with xr.open_datatree(Path(fine_results) / "stiffness.nc", engine="netcdf4") as tree:
         zeta = StudySettings.of(json.loads(tree.attrs["config"])).fit.zeta
-    table = grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells,
-                       bootstrap=zeta.bootstrap, confidence=zeta.confidence, fraction=fraction)
+        n_fine = int(tree.attrs["grid_n"])
+    with xr.open_datatree(Path(coarse_results) / "stiffness.nc", engine="netcdf4") as tree:
+        n_coarse = int(tree.attrs["grid_n"])
+    if n_coarse >= n_fine:
+        raise MergeError(f"{coarse_results} ({n_coarse}²) is not on a coarser grid than {fine_results} ({n_fine}²)")
+    table = grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
+                       confidence=zeta.confidence, ratio=n_fine / n_coarse, fraction=fraction)
     write_csv(table, out_csv)
 
 

@@ -15,6 +15,8 @@ from ..files import provenance, runfile
 from . import statistics
 from ..runs.naming import kind_of
 from ..config.settings import StudySettings, ZetaFitSettings
+from ..config.units import to_pascals
+from .conductance import conductance_variables
 from ..runs.measured import job_of, read_surface, run_order, sha256
 
 __all__ = ["merge_surface"]
@@ -57,6 +59,9 @@ def merge_surface(study, source: str, name: str, run_files, output, surface_file
         ds = xr.Dataset({v: (dims, runs_of.data[v], runs_of.attrs[v]) for v in variables if v not in coords},
                         coords=coords)
         _add_interval(ds, ens, study.fit.zeta)
+        if study.conductance:   # k in N/m over E* in Pa: k/E* in m
+            ds = ds.assign(conductance_variables(ds["stiffness"] / (study.e_star * to_pascals(study.units.e_star)),
+                                                 metres_per_unit=1.0, settings=study.conductance))
         ds.attrs = {"surface_kind": layout.kind, "half_space": runs_of.run_attrs["half_space"]}
         groups[layout.kind] = ds
     for ds in groups.values():   # the commits of every run of the surface

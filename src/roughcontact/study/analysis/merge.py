@@ -14,6 +14,9 @@ import numpy as np
 
 from ...errors import MergeError
 from ..files import provenance, runfile
+from ..config.axes import coordinate_attrs
+from ..config.units import to_metres
+from .conductance import conductance_variables
 from ..runs import naming as runs
 from .ensemble import ensemble
 from ..files.io import read_run, write_groups
@@ -164,17 +167,22 @@ def merge_runs(study, paths) -> dict:
     for layout in kind_layouts(study, table, paths):
         kind, axes, coords = layout.kind, layout.axes, layout.coords
         plastic = any(row["hardness"] is not None for row, _ in layout.rows)
-        names = runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
+        names = (runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
+                 + (runfile.PATCH_VARIABLES if study.fields.patches else ()))
         runs_of = gather(layout, lambda row: job_settings(study, row), {n: runfile.VARIABLES[n].dtype for n in names},
                          value=_generated_value)
         dims = (*axes, "seed", "force")
         groups[kind] = xr.Dataset(
             {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names},
-            coords={**{axis: (axis, coords[axis], runfile.AXIS_ATTRS[axis]) for axis in (*axes, "seed")},
+            coords={**{axis: (axis, coords[axis], coordinate_attrs(axis)) for axis in (*axes, "seed")},
                     **_force_coords(study, kind)},
             attrs={"surface_kind": kind, "half_space": layout.half_space,
                    "run_git_commits": provenance.canonical_json(runs_of.commits)},
         )
+        if study.conductance:   # k/E* = (k/(E* L)) L in the length unit
+            groups[kind] = groups[kind].assign(conductance_variables(
+                groups[kind]["stiffness"] / study.e_star, metres_per_unit=to_metres(study.units.length),
+                settings=study.conductance))
     return groups
 
 

@@ -22,10 +22,11 @@ row keeps its deviations but is not scored (no ``rank``, every verdict
 ``untested: not modelled: <axes>``; :mod:`roughcontact.study.analysis.not_modelled`).
 
 Grid error (``grid.coarse``, :mod:`roughcontact.study.analysis.grid_error`): with the same surfaces pressed
-on a coarser grid, ``g = k̄_coarse/k̄ − 1`` at each load bounds the grid error of the study's own
-ensemble mean (for a sequence converging at an order ``p ≥ 1`` under a refinement ratio ``r ≥ 2``
-the finer grid's error is ``|g|/(r^p − 1) ≤ |g|``). The scorecard then adds, per model and
-combination, over the same resolved loads:
+on a coarser grid, ``g = k̄_coarse/k̄ − 1`` at each load gives the estimate ``ê`` of the study's own
+grid error (:func:`~roughcontact.study.analysis.grid_error.estimate`: Richardson's with the measured
+order and a safety factor, validated to bound the error against a twice finer grid); the
+scorecard reads ``ê`` (tables without it: ``|g|``) as the grid error ``g`` below. It adds, per
+model and combination, over the same resolved loads:
 
 * ``grid_error_max``: the largest ``|g|``; ``grid_resolved``: the fraction of loads where
   ``|g|`` is at most half the band's half-width (:data:`~roughcontact.study.analysis.grid_error.GRID_ERROR_FRACTION`);
@@ -34,7 +35,10 @@ combination, over the same resolved loads:
 * ``grid_error_low`` / ``grid_error_high``: the weighted mean ``|g|`` of each branch (the weights
   of the systematic deviation), and ``systematic_low_total_verdict`` /
   ``systematic_high_total_verdict``: the verdict on 0 of the systematic deviation's interval
-  widened by that mean (``differs``: a model error that neither sampling nor grid explains).
+  widened by that mean (``differs``: a model error that neither sampling nor grid explains);
+* ``grid_error_note``: empty where the grid error is measured; otherwise why not (no companion
+  study, ``grid.coarse`` null; or no companion value at the resolved loads), and then every
+  grid-error column is NaN and every ``*_total_verdict`` ``untested: grid error not measured``.
 
 Decision (:mod:`roughcontact.study.analysis.decision`): per combination, the recommended model minimises
 ``S = max_b sqrt(mean_{F ∈ b}(|k_model/k_BEM − 1| + |g_F|)²)`` (``g`` 0 where not measured, and
@@ -54,16 +58,13 @@ from ...models import paper
 from ...models import scorecard as registry
 from ..config import axes
 from . import decision
-from ..files import provenance
 from ..runs import naming as runs
 from . import not_modelled as unmodelled
 from .ensemble import combinations, resolved
-from ..report.plotting import pyplot, save_png
 from .statistics import bootstrap_indices, interval, verdict
 from ..config.settings import StudySettings
-from ..report.tables import write_html_table
 
-__all__ = ["Combination", "scorecard", "run_models", "combo_label"]
+__all__ = ["Combination", "scorecard", "combo_label"]
 
 log = logging.getLogger(__name__)
 
@@ -139,20 +140,37 @@ def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict
             f"n_loads_{branch}": int(use.sum())}
 
 
+#: the reason of ``grid_error_note`` without a companion study
+NOT_MEASURED = "grid error not measured: no companion study (grid.coarse is null)"
+#: ... and with one that has no value at the combination's resolved loads
+NOT_MEASURED_HERE = "grid error not measured: the companion has no value at the resolved loads"
+#: the grid-error columns, NaN where it is not measured
+GRID_COLUMNS = ("grid_error_max", "grid_resolved", "inside_band_total", "grid_error_low", "grid_error_high")
+
+
 def _grid_errors(grid_error, combo: Combination, force_norm) -> np.ndarray | None:
-    """``g`` of the grid error table at each load of *combo* (NaN where the table has none)."""
+    """The grid error of the table at each load of *combo*: its ``grid_error_estimate`` (older
+    tables: ``|grid_error|``), NaN where the table has none."""
     if grid_error is None or not len(grid_error):
         return None
+    column = "grid_error_estimate" if "grid_error_estimate" in grid_error else "grid_error"
     rows = grid_error
     for axis in runs.AXES["sphere"]:
         if axis in rows:
             rows = rows[np.isclose(rows[axis].to_numpy(float), combo[axis], rtol=1e-12, atol=0)
                         | (np.isinf(rows[axis].to_numpy(float)) & math.isinf(combo[axis]))]
     out = np.full(force_norm.size, np.nan)
-    for force, g in zip(rows["force_normalized"].to_numpy(float), rows["grid_error"].to_numpy(float)):
+    for force, g in zip(rows["force_normalized"].to_numpy(float), np.abs(rows[column].to_numpy(float))):
         match = np.isclose(force_norm, force, rtol=1e-9, atol=0)
         out[match] = g
     return out
+
+
+def _not_measured(reason: str) -> dict:
+    """The grid-error columns of a row without a measured grid error: NaN, and the *reason*."""
+    return {**dict.fromkeys(GRID_COLUMNS, math.nan),
+            **{f"systematic_{b}_total_verdict": "untested: grid error not measured" for b in ("low", "high")},
+            "grid_error_note": reason}
 
 
 def _with_grid(dev, band, g, use, weight_use, k_boot, k_mean, systematic: dict) -> dict:
@@ -166,7 +184,9 @@ def _with_grid(dev, band, g, use, weight_use, k_boot, k_mean, systematic: dict) 
     half = 0.5 * (band[1] - band[0])
     out = {"grid_error_max": float(np.nanmax(g_abs[use])) if np.isfinite(g_abs[use]).any() else math.nan,
            "grid_resolved": float(np.mean(g_abs[use] <= GRID_ERROR_FRACTION * half[use])),
-           "inside_band_total": float(inside.mean())}
+           "inside_band_total": float(inside.mean()), "grid_error_note": ""}
+    if not np.isfinite(g_abs[use]).any():
+        return _not_measured(NOT_MEASURED_HERE)
     for branch, mask in weight_use.items():
         key = f"grid_error_{branch}"
         if mask.sum() < 1:
@@ -223,7 +243,8 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
             branches = {"low": use & (force_norm < f_tr), "high": use & (force_norm >= f_tr)}
             systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level),
                           **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level)}
-            grid = {} if g is None else _with_grid(dev, band, g, use, branches, k_boot, k_mean, systematic)
+            grid = _not_measured(NOT_MEASURED) if g is None else _with_grid(dev, band, g, use, branches, k_boot,
+                                                                            k_mean, systematic)
             combo_boot.append(decision.inputs(k_model, k_mean, k_boot, use, branches, g))
             combo_rows.append(unmodelled.unscored({
                 "model": name, **{a: combo[a] for a in runs.AXES["sphere"]}, "combination": label,
@@ -243,7 +264,7 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
              "band_high": ("force", band[1], {"long_name": f"{level:.0%} band of the ensemble mean, high", "units": "1"}),
              "resolved": ("force", use_load.astype("i1"), {"long_name": "resolved load (1) or not (0)", "units": "1"}),
              **({} if g is None else {"grid_error": ("force", g, {
-                 "long_name": "grid error bound k_coarse/k_BEM - 1 (grid.coarse)", "units": "1"})})},
+                 "long_name": "grid error estimate |k_BEM/k_converged - 1| (grid.coarse)", "units": "1"})})},
             coords={"force_normalized": ("force", force_norm, {"long_name": "F/(E* L^2)", "units": "1"})},
             attrs={k: v for k, v in combo.items()})
     table = pd.DataFrame(rows)
@@ -251,98 +272,3 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
         table["rank"] = unmodelled.rank(table, "combination")
         table = decision.sort(table)
     return table, curves
-
-
-def scorecard_lead(table=None) -> str:
-    """The lead paragraph of the scorecard page of the report (the registered models' summaries,
-    :data:`roughcontact.study.analysis.decision.RULE` and, given the *table*, whether its grid error is measured)."""
-    summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
-                          for model in registry.models().values())
-    optional = ", ".join(a.name for a in axes.optional_axes())
-    grid = "" if table is None else decision.grid_note(table) + " "
-    return (f"{decision.RULE} {grid}"
-            "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
-            "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
-            "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
-            "deviations; rank orders the scored rows by max_rel_dev alone (rank 1 the smallest; the recommended model is the rule's, above); paper_setting says whether every "
-            f"optional axis ({optional}) is at the paper's value; not_modelled names the optional axes, with "
-            "their values, at which the combination is off the paper's value and which the model does not "
-            "model (its prediction ignores them; each model's modelled axes follow its summary at the end): such a "
-            "row keeps its deviations but is not scored (no rank, every verdict untested: not modelled); "
-            "inside_band the fraction of those loads where the model lies inside the ensemble's band; "
-            "systematic_low and systematic_high the mean deviation below and above the crossover force (eq. 17), weighted by the inverse variance of the "
-            "ensemble mean, with its interval and verdict on 0 (differs: a significant systematic deviation). "
-            "With grid.coarse (the same surfaces on a coarser grid): grid_error_max the largest grid error "
-            "bound |k_coarse/k_BEM - 1| over those loads, grid_resolved the fraction of loads where it is at "
-            "most half the band, inside_band_total the fraction inside the band widened by the grid error, and "
-            "the *_total_verdict columns the systematic verdicts with the grid error added to the interval "
-            "(differs: a model error). outside_range names why a combination lies outside the model's stated range "
-            "of validity (such a row is flagged, keeps its deviations and rank, and is never recommended); "
-            "decision_score is S, difference_ci_low/high the paired interval of S - S_recommended, "
-            f"grid_error_measured whether S includes a measured grid error. {summaries}. models.csv holds every digit.")
-
-
-def _figure(path, label: str, curve, table) -> None:
-    plt = pyplot()
-    force = curve["force_normalized"].values
-    shown = curve["resolved"].values.astype(bool)
-    fig, ax = plt.subplots(figsize=(6, 4))
-    if "grid_error" in curve:
-        g = np.abs(curve["grid_error"].values)
-        ax.fill_between(force, -np.sqrt(curve["band_low"].values ** 2 + g ** 2),
-                        np.sqrt(curve["band_high"].values ** 2 + g ** 2), color="0.93",
-                        label="band and grid error (grid.coarse)")
-    ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
-    ax.axhline(0, color="0.4", lw=0.8)
-    for name in registry.models():
-        if name in curve:
-            mark = table[(table["combination"] == label) & (table["model"] == name)]
-            text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
-            missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
-            if missing:                      # not scored: dashed, the axes it ignores named
-                text += ", not modelled: " + missing
-            if len(mark) and "decision" in mark and mark["decision"].iloc[0] in ("recommended", "tied"):
-                text += " ★" if mark["decision"].iloc[0] == "recommended" else " ≈"
-            ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
-                        label=name + text)
-    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1",
-           title=label + ("" if "grid_error" in curve else " (grid error not measured)"))
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    save_png(fig, path)
-
-
-def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures, grid_error_csv=None):
-    """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
-    per combination) and one figure per elastic sphere combination (*figures*, in the order of
-    :func:`roughcontact.study.runs.naming.sphere_names` with ``adhesive=False``); *grid_error_csv*: ``grid_error.csv`` of the
-    study's companion on ``grid.coarse`` (or ``None``)."""
-    import pandas as pd
-
-    from ..files.io import read_groups, write_csv, write_groups
-
-    study = StudySettings.of(study)
-    grid_error = pd.read_csv(grid_error_csv) if grid_error_csv else None
-    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error)
-    attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
-                                        bootstrap_over="seeds", forces="F/(E* L^2)")
-    write_csv(table, out_csv)
-    write_groups(out_nc, curves, attrs)
-    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(table),
-                     above=decision.matrix_html(table, list(registry.models())),
-                     verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
-                                      "systematic_low_total_verdict", "systematic_high_total_verdict"),
-                     first=("combination", "model", "decision", "tied_models", "decision_score", "difference_ci_low",
-                            "difference_ci_high", "rank", unmodelled.COLUMN, decision.OUTSIDE, "max_rel_dev", "max_rel_dev_ci_low",
-                            "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "inside_band_total",
-                            "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
-                            "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",
-                            "systematic_high_total_verdict", "grid_error_measured", "n_loads"))
-    names = runs.sphere_names(study, adhesive=False)
-    if len(names) != len(figures):
-        raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
-    for label, path in zip(names, figures):
-        if label not in curves:
-            raise ValueError(f"no sphere combination {label} in {stiffness_nc} for the figure {path}")
-        _figure(path, label, curves[label], table)
-    log.info("scorecard:\n%s", table.to_string() if len(table) else "(no sphere runs)")

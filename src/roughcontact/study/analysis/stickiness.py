@@ -26,13 +26,14 @@ import numpy as np
 
 from ...errors import MergeError
 from ..files import provenance, runfile
+from ..config.axes import coordinate_attrs
 from .merge import KindLayout, gather
 from .statistics import bootstrap_indices, interval
 from ..config.stickiness import StickinessSettings
 
 __all__ = ["merge_stickiness", "stickiness_layout", "stickiness_table", "threshold", "run_stickiness_merge"]
 
-#: the number coordinate (hurst and seed: those of every merged file, runfile.AXIS_ATTRS)
+#: the number coordinate (hurst and seed: those of every merged file, coordinate_attrs)
 NUMBER_ATTRS = {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"}
 
 
@@ -53,9 +54,9 @@ def merge_stickiness(s: StickinessSettings, paths):
     meta = runfile.STICKINESS_SCALARS
     return xr.Dataset({name: (dims, values, {"long_name": meta[name].long_name, "units": meta[name].units})
                        for name, values in data.items()},
-                      coords={"hurst": ("hurst", np.array(s.hurst), runfile.AXIS_ATTRS["hurst"]),
+                      coords={"hurst": ("hurst", np.array(s.hurst), coordinate_attrs("hurst")),
                               "number": ("number", np.array(s.number), NUMBER_ATTRS),
-                              "seed": ("seed", np.arange(s.seeds), runfile.AXIS_ATTRS["seed"])},
+                              "seed": ("seed", np.arange(s.seeds), coordinate_attrs("seed"))},
                       attrs={"grid_n": s.n, "area": s.area, "cutoff_cells": s.cutoff})
 
 

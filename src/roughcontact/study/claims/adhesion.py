@@ -5,9 +5,18 @@
 Soc. A 324 (1971) 301): rows with Johnson's parameter ``h_rms/δ_c ≤`` :data:`SMOOTH`. The detachment
 criterion converges to JKR as the contact grows in cells, from above (+0.9 % at 80 cells); at the
 row's resolution its pull-off is ``1 + e`` times JKR's, ``e`` its discretisation error there
-(:func:`method_error`). Consistent when the ratio and its interval lie within
-:data:`SAMPLING_ALLOWANCE` of ``1 + e`` (a two-sided test: a ratio below JKR's differs too);
-untested where the preload's contact is not wider than JKR's pull-off radius (:data:`PRELOAD`).
+(:func:`~roughcontact.study.analysis.adhesion.method_error`). Consistent when the ratio and its
+interval lie within :data:`SAMPLING_ALLOWANCE` of ``1 + e`` (a two-sided test: a ratio below JKR's
+differs too); untested (not swept) where the preload's contact is not wider than JKR's pull-off
+radius (:data:`PRELOAD`), and untested (unresolved) where the run is below resolution:
+``pull_off.csv``'s ``resolved`` is false, ``e`` above
+:data:`~roughcontact.study.analysis.adhesion.RESOLVED_ERROR` (3 %, JKR's pull-off radius below
+about 46 cells), where the method's own error is as large as the effects tested (the reason still
+says how far the pull-off lies from ``1 + e``).
+
+Claims (o) and (p) leave out the rows below resolution and say so in ``sweep`` (as they leave out
+the preload-capped ones); where too few rows remain because of them they are untested
+(unresolved).
 
 (o) The rough pull-off collapses on Johnson's parameter ``h_rms/δ_c`` (his sphere form of Fuller &
 Tabor's θ, Proc. R. Soc. A 345 (1975) 327): per H, the curves of the (R, w) pairs against
@@ -50,6 +59,7 @@ import math
 import numpy as np
 
 from ...models.rough_adhesion import STICKINESS_RANGE_LIMIT
+from ..analysis.adhesion import ERROR_CELLS, METHOD_ERRORS, RESOLVED_CELLS, RESOLVED_ERROR, method_error, resolved
 from ..analysis.statistics import (NO_PREDICTION, NOT_SWEPT, OUT_OF_RANGE, UNRESOLVED, judge, split_verdict, untested,
                                    verdict_bound)
 from .registry import Claim, register, row
@@ -64,25 +74,20 @@ SAMPLING_ALLOWANCE = 0.03
 #: the preload's contact radius over JKR's pull-off radius that claim (n) needs (the retract path
 #: must start from a contact wider than the one at pull-off)
 PRELOAD = 1.1
-#: the detachment criterion's pull-off over JKR's minus 1 at JKR's pull-off radius of 10, 20, 40 and 80
-#: cells (c = 2.1; measured 2026-11-25, roughcontact.bem.adhesion): the force just before each detachment,
-#: i.e. the method's own pull-off without the sampling of a retract path. The study's retract refines its
-#: least force by sub-steps of about 0.003 a_c²/R, so its pull-off is that: the adhesion preset's smooth
-#: spheres, 1.111 at 12.4 cells and 1.079 at 17.9, against 1.113 and 1.076 from this table.
-_CELLS, _ERROR = (10.0, 20.0, 40.0, 80.0), (0.135, 0.064, 0.035, 0.009)
-
-
-def method_error(cells: float) -> float:
-    """The detachment criterion's relative pull-off error at JKR's pull-off radius of *cells*
-    cells: the calibration's values, interpolated in ``ln cells`` (held beyond 80 cells); NaN
-    below 10 cells (not resolved)."""
-    if not cells >= _CELLS[0]:
-        return math.nan
-    return float(np.interp(math.log(cells), np.log(_CELLS), _ERROR))
-
-
 def _spheres(table):
     return table[table["kind"] == "sphere"] if len(table) else table
+
+
+def _unresolved(r) -> str:
+    """The reason of an adhesive row below resolution (``resolved`` false,
+    :mod:`roughcontact.study.analysis.adhesion`)."""
+    error = method_error(r["jkr_radius_cells"])
+    size = (f"where the method's own pull-off error is {error:+.1%}, more than {RESOLVED_ERROR:.0%}"
+            if math.isfinite(error) else
+            f"below the {ERROR_CELLS[0]:g} cells where the method's own pull-off error was measured "
+            f"({METHOD_ERRORS[0]:+.1%} there, more than {RESOLVED_ERROR:.0%})")
+    return (f"JKR's pull-off radius is {r['jkr_radius_cells']:.1f} cells, {size} (resolved from "
+            f"{RESOLVED_CELLS:.0f} cells: refine grid.n)")
 
 
 def _n(inputs):
@@ -93,26 +98,28 @@ def _n(inputs):
         return [row("n", statement, math.nan, math.nan, math.nan, 1.0,
                     untested(NOT_SWEPT, f"no adhesive sphere with h_rms/delta_c <= {SMOOTH:g}"))]
     out = []
-    for _, r in smooth.iterrows():
+    for (_, r), fine in zip(smooth.iterrows(), resolved(smooth)):
         where = {a: r[a] for a in ("hurst", "radius", "h_rms", "work_of_adhesion")}
         error = method_error(r["jkr_radius_cells"])
         sweep = f"h_rms/delta_c = {r['johnson_parameter']:.3g}, {int(r['n_seeds'])} seeds"
+        measured = (r["pull_off_ratio"], r["pull_off_ratio_ci_low"], r["pull_off_ratio_ci_high"])
         if not r["preload_radius_ratio"] >= PRELOAD:
-            out.append(row("n", statement, r["pull_off_ratio"], r["pull_off_ratio_ci_low"], r["pull_off_ratio_ci_high"],
-                           1.0, untested(NOT_SWEPT, f"the preload's contact radius is {r['preload_radius_ratio']:.2f} "
-                                         f"of JKR's pull-off radius (needs >= {PRELOAD:g}: raise forces.sphere.to)"),
+            out.append(row("n", statement, *measured, 1.0,
+                           untested(NOT_SWEPT, f"the preload's contact radius is {r['preload_radius_ratio']:.2f} "
+                                    f"of JKR's pull-off radius (needs >= {PRELOAD:g}: raise forces.sphere.to)"),
                            sweep=sweep, **where))
             continue
-        if not math.isfinite(error):
-            out.append(row("n", statement, r["pull_off_ratio"], r["pull_off_ratio_ci_low"], r["pull_off_ratio_ci_high"],
-                           1.0, untested(UNRESOLVED, f"JKR's pull-off radius is {r['jkr_radius_cells']:.1f} cells (the "
-                                         "detachment criterion needs >= 10)"), sweep=sweep, **where))
-            continue
         expected = 1.0 + error
-        worst = max(abs(r[c] - expected) for c in ("pull_off_ratio", "pull_off_ratio_ci_low", "pull_off_ratio_ci_high")
-                    if math.isfinite(r[c]))
+        worst = max((abs(v - expected) for v in measured if math.isfinite(v)), default=math.nan)
+        if not fine:
+            # below resolution the method's own error is as large as the effects: no verdict on JKR
+            away = (f"; the pull-off is {worst:.1%} from the method's own {expected:.3f} x JKR there"
+                    if math.isfinite(worst) else "")
+            out.append(row("n", statement, *measured, 1.0, untested(UNRESOLVED, _unresolved(r) + away),
+                           sweep=sweep, **where))
+            continue
         verdict = "consistent" if worst <= SAMPLING_ALLOWANCE else "differs"
-        out.append(row("n", statement, r["pull_off_ratio"], r["pull_off_ratio_ci_low"], r["pull_off_ratio_ci_high"],
+        out.append(row("n", statement, *measured,
                        1.0, f"{verdict}: {worst:.1%} from the method's own {expected:.3f} x JKR at "
                        f"{r['jkr_radius_cells']:.1f} cells ({'within' if verdict == 'consistent' else 'more than'} "
                        f"{SAMPLING_ALLOWANCE:.0%})", sweep=sweep, **where))
@@ -124,6 +131,29 @@ def _preloaded(rows):
     capped by the preload measures the preload, not the adhesion) and how many were left out."""
     keep = rows["preload_radius_ratio"].to_numpy(float) >= PRELOAD
     return rows[keep], int(np.count_nonzero(~keep))
+
+
+def _usable(rows):
+    """The rows of *rows* that (o) and (p) compare: a finite pull-off ratio, resolved (the method's
+    own error at most :data:`~roughcontact.study.analysis.adhesion.RESOLVED_ERROR`, the rows below
+    resolution are left out and counted) and preloaded (:func:`_preloaded`); with the text of what
+    was left out and the number of rows below resolution."""
+    rows = rows[np.isfinite(rows["pull_off_ratio"].to_numpy(float))] if len(rows) else rows
+    fine = resolved(rows)
+    coarse = int(np.count_nonzero(~fine))
+    rows, capped = _preloaded(rows[fine]) if len(rows) else (rows, 0)
+    left = (f"{capped} left out: preload below {PRELOAD:g} JKR radii; {coarse} left out: below resolution, the "
+            f"method's own pull-off error above {RESOLVED_ERROR:.0%}")
+    return rows, left, coarse
+
+
+def _short(coarse: int, reason: str) -> str:
+    """The untested verdict of a collapse without enough rows: :data:`UNRESOLVED` where rows below
+    resolution were left out (*coarse*), else :data:`NOT_SWEPT`."""
+    if coarse:
+        return untested(UNRESOLVED, f"{reason}, after leaving out {coarse} combination(s) below resolution "
+                                    f"(the method's own pull-off error above {RESOLVED_ERROR:.0%}: refine grid.n)")
+    return untested(NOT_SWEPT, reason)
 
 
 def _series(rows, by) -> list:
@@ -205,20 +235,19 @@ def _o(inputs):
         return [row("o", statement, math.nan, math.nan, math.nan, 1.0, untested(NOT_SWEPT, "no adhesive sphere"))]
     out = []
     for hurst, rows in table.groupby("hurst"):
-        rows, capped = _preloaded(rows[np.isfinite(rows["pull_off_ratio"].to_numpy(float))])
+        rows, left, coarse = _usable(rows)
         pairs = {(r["radius"], r["work_of_adhesion"]) for _, r in rows.iterrows()}
-        sweep = (f"H = {hurst:g}: {len(rows)} combinations ({capped} left out: preload below {PRELOAD:g} JKR "
-                 f"radii), {len(pairs)} (R, w) pairs")
+        sweep = f"H = {hurst:g}: {len(rows)} combinations ({left}), {len(pairs)} (R, w) pairs"
         if len(pairs) < 2 or len(rows) < 4:
             out.append(row("o", statement, math.nan, math.nan, math.nan, 1.0,
-                           untested(NOT_SWEPT, f"{len(pairs)} (R, w) pair(s) and {len(rows)} combination(s) at "
-                                    f"H = {hurst:g} (a collapse needs two pairs and four combinations)"),
+                           _short(coarse, f"{len(pairs)} (R, w) pair(s) and {len(rows)} combination(s) at "
+                                  f"H = {hurst:g} (a collapse needs two pairs and four combinations)"),
                            hurst=hurst, sweep=sweep))
             continue
         collapse = _collapse_residual(rows, ("radius", "work_of_adhesion"))
         if not collapse.compared:
             out.append(row("o", statement, math.nan, math.nan, math.nan, 1.0,
-                           untested(NOT_SWEPT, "the (R, w) pairs' ranges of h_rms/delta_c do not overlap"), hurst=hurst,
+                           _short(coarse, "the (R, w) pairs' ranges of h_rms/delta_c do not overlap"), hurst=hurst,
                            sweep=sweep))
             continue
         sweep += f", {collapse.compared} points compared"
@@ -235,21 +264,20 @@ def _p(inputs):
     statement = ("Li, Pohrt & Popov (2019): Johnson's h_rms/delta_c alone does not set the random-roughness "
                  "pull-off (their own parameter is not implemented)")
     table = _spheres(inputs.adhesion)
-    rows, capped = _preloaded(table[np.isfinite(table["pull_off_ratio"].to_numpy(float))]) if len(table) \
-        else (table, 0)
+    rows, left, coarse = _usable(table)
     counts = rows.groupby("hurst").size() if len(rows) else {}
     enough = [h for h, count in dict(counts).items() if count >= 4]
     if len(enough) < 2:
         return [row("p", statement, math.nan, math.nan, math.nan, 1.0,
-                    untested(NOT_SWEPT, f"{len(enough)} H with four or more combinations (one curve across H needs "
-                                        "two)"))]
+                    _short(coarse, f"{len(enough)} H with four or more combinations (one curve across H needs two)"),
+                    sweep=f"{len(rows)} combinations ({left})" if len(table) else "")]
     rows = rows[rows["hurst"].isin(enough)]
     collapse = _collapse_residual(rows, ("hurst", "radius", "work_of_adhesion"), across="hurst")
-    sweep = (f"H = {', '.join(f'{h:g}' for h in sorted(enough))}: {len(rows)} combinations ({capped} left out: "
-             f"preload below {PRELOAD:g} JKR radii), {collapse.compared} points compared")
+    sweep = (f"H = {', '.join(f'{h:g}' for h in sorted(enough))}: {len(rows)} combinations ({left}), "
+             f"{collapse.compared} points compared")
     if not collapse.compared:
         return [row("p", statement, math.nan, math.nan, math.nan, 1.0,
-                    untested(NOT_SWEPT, "the H's ranges of h_rms/delta_c do not overlap"), sweep=sweep)]
+                    _short(coarse, "the H's ranges of h_rms/delta_c do not overlap"), sweep=sweep)]
     worst = collapse.worst
     verdict = (f"consistent: no one curve of h_rms/delta_c through every H (the H's curves {worst:.2f} times the "
                "sum of their half-intervals apart)" if worst > 1.0 else

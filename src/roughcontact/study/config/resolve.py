@@ -166,6 +166,8 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
                     f"grid.length^2 = {force:g}, outside the range of floating-point numbers; allowed: "
                     f"{sys.float_info.min:.3g} <= F <= {sys.float_info.max:.3g}", key=f"forces.{kind}.{end}"
                 )
+    _check_fields(cfg)
+    _check_conductance(cfg)
     if not cfg["hurst"]:  # measured inputs only: the checks of the generated surfaces do not apply
         return cfg
     if "flat" in kinds:
@@ -199,6 +201,43 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
         if axis.check is not None:
             axis.check(cfg, kinds)
     return cfg
+
+
+def _check_fields(cfg: dict) -> None:
+    """``fields``: kept by generated elastic and plastic runs, at loads within a load path."""
+    fields = cfg["fields"]
+    if not (fields["patches"] or fields["at"]):
+        return
+    if any(w > 0 for w in cfg.get("work_of_adhesion", []) if w is not None):
+        raise ConfigError("config key 'fields' is not allowed with work_of_adhesion > 0; allowed: fields on "
+                          "elastic or plastic runs (an adhesive run keeps its retract path instead)", key="fields")
+    if cfg.get("topography") or cfg.get("spectrum"):
+        raise ConfigError("config key 'fields' is not allowed with measured inputs (topography, spectrum); allowed: "
+                          "fields on the generated surfaces of a study without measured inputs", key="fields")
+    kinds = {kind_of(r) for r in cfg["radius"]}
+    for i, force in enumerate(fields["at"]):
+        ranges = {kind: cfg["forces"][kind] for kind in kinds}
+        if not any(r["from"] <= force <= r["to"] for r in ranges.values()):
+            spans = ", ".join(f"forces.{kind} {r['from']:g} ... {r['to']:g}" for kind, r in ranges.items())
+            raise ConfigError(f"config key 'fields.at[{i}]' = {force:g} is outside every load path; allowed: "
+                              f"a force F/(E* L^2) within {spans}", key=f"fields.at[{i}]")
+
+
+def _check_conductance(cfg: dict) -> None:
+    """``conductance``: resistivities not both 0, and the units that make it physical."""
+    section = cfg["conductance"]
+    given = [key for key in ("resistivity", "conductivity") if section.get(key) is not None]
+    if not given:
+        return
+    if section.get("resistivity") is not None and sum(section["resistivity"]) <= 0:
+        raise ConfigError("config key 'conductance.resistivity' = [0, 0] is not allowed; allowed: two resistivities "
+                          "(ohm m) >= 0, not both 0", key="conductance.resistivity")
+    units = cfg.get("units") or {}
+    needed = ["length"] + (["e_star"] if cfg.get("topography") or cfg.get("spectrum") else [])
+    for unit in needed:
+        if units.get(unit) is None:
+            raise ConfigError(f"config key 'conductance.{given[0]}' needs units.{unit}; allowed: a conductance in "
+                              f"physical units, with units.{unit} given", key=f"conductance.{given[0]}")
 
 
 def study_settings(raw: dict, *, base_dir: str | os.PathLike | None = None) -> StudySettings:

@@ -19,18 +19,22 @@ one), ``e_star`` in ``units.e_star``; forces normalised, ``F/(E* L²)``.
 from __future__ import annotations
 
 import dataclasses
+import math
 import types
 from typing import Mapping
 
 import numpy as np
 
 from . import axes
+from .records import force_grid
 
 __all__ = [
     "force_grid",
     "ForceRange",
     "GridSettings",
     "SolverSettings",
+    "FieldsSettings",
+    "ConductanceSettings",
     "ZetaFitSettings",
     "SlopeFitSettings",
     "FitSettings",
@@ -41,11 +45,6 @@ __all__ = [
     "StudySettings",
     "coarse_config",
 ]
-
-
-def force_grid(force_from: float, force_to: float, count: int) -> np.ndarray:
-    """The log-spaced load path ``F/(E* L²)`` of a force range ``{from, to, count}``."""
-    return np.geomspace(force_from, force_to, int(count))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -84,6 +83,25 @@ class SolverSettings:
     stiffness: str           #: ``punch`` (exact ``dF/dd``) or ``difference``
     rel_step: float          #: relative step of the ``difference`` stiffness
     maxiter: int | None = None   #: iteration limit per load (``None``: the solver's default)
+
+
+@dataclasses.dataclass(frozen=True)
+class FieldsSettings:
+    """What each generated run keeps beyond its per-load numbers (``fields``)."""
+
+    patches: bool = False   #: per load, the number of contact patches and the largest one's cells
+    at: tuple = ()          #: ``F/(E* L²)``: the loads nearest these keep their contact fields
+
+
+@dataclasses.dataclass(frozen=True)
+class ConductanceSettings:
+    """The bodies' resistivities and conductivities of the contact conductance (``conductance``)."""
+
+    resistivity: tuple | None = None    #: ``(ρ₁, ρ₂)`` in Ω·m (``None``: no electrical conductance)
+    conductivity: tuple | None = None   #: ``(K₁, K₂)`` in W/(m·K) (``None``: no thermal conductance)
+
+    def __bool__(self) -> bool:
+        return self.resistivity is not None or self.conductivity is not None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -192,6 +210,10 @@ class StudySettings:
         The stickiness sweep (claim (q); ``None``: the config has no ``stickiness`` section).
     jobs : JobsSettings or None
         How the runs are grouped into jobs (``None``: the schema's default, :meth:`JobsSettings.of`).
+    fields : FieldsSettings
+        What each generated run keeps beyond its per-load numbers (contact patches, fields).
+    conductance : ConductanceSettings
+        The bodies' resistivities and conductivities of the contact conductance (false: none).
     config : mapping
         The resolved configuration itself, read-only: provenance and run files record it.
     """
@@ -209,6 +231,8 @@ class StudySettings:
     tile: int | None = None
     stickiness: object = None
     jobs: JobsSettings | None = None
+    fields: FieldsSettings = FieldsSettings()
+    conductance: ConductanceSettings = ConductanceSettings()
     config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
                                         compare=False)
 
@@ -269,6 +293,10 @@ class StudySettings:
             tile=None if cfg.get("tile") is None else int(cfg["tile"]),
             stickiness=StickinessSettings.of(cfg),
             jobs=JobsSettings.of(cfg),
+            fields=FieldsSettings(patches=bool((cfg.get("fields") or {}).get("patches", False)),
+                                  at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ())))),
+            conductance=ConductanceSettings(**{key: None if value is None else tuple(float(v) for v in value)
+                                               for key, value in (cfg.get("conductance") or {}).items()}),
             config=types.MappingProxyType(dict(cfg)),
         )
 
@@ -287,9 +315,9 @@ class StudySettings:
         return self.e_star * self.grid.length ** 2
 
     def coarse_study(self) -> "StudySettings":
-        """The companion study of the grid error (``grid.coarse``): the same runs and surfaces on
-        the coarse grid (``grid.realization_of`` = this study's surfaces' grid); ``ValueError``
-        without ``grid.coarse``."""
+        """The companion study of the grid error (``grid.coarse``): the same sphere runs and
+        surfaces on the coarse grid (``grid.realization_of`` = this study's surfaces' grid);
+        ``ValueError`` without ``grid.coarse`` or without a sphere (:func:`coarse_config`)."""
         return StudySettings.of(coarse_config(self.config))
 
     def topography_entry(self, name: str) -> TopographyInput:
@@ -310,13 +338,18 @@ class StudySettings:
 def coarse_config(cfg) -> dict:
     """The resolved configuration of the companion study of the grid error of *cfg* (resolved,
     with ``grid.coarse``): ``grid.n`` = the coarse grid, ``grid.realization_of`` = the grid whose
-    surfaces *cfg* presses, everything else as in *cfg*. ``ValueError`` without ``grid.coarse``."""
+    surfaces *cfg* presses, ``radius`` the finite radii only (the grid error is the spheres'; no
+    flat run is pressed twice), everything else as in *cfg*. ``ValueError`` without
+    ``grid.coarse`` or without a sphere."""
     grid = dict(cfg["grid"])
     coarse = grid.pop("coarse", None)
     if coarse is None:
         raise ValueError("the study has no grid.coarse: there is no coarse companion study")
+    spheres = [r for r in cfg.get("radius", []) if math.isfinite(r)]
+    if not spheres:
+        raise ValueError("the study has no sphere radius: its companion on grid.coarse would have no run")
     fine = grid["n"] if grid.get("realization_of") is None else grid["realization_of"]
-    return {**cfg, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
+    return {**cfg, "radius": spheres, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
 
 
 def _rebuild(fields: dict) -> StudySettings:

@@ -5,27 +5,27 @@ import dataclasses
 from collections.abc import Mapping
 
 from .defaults import capped_tol
+from .records import RunRecord
 
 __all__ = ["StickinessRun", "StickinessSettings"]
 
 
-@dataclasses.dataclass(frozen=True)
-class StickinessRun:
+@dataclasses.dataclass(frozen=True, kw_only=True)
+class StickinessRun(RunRecord):
     """The resolved settings of one stickiness run: everything it depends on and nothing else.
 
-    The ``stickiness_run`` rule's ``params`` and the ``config`` (and ``config_hash``) its run file
-    records, so that another seed, number or Hurst exponent in the sweep, or a change of the
-    merge's interval (``fit.zeta``), reruns no finished run. Built by
-    :meth:`StickinessSettings.run`; the one record of a stickiness run (its path, its job, its file).
+    Its job record (:class:`~roughcontact.study.config.records.RunRecord`: the grid ``n`` (periodic),
+    ``length``, ``e_star`` and ``tol``, capped by
+    :func:`roughcontact.study.config.defaults.capped_tol`) with the surface and the approach path
+    of this kind. The ``stickiness_run`` rule's ``params`` and the ``config`` (and ``config_hash``)
+    its run file records, so that another seed, number or Hurst exponent in the sweep, or a change
+    of the merge's interval (``fit.zeta``), reruns no finished run. Built by
+    :meth:`StickinessSettings.run`.
 
     Attributes
     ----------
     hurst, number, seed :
         The run: Hurst exponent, Pastewka–Robbins number, seed of the surface.
-    n : int
-        Grid points per side (periodic).
-    length, e_star : float
-        Side ``L`` of the surface (length) and ``E*`` (the study's modulus unit).
     rms_slope : float
         ``h′`` of the surface (dimensionless).
     cutoff : float
@@ -36,32 +36,21 @@ class StickinessRun:
         Contact fraction up to which the surface is loaded.
     steps : int
         Approaches of the loading path.
-    tol : float
-        Relative tolerance of every solve (:func:`roughcontact.study.config.defaults.capped_tol`).
     """
 
     hurst: float
     number: float
     seed: int
-    n: int
-    length: float
-    e_star: float
     rms_slope: float
     cutoff: float
     range_ratio: float
     area: float
     steps: int
-    tol: float
 
     @property
     def combination(self) -> str:
         """The name of its (H, N) combination in paths, e.g. ``H0.8_N0.5``."""
         return f"H{self.hurst:g}_N{self.number:g}"
-
-    def record(self) -> dict:
-        """The settings as a flat mapping of plain values: the run file's ``config`` and what its
-        ``config_hash`` is made of."""
-        return dataclasses.asdict(self)
 
     def describe(self) -> str:
         """The run as logs and error messages name it."""

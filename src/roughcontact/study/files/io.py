@@ -32,7 +32,7 @@ def read_run(path, expected=None):
     ----------
     path : str or os.PathLike
         The run file.
-    expected : object with ``file_spec()``, optional
+    expected : roughcontact.study.config.records.RunRecord, optional
         The job record of the current configuration (a generated or adhesive run's
         :class:`~roughcontact.study.runs.jobs.JobSettings`, a
         :class:`~roughcontact.study.config.stickiness.StickinessRun`, a

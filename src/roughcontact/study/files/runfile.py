@@ -11,10 +11,10 @@ import dataclasses
 
 import numpy as np
 
-from ..config.axes import AXES
 
-__all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "RETRACT_VARIABLES",
-           "PULL_OFF_VARIABLES", "SCALARS", "AXIS_ATTRS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
+__all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "PATCH_VARIABLES", "FIELD_VARIABLES",
+           "FIELD_GROUP", "RETRACT_VARIABLES",
+           "PULL_OFF_VARIABLES", "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
            "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)
@@ -41,11 +41,24 @@ VARIABLES = {
     "loading_stiffness": Variable("f8", "loading tangent dF/dd along the plastic path (forward quotient, "
                                         "solver.rel_step); stiffness is the unloading one", "e_star * length"),
     "plastic_cells": Variable("i8", "number of grid cells that flowed (pressure at the hardness)", "1"),
+    "contact_patches": Variable("i8", "number of contact patches (edge-connected clusters of contact cells)", "1"),
+    "largest_patch_cells": Variable("i8", "number of grid cells of the largest contact patch", "1"),
 }
 #: variables of every run file
 RUN_VARIABLES = ("depth", "stiffness", "contact_area", "contact_cells", "iterations", "converged")
 #: further variables of a run with a hardness (elastic runs: loading stiffness = stiffness, no plastic cell)
 PLASTIC_VARIABLES = ("loading_stiffness", "plastic_cells")
+#: further variables of a run that counts its contact patches (``fields.patches``)
+PATCH_VARIABLES = ("contact_patches", "largest_patch_cells")
+#: the contact fields a run keeps at chosen loads (``fields.at``), one group ``fields/loadI`` per load
+#: (I the 0-based load index) over the contact's window (dimensions ``y``, ``x``), compressed
+FIELD_VARIABLES = {
+    "pressure": Variable("f8", "contact pressure p", "e_star"),
+    "gap": Variable("f8", "gap between the indenter and the deformed half-space (0 in contact, to the solver's tolerance)", "length"),
+    "contact": Variable("i1", "cell in contact (1) or not (0)", "1"),
+}
+#: the group of the fields kept at load *i* (0-based)
+FIELD_GROUP = "fields/load{index}"
 
 #: the force coordinate
 FORCE_ATTRS = {"long_name": "normal force F", "units": "e_star * length**2"}
@@ -137,15 +150,6 @@ SCALARS = {
     "seed": ("i8", "random seed of the surface", "1"),
 }
 
-def __getattr__(name: str):
-    """``AXIS_ATTRS``: attributes of the sweep axes (:data:`roughcontact.study.config.axes.AXES`, read
-    when asked) and of ``seed`` as coordinates of the merged files."""
-    if name == "AXIS_ATTRS":
-        return {**{a.name: {"long_name": a.long_name, "units": a.unit} for a in AXES.values()},
-                "seed": {"long_name": "random seed of the surface", "units": "1"}}
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
 def _put(nc, name: str, dtype: str, dims: tuple, values, attrs: dict) -> None:
     """One variable *name* of the open NetCDF file *nc*: its type, dimensions, values and attributes."""
     var = nc.createVariable(name, dtype, dims)
@@ -223,7 +227,7 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = No
         for name, value in scalars.items():
             dtype, long, unit = SCALARS[name]
             _put(nc, name, dtype, (), value, {"long_name": long, "units": unit})
-        for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES if v in out)):
+        for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES + PATCH_VARIABLES if v in out)):
             meta = VARIABLES[name]
             scale, unit = units.get(name, (1.0, meta.units))
             long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
@@ -237,5 +241,26 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = No
                 _put(nc, name, meta.dtype, (), out[name], _meta(meta))
         for name, (values, var_attrs) in extra.items():
             _put(nc, name, "f8", ("force",), values, var_attrs)
+        for index, kept in sorted(out.get("fields", {}).items()):   # fields.at: one group per kept load
+            _put_fields(nc, index, kept)
 
     provenance.write_netcdf(fill, path)
+
+
+def _put_fields(nc, index: int, kept: dict) -> None:
+    """The contact fields of load *index* (``kept``: the :data:`FIELD_VARIABLES` on the window, its
+    ``row_start``, ``column_start``, ``cell_size`` and ``force``) as the group :data:`FIELD_GROUP`."""
+    group = nc
+    for part in FIELD_GROUP.format(index=index).split("/"):
+        group = group.createGroup(part)
+    rows, cols = np.shape(kept["pressure"])
+    group.createDimension("y", rows)
+    group.createDimension("x", cols)
+    for name, meta in FIELD_VARIABLES.items():
+        var = group.createVariable(name, meta.dtype, ("y", "x"), zlib=True, complevel=4, shuffle=True)
+        var[:] = np.asarray(kept[name]).astype(meta.dtype)
+        var.setncatts(_meta(meta))
+    group.setncatts({"load_index": int(index), "force": float(kept["force"]), "row_start": int(kept["row_start"]),
+                     "column_start": int(kept["column_start"]), "cell_size": float(kept["cell_size"]),
+                     "comment": "the window of the grid holding every contact cell, 2 cells wider; "
+                                "row_start/column_start: its first cell on the run's grid"})

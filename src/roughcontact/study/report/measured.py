@@ -12,11 +12,13 @@ import math
 
 import numpy as np
 
+from ..analysis import not_modelled as unmodelled
+from ..analysis.measured_scorecard import MEASURED_SCORECARD_LEAD, measured_scorecard, range_note
 from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
 from ..config.settings import StudySettings
 
 __all__ = ["make_figures", "make_spectrum_figure", "draw_heights", "draw_spectrum", "draw_stiffness",
-           "draw_stiffness_figure", "stiffness_panels"]
+           "draw_stiffness_figure", "stiffness_panels", "run_measured_scorecard"]
 
 #: line styles of the models' predictions, in the order of the spectrum file's ``model`` coordinate
 #: (the registry's, :mod:`roughcontact.models.scorecard`), repeated if there are more models; one
@@ -88,7 +90,9 @@ def stiffness_panels(groups: dict, models: dict) -> list[tuple]:
 
 def draw_stiffness_panel(ax, groups: dict, models: dict, study: StudySettings, panel) -> None:
     """One panel of :func:`stiffness_panels` on *ax*: k(F) (N, N/m) of one surface, the mean over
-    the tiles (or seeds) with its band, Hertz for a sphere, and the models' predictions named."""
+    the tiles (or seeds) with its band, Hertz for a sphere, and the models' predictions named
+    (``(outside its range)`` where the scan lies outside the model's stated range,
+    :func:`roughcontact.study.analysis.measured_scorecard.outside_range`)."""
     kind, radius, names = panel
     ds = groups[kind]
     sub = ds.sel(radius=radius) if kind == "sphere" else ds
@@ -99,12 +103,17 @@ def draw_stiffness_panel(ax, groups: dict, models: dict, study: StudySettings, p
     if np.all(np.isfinite(sub["k_ci_low"].values)):
         ax.fill_between(force, sub["k_ci_low"].values, sub["k_ci_high"].values, color="0.5", alpha=0.3, lw=0)
     if names:
+        from ..analysis.measured_scorecard import outside_range, scan_values
+
         pred = models[kind].sel(radius=radius) if kind == "sphere" else models[kind]
         order = pred["model"].values.tolist()
+        scan = scan_values(models["spectrum"].attrs if "spectrum" in models else {})
         for model in names:
             i = order.index(model)
+            # a model whose stated range the scan lies outside of is named so (the scorecard's outside_range)
+            flag = " (outside its range)" if outside_range(model, scan) else ""
             ax.loglog(pred["force"].values, pred["stiffness"].sel(model=model).values, color=f"C{i % 10}",
-                      linestyle=LINE_STYLES[i % len(LINE_STYLES)], lw=1.1, label=model)
+                      linestyle=LINE_STYLES[i % len(LINE_STYLES)], lw=1.1, label=model + flag)
     if kind == "sphere":
         from ..config.measured import to_metres, to_pascals
 
@@ -174,3 +183,22 @@ def make_spectrum_figure(study, name: str, merged_file, output) -> None:
 
 def _save(fig, path) -> None:
     save_png(fig, path, dpi=130)
+
+
+def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv, out_html) -> None:
+    """``measured_scorecard`` rule: the scorecard of one scan as CSV and as an HTML page of the report."""
+    from ..files.io import read_groups, write_csv
+    from .tables import write_html_table
+
+    study = StudySettings.of(study)
+    predicted = read_groups(spectrum_file)
+    table = measured_scorecard(read_groups(merged_file), predicted, name=name,
+                               min_cells=study.fit.zeta.min_cells, fit=study.fit.zeta)
+    write_csv(table, out_csv)
+    spectrum = predicted.get("spectrum")
+    note = range_note(table, spectrum.attrs if spectrum is not None else {})
+    write_html_table(table, out_html, title=f"Model scorecard of the scan {name}",
+                     lead=f"{note} {MEASURED_SCORECARD_LEAD}", verdict_columns=(),
+                     first=("kind", "radius", "model", "rank", unmodelled.COLUMN, "outside_range", "max_rel_dev",
+                            "max_rel_dev_ci_low", "max_rel_dev_ci_high", "rms_rel_dev", "rms_rel_dev_ci_low",
+                            "rms_rel_dev_ci_high", "inside_band", "n_loads"))

@@ -4,7 +4,8 @@
 one Fig. 3 PNG into an HTML fragment (``results/summary.html``); the report's landing text
 (``workflow/report/workflow.rst``) inlines that fragment when the report holds it, so the
 verdict counts per claim, the crossover force against eq. 17, ζ(H) against eq. 13, the
-recommended model per sphere combination and Fig. 3 are on the first page, without a click.
+recommended model per sphere combination (with whether its grid error is measured,
+:func:`roughcontact.study.analysis.decision.grid_note`) and Fig. 3 are on the first page, without a click.
 Numbers are shown with four significant digits; the CSV files keep every digit.
 """
 from __future__ import annotations
@@ -13,6 +14,7 @@ import base64
 import html
 import math
 
+from ..analysis import decision
 from ..analysis.statistics import VERDICTS
 from ..files import provenance
 from .tables import DIGITS, VERDICT_COLOURS, stamp, verdict_cell, verdict_word
@@ -153,6 +155,8 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
              if "recommended" in models.columns else "rank 1: the smallest largest deviation max_rel_dev")
     parts.append(f"<p>Chosen by {html.escape(basis)}; the systematic deviation of k from the ensemble "
                  "below and above the crossover force (mean relative deviation, 95 % interval, verdict).</p>")
+    if len(models):
+        parts.append(f"<p>{html.escape(decision.grid_note(models))}</p>")
     rows = []
     for r in recommended_models(models):
         rows.append([_combination(r), f'<td class="model" style="{_CELL}"><b>{html.escape(str(r["model"]))}</b></td>',

@@ -113,7 +113,8 @@ TABLE_PAGES = {
                                      "verdicts. Every digit: results/crossover.csv."),
     "exponents": ("Local exponents", "The local exponent d ln k / d ln F along the load path per combination. "
                                      "Every digit: results/exponents.csv."),
-    "grid_error": ("Grid error", "The stiffness on grid.coarse against the fine grid at every load. "
+    "grid_error": ("Grid error", "The stiffness on grid.coarse against the study's grid at every load, and "
+                                 "the estimate of the study grid's error from it (grid_error_estimate). "
                                  "Every digit: results/grid_error.csv."),
     "pull_off": ("Pull-off", "The pull-off force of the adhesive runs over JKR's with the interval over seeds. "
                              "Every digit: results/adhesion/pull_off.csv."),

@@ -38,6 +38,7 @@ import numpy as np
 from ...bem import adhesion
 from ...bem.punch import contact_stiffness
 from ...errors import ConvergenceError, IndentError
+from ...models.paper import hertz_approach
 from ...models.rough_adhesion import jkr_critical_approach
 from .path import LoadPath
 from ..config.defaults import capped_tol
@@ -57,18 +58,12 @@ REFINE = 16
 
 
 def _reference_approach(s) -> float:
-    """``d_ref``: Hertz's approach at the largest load (a sphere; ``a³ = 3FR/(4E*)``, ``d = a²/R``)
-    plus three rms heights; a flat surface: six rms heights.
-
-    Written here, not as ``a = k/(2E*)`` of :func:`roughcontact.models.paper.hertz_stiffness`:
-    that is the same radius in exact arithmetic but differs in the last bit, and ``d_ref`` sets the
-    approach steps of the loading, so it would change every adhesive run's numbers (measured
-    2026-11-27: the retract force of a rough 65² sphere by 7e-9 relative, its pull-off by 9e-14)
-    and invalidate the finished runs' results."""
+    """``d_ref``: Hertz's approach at the largest load (a sphere;
+    :func:`roughcontact.models.paper.hertz_approach`) plus three rms heights; a flat surface: six
+    rms heights."""
     if s.kind == "flat":
         return 6.0 * s.h_rms
-    a = (3.0 * s.forces()[-1] * s.radius / (4.0 * s.e_star)) ** (1.0 / 3.0)
-    return a * a / s.radius + 3.0 * s.h_rms
+    return float(hertz_approach(s.forces()[-1], radius=s.radius, e_star=s.e_star)) + 3.0 * s.h_rms
 
 
 def adhesive_run(z: np.ndarray, s, *, name: str, progress=None) -> dict:

@@ -67,6 +67,10 @@ class PathSettings:
     edge_hint : str
         What to change when the contact reaches the edge of a free grid (after "lower
         <force_key> to <last good load> or below").
+    patches : bool
+        Count each load's contact patches (:data:`roughcontact.study.files.runfile.PATCH_VARIABLES`).
+    field_loads : tuple of int
+        Loads (0-based) whose contact fields are kept (:data:`~roughcontact.study.files.runfile.FIELD_VARIABLES`).
     """
 
     length: float
@@ -81,6 +85,8 @@ class PathSettings:
     edge_hint: str = "use more cells (grid.n) on a larger grid.length"
     hardness: float | None = None
     edge_contact: bool = False
+    patches: bool = False
+    field_loads: tuple = ()
 
 
 def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress=None, *,
@@ -104,8 +110,11 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     total = len(forces)
     cell = L**2 / z.size
     out = {name: np.zeros(total, dtype=runfile.VARIABLES[name].dtype)
-           for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if p.hardness is not None else ())}
+           for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if p.hardness is not None else ())
+           + (runfile.PATCH_VARIABLES if p.patches else ())}
     out["force"] = np.asarray(forces, dtype=float)
+    if p.field_loads:
+        out["fields"] = {}
 
     def record(i, state) -> str:
         _record(p, out, i, state, cell)
@@ -153,8 +162,8 @@ def path_settings(s, **where) -> PathSettings:
     (:meth:`~roughcontact.study.runs.jobs.JobSettings.arguments`, e.g. the hardness). *where*: the
     fields a job record does not hold (a measured run's tile ``length``, ``periodic``,
     ``edge_hint``, ``edge_contact``)."""
-    own = ({"length": s.length, "periodic": s.periodic, **s.arguments("solver")} if isinstance(s, JobSettings)
-           else {})
+    own = ({"length": s.length, "periodic": s.periodic, "patches": s.patches, "field_loads": s.field_loads,
+            **s.arguments("solver")} if isinstance(s, JobSettings) else {})
     return PathSettings(e_star=s.e_star, tol=s.tol, maxiter=s.maxiter, stiffness_method=s.stiffness_method,
                         rel_step=s.rel_step, name=s.describe(), force_key=f"forces.{s.kind}.to", **{**own, **where})
 
@@ -190,6 +199,12 @@ def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
     out["contact_area"][i] = cells * cell
     out["iterations"][i] = state.iterations
     out["converged"][i] = int(bool(state.converged))
+    if p.patches:
+        patches = bem.contact_patches(state.contact, periodic=p.periodic)
+        out["contact_patches"][i] = patches.count
+        out["largest_patch_cells"][i] = patches.largest
+    if i in p.field_loads:
+        out["fields"][i] = _fields(state, cell)
     if "loading_stiffness" in out:  # with a hardness: the loading tangent along the plastic path too
         try:
             loading = bem.stiffness(state, method="loading", rel_step=p.rel_step)
@@ -205,6 +220,17 @@ def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
             )
         out["loading_stiffness"][i] = loading
         out["plastic_cells"][i] = int(np.count_nonzero(state.plastic))
+
+
+def _fields(state, cell: float) -> dict:
+    """The pressure, gap and contact of *state* on the contact's window
+    (:func:`roughcontact.bem.patches.contact_window`), with where the window starts."""
+    from ...bem.patches import contact_window
+
+    rows, cols = contact_window(state.contact)
+    return {"pressure": state.pressure[rows, cols].copy(), "gap": state.gap()[rows, cols],
+            "contact": state.contact[rows, cols].copy(), "row_start": rows.start, "column_start": cols.start,
+            "cell_size": float(np.sqrt(cell)), "force": float(state.force)}
 
 
 def write_run(path, s: JobSettings, out: dict) -> None:

@@ -12,37 +12,32 @@ import math
 
 import numpy as np
 
-from ...bem import DEFAULT_MAXITER
 from ..config import axes
 from ..files import runfile
 from .naming import parse_combo
 from ..config.axes import kind_of
 from ..config.defaults import solver_maxiter
-from ..config.settings import StudySettings, force_grid
+from ..config.records import ForcePathRecord
+from ..config.settings import StudySettings
 
-__all__ = ["JobSettings", "job_settings", "options_of", "settings_from_wildcards"]
+__all__ = ["JobSettings", "job_settings", "nearest_loads", "options_of", "settings_from_wildcards"]
 
 
-@dataclasses.dataclass(frozen=True)
-class JobSettings:
-    """Everything one indentation run depends on.
+@dataclasses.dataclass(frozen=True, kw_only=True)
+class JobSettings(ForcePathRecord):
+    """Everything one generated run depends on: the job record
+    (:class:`~roughcontact.study.config.records.RunRecord`) of the indent job, its coarse
+    companion and an adhesive run.
 
-    Lengths are in the unit of ``length``; forces are given normalised, ``F/(E* L²)``.
+    Lengths are in the unit of ``length``; forces are given normalised, ``F/(E* L²)``. The grid
+    (``n``, ``length``), ``e_star``, the load path and the solver settings are the fields of
+    :class:`~roughcontact.study.config.records.ForcePathRecord`; this kind adds its surface.
 
     Attributes
     ----------
     hurst, radius, h_rms, seed :
         The run: Hurst exponent, body radius (``inf``: a nominally flat surface on the
         periodic half-space), rms roughness height, seed of the surface.
-    n, length, e_star :
-        Grid points per side, side length ``L``, effective modulus ``E*``.
-    force_from, force_to, force_count :
-        The log-spaced load path, ``F/(E* L²)``.
-    tol, maxiter :
-        Stopping tolerance and iteration limit of every contact solve of the run
-        (:func:`roughcontact.bem.solve`), the stiffness's extra solves included.
-    stiffness_method, rel_step :
-        How ``k = dF/dd`` is computed (:func:`roughcontact.bem.stiffness`).
     realization_of : int or None
         The finer grid whose surface this run presses, seen on its ``n × n`` grid
         (``grid.realization_of``; :func:`roughcontact.surfaces.self_affine`); ``None``: its own.
@@ -51,24 +46,20 @@ class JobSettings:
         the registry's order, under their configuration names and units (``hardness`` in units
         of ``E*``); each is also an attribute (``settings.rolloff``), the paper's value where
         it is not listed.
+    patches : bool
+        Whether every load also counts its contact patches (``fields.patches``).
+    field_loads : tuple of int
+        The loads (0-based, of the path) that keep their contact fields (``fields.at``).
     """
 
     hurst: float
     radius: float
     h_rms: float
     seed: int
-    n: int
-    length: float
-    e_star: float
-    force_from: float
-    force_to: float
-    force_count: int
-    tol: float
-    stiffness_method: str
-    rel_step: float
-    maxiter: int = DEFAULT_MAXITER
     options: tuple = ()
     realization_of: int | None = None
+    patches: bool = False
+    field_loads: tuple = ()
 
     def __getattr__(self, name: str):
         """The value of an optional axis (its paper value where :attr:`options` does not list it)."""
@@ -116,10 +107,6 @@ class JobSettings:
                 if spec.transform is not None and self.kind in spec.kinds
                 and not spec.at_paper(self.value(spec.name))]
 
-    def forces_normalized(self) -> np.ndarray:
-        """The load path ``F/(E* L²)``, log-spaced."""
-        return force_grid(self.force_from, self.force_to, self.force_count)
-
     def forces(self) -> np.ndarray:
         """The load path in force units, ``F = (F/(E* L²)) E* L²``."""
         return self.forces_normalized() * self.e_star * self.length**2
@@ -133,16 +120,23 @@ class JobSettings:
         """The settings as a flat mapping of plain values: what a run file's ``config_hash``
         and attributes are made of. Optional axes at the paper's setting are left out."""
         out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
-               if field.name not in ("options", "realization_of")}
-        if self.realization_of is not None:   # runs of a grid's own surfaces keep their hash
+               if field.name not in ("options", "realization_of", "patches", "field_loads")}
+        # each at its default is left out: runs of a grid's own surfaces, and runs that keep nothing
+        # more than their per-load numbers, keep their hash
+        if self.realization_of is not None:
             out["realization_of"] = self.realization_of
+        if self.patches:
+            out["patches"] = True
+        if self.field_loads:
+            out["field_loads"] = list(self.field_loads)
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
 
     def file_spec(self) -> runfile.RunFileSpec:
         """What this run's file must be (:func:`roughcontact.study.files.io.read_run`): the run file's
         variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
         H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
-        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS,
+                     *(runfile.PATCH_VARIABLES if self.patches else ()))
         dims = ("force",)
         if self.work_of_adhesion > 0:
             variables += (*runfile.RETRACT_VARIABLES, *runfile.PULL_OFF_VARIABLES)
@@ -182,7 +176,16 @@ def job_settings(study, run: dict) -> JobSettings:
         force_from=rng.start, force_to=rng.stop, force_count=rng.count,
         tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
         maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
-        realization_of=study.grid.realization_of)
+        realization_of=study.grid.realization_of, patches=study.fields.patches,
+        field_loads=nearest_loads(rng.normalized(), study.fields.at))
+
+
+def nearest_loads(forces, at) -> tuple:
+    """The indices (sorted, once each) of the loads of *forces* nearest, in ``log F``, to each of *at*."""
+    if not at:
+        return ()
+    log_f = np.log(np.asarray(forces, dtype=float))
+    return tuple(sorted({int(np.argmin(np.abs(log_f - np.log(f)))) for f in at}))
 
 
 def settings_from_wildcards(study, wildcards) -> JobSettings:

@@ -41,8 +41,9 @@ from ...errors import IndentError, InputFileError
 from ...surfaces.bodies import paraboloid
 from ..files import provenance, runfile
 from ..config.measured import LENGTH_UNITS, plain_unit, to_metres, to_newtons, to_pascals
-from .naming import force_grid, kind_of
+from .naming import kind_of
 from ..config.defaults import solver_maxiter
+from ..config.records import ForcePathRecord
 from ..config.settings import StudySettings, TopographyInput
 
 __all__ = ["MeasuredJob", "prepare_surface", "read_surface", "tile_count", "job_of", "run_job", "run_order",
@@ -130,9 +131,15 @@ def tile_count(path) -> int:
     return int(read_surface(path)[2]["tile_count"])
 
 
-@dataclasses.dataclass(frozen=True)
-class MeasuredJob:
-    """Everything one measured load path depends on (:func:`job_of`).
+@dataclasses.dataclass(frozen=True, kw_only=True)
+class MeasuredJob(ForcePathRecord):
+    """Everything one measured load path depends on (:func:`job_of`): the job record
+    (:class:`~roughcontact.study.config.records.RunRecord`) of a scan's tile or a spectrum's seed.
+
+    The grid (``n``, ``length``: a spectrum's; ``None`` for a scan, whose tile sets them),
+    ``e_star`` (``pressure_unit``), the load path ``F/(E* L²)`` with ``L`` the tile's (or grid's)
+    side and the solver settings are the fields of
+    :class:`~roughcontact.study.config.records.ForcePathRecord`; this kind adds its surface.
 
     Attributes
     ----------
@@ -141,18 +148,12 @@ class MeasuredJob:
         the seed.
     radius : float
         Sphere radius (``length_unit``); ``inf``: nominally flat.
-    e_star : float
-        Effective modulus (``pressure_unit``).
     length_unit, pressure_unit : str
         ``units.length`` and ``units.e_star``.
-    force_from, force_to, force_count :
-        The log-spaced load path, ``F/(E* L²)`` with ``L`` the tile's (or grid's) side.
-    tol, maxiter, stiffness_method, rel_step :
-        Solver settings (``solver``).
     tile : int or None
         Topography: the tile's side in cells (``None``: the whole square).
-    n, length, convention :
-        Spectrum: grid points per side, side (``length_unit``) and the table's convention.
+    convention : str
+        Spectrum: the table's convention.
     force_unit : str
         Unit of the forces in progress lines and messages (:data:`~roughcontact.study.config.measured.FORCE_UNITS`).
     """
@@ -161,19 +162,9 @@ class MeasuredJob:
     name: str
     index: int
     radius: float
-    e_star: float
     length_unit: str
     pressure_unit: str
-    force_from: float
-    force_to: float
-    force_count: int
-    tol: float
-    maxiter: int
-    stiffness_method: str
-    rel_step: float
     tile: int | None = None
-    n: int | None = None
-    length: float | None = None
     convention: str = "c2d"
     force_unit: str = "N"
 
@@ -194,8 +185,8 @@ class MeasuredJob:
         variables over ``force`` with ``force_normalized``, the ``config_hash`` of the job and
         its normalised force grid ``F/(E* L²)``."""
         return runfile.RunFileSpec(title=runfile.TITLE, variables=(*runfile.RUN_VARIABLES, "force", "force_normalized"),
-                                   dims=("force",), config=dataclasses.asdict(self), force_variable="force_normalized",
-                                   forces=force_grid(self.force_from, self.force_to, self.force_count))
+                                   dims=("force",), config=self.record(), force_variable="force_normalized",
+                                   forces=self.forces_normalized())
 
 
 def job_of(study, source: str, name: str, radius: float, index: int, *, force_unit: str = "N") -> MeasuredJob:
@@ -205,7 +196,7 @@ def job_of(study, source: str, name: str, radius: float, index: int, *, force_un
     study = StudySettings.of(study)
     rng = study.forces[kind_of(radius)]
     solver = study.solver
-    extra = ({"tile": study.tile} if source == "topography" else
+    extra = ({"tile": study.tile, "n": None, "length": None} if source == "topography" else
              {"n": study.grid.n, "length": study.grid.length,
               "convention": study.spectrum_entry(name).convention})
     return MeasuredJob(source=source, name=name, index=int(index), radius=float(radius),
@@ -261,7 +252,7 @@ def run_job(job: MeasuredJob, source_file, output) -> dict:
 
     z, length, periodic = job_heights(job, source_file)
     e = job.e_star
-    normalized = force_grid(job.force_from, job.force_to, job.force_count)
+    normalized = job.forces_normalized()
     forces = normalized * e * length**2
     where = "the scan's edge" if job.source == "topography" else "the grid's edge"
     settings = path_settings(
@@ -297,7 +288,7 @@ def _write_run(job: MeasuredJob, output, out: dict, normalized, length: float) -
                "contact_area_fraction": (out["contact_area"] / length**2,
                                          {"long_name": "A/L^2", "units": "1", "coordinates": "force_normalized"})},
         coordinates=("force_normalized",),
-        attrs=provenance.provenance_attrs(config=dataclasses.asdict(job), kind="measured " + job.kind,
+        attrs=provenance.provenance_attrs(config=job.record(), kind="measured " + job.kind,
                                           length=length, e_star=job.e_star, e_star_units=job.pressure_unit,
                                           units_length=unit, half_space=_half_space(job)))
 

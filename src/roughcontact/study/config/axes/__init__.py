@@ -27,6 +27,7 @@ import pkgutil
 from typing import Callable
 
 __all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES", "kind_of",
+           "coordinate_attrs",
            "paper_coordinates", "off_paper", "paper_setting", "paper_mask", "number", "nullable"]
 
 #: where an axis acts on a run: the roughness of the surface (a keyword of
@@ -195,6 +196,15 @@ def optional_axes() -> tuple[Axis, ...]:
 def schema_properties() -> dict:
     """``{name: schema entry}`` of every axis, for :func:`roughcontact.study.config.schema.load_schema`."""
     return {a.name: a.schema() for a in AXES.values()}
+
+
+def coordinate_attrs(name: str) -> dict:
+    """The NetCDF attributes (``long_name``, ``units``) of the coordinate *name* of a merged file:
+    a registered axis, or ``seed``; ``KeyError`` for any other."""
+    if name == "seed":
+        return {"long_name": "random seed of the surface", "units": "1"}
+    spec = axis(name)
+    return {"long_name": spec.long_name, "units": spec.unit}
 
 
 def paper_coordinates(length: float) -> dict:

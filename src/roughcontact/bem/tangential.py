@@ -1,0 +1,342 @@
+"""Tangential contact of a rigid indenter on an elastic half-space: full stick and partial slip.
+
+A normal state (:class:`~roughcontact.bem.ContactState`, pressure ``p`` on the contact set ``C``)
+is loaded by a tangential force ``Q`` along ``x`` (the grid's first axis) at fixed normal pressure.
+Stated simplifications (:mod:`roughcontact.bem.cerruti`): one traction component ``q_x``; the
+normal–tangential coupling neglected (the pressure does not change under ``Q``, ``u_x`` does not
+depend on ``p``): exact for elastically similar bodies and ``ν = 1/2``, the assumption of
+Mindlin (1949), Cattaneo (1938), Ciavarella (1998), Jäger (1998) and the MDR. The option of
+including the coupling is not offered (not built; see the guide page on tangential contact).
+
+* :func:`tangential_stiffness` — full stick: a uniform tangential displacement ``δ`` of ``C``,
+  ``K_t q = δ`` solved exactly on ``C`` (as :func:`roughcontact.bem.stiffness` solves the
+  flat punch with the normal kernel), ``k_t = Σ q Δ²/δ``; Mindlin's ``8Ga/(2 − ν)`` for a circle.
+* :func:`partial_slip` — Coulomb friction ``|q| ≤ μ p`` along a tangential load path
+  ``Q = f μP`` (``0 ≤ f < 1``), warm-started (:mod:`roughcontact.bem.slip`), with the stick and
+  slip zones, the tangential displacement ``δ_x(Q)`` and the tangent stiffness
+  ``k_t(Q) = dQ/dδ_x``: the full-stick stiffness of the stick zone (the slip zone's tractions
+  stay at ``μp`` under a small increment), Cattaneo–Mindlin's ``k_t(0)(1 − Q/μP)^(1/3)``.
+
+The Ciavarella–Jäger construction from a normal load path is
+:func:`roughcontact.bem.cj_superposition.ciavarella_jager`.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Sequence
+
+import numpy as np
+from scipy.sparse.linalg import cg
+
+from .._validate import check_finite_positive, is_finite_number
+from ..errors import ConvergenceError
+from .active_sets import _window_box, dense_limit
+from .cerruti import tangential_operator_for
+from .contact import DEFAULT_MAXITER, ContactState
+from .punch import punch_stiffness
+from .slip import slip_kernel
+
+__all__ = ["SlipState", "SlipPath", "check_poisson", "check_friction", "contact_tangential_stiffness",
+           "tangential_stiffness", "partial_slip"]
+
+
+def check_poisson(poisson) -> float:
+    """``ν`` as a float; ``ValueError`` unless a finite number with ``−1 < ν ≤ 1/2``."""
+    if not is_finite_number(poisson) or not -1.0 < poisson <= 0.5:
+        raise ValueError(f"poisson must be a Poisson ratio with -1 < poisson <= 0.5, got {poisson!r}")
+    return float(poisson)
+
+
+def check_friction(friction) -> float:
+    """``μ`` as a float; ``ValueError`` unless a finite number > 0."""
+    check_finite_positive("friction", friction)
+    return float(friction)
+
+
+def _elastic(state: ContactState) -> None:
+    if not isinstance(state, ContactState):
+        raise TypeError(f"state must be a ContactState, got {type(state).__name__}")
+    if state.hardness is not None:
+        raise ValueError("tangential contact needs an elastic state (hardness None)")
+
+
+def _window(contact: np.ndarray, operator, periodic: bool) -> tuple[slice, slice]:
+    if periodic:
+        return (slice(None), slice(None))
+    return _window_box(contact, operator)
+
+
+def contact_tangential_stiffness(contact: np.ndarray, *, length: float, e_star: float, poisson: float,
+                                 periodic: bool, tol: float) -> float:
+    """Full-stick ``k_t = Q/δ_x`` of the contact set *contact* (bool, ``n × n``; force/length).
+
+    The rigid flat punch of :func:`roughcontact.bem.punch.punch_stiffness` with the tangential
+    kernel (:mod:`roughcontact.bem.cerruti`): ``K_t q = 1`` on the set, ``k_t = Δ² Σ q``. 0 without
+    contact; ``inf`` for a periodic grid in full contact. *tol*: the relative residual, keyword.
+    """
+    poisson = check_poisson(poisson)
+    n = contact.shape[0]
+    if not contact.any():
+        return 0.0
+    if periodic and contact.all():
+        return math.inf
+    operator = tangential_operator_for(n, float(length), float(e_star), poisson, bool(periodic))
+    footprint = contact[_window(contact, operator, periodic)]
+    return punch_stiffness(operator, footprint, tol) * (length / n) ** 2
+
+
+def tangential_stiffness(state: ContactState, *, poisson: float, tol: float | None = None) -> float:
+    """Full-stick tangential stiffness ``k_t`` of a solved normal state (force/length).
+
+    Parameters
+    ----------
+    state : ContactState
+        Elastic normal state; its contact set sticks.
+    poisson : float
+        Poisson ratio ``ν`` of the half-space (``E*`` is ``state.e_star``), keyword-only.
+    tol : float, optional
+        Relative residual of the solve (default ``state.tol``), keyword-only.
+
+    Returns
+    -------
+    float
+        ``k_t`` (force/length): Mindlin's ``8Ga/(2 − ν) = 2E*a · 2(1 − ν)/(2 − ν)`` for a circle.
+    """
+    _elastic(state)
+    tol = state.tol if tol is None else tol
+    check_finite_positive("tol", tol)
+    return contact_tangential_stiffness(state.contact, length=state.length, e_star=state.e_star,
+                                        poisson=poisson, periodic=state.periodic, tol=tol)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class SlipState:
+    """Partial slip at one tangential force.
+
+    Attributes
+    ----------
+    force : float
+        Tangential force ``Q = Σ q Δ²`` (force unit).
+    fraction : float
+        ``Q/(μP)``.
+    displacement : float
+        Rigid tangential displacement ``δ_x`` of the indenter (length unit; for a periodic
+        half-space relative to the mean surface displacement).
+    traction : numpy.ndarray
+        ``(n, n)`` tangential traction ``q_x``, ``|q| ≤ μp`` (force/length²).
+    stick, slip : numpy.ndarray
+        ``(n, n)`` bool: contact cells with ``|q| < μp`` and with ``|q| = μp``.
+    stiffness : float
+        Tangent ``k_t(Q) = dQ/dδ_x`` (force/length): the full-stick stiffness of ``stick``;
+        ``nan`` when not asked for.
+    iterations : int
+        Influence products spent on this load.
+    converged : bool
+    error : float
+        Relative violation of the stick–slip conditions (:mod:`roughcontact.bem.slip`).
+    """
+
+    force: float
+    fraction: float
+    displacement: float
+    traction: np.ndarray
+    stick: np.ndarray
+    slip: np.ndarray
+    stiffness: float
+    iterations: int
+    converged: bool
+    error: float
+    cell_area: float
+
+    @property
+    def stick_area(self) -> float:
+        """Area of the stick zone (length²)."""
+        return float(np.count_nonzero(self.stick)) * self.cell_area
+
+    @property
+    def slip_area(self) -> float:
+        """Area of the slip zone (length²)."""
+        return float(np.count_nonzero(self.slip)) * self.cell_area
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class SlipPath:
+    """A tangential load path at fixed normal pressure (:func:`partial_slip`).
+
+    Attributes
+    ----------
+    normal : ContactState
+        The normal state (normal force ``P = normal.force``).
+    friction, poisson : float
+        ``μ`` and ``ν``.
+    full_stick_stiffness : float
+        ``k_t(0)`` (force/length).
+    states : tuple of SlipState
+        One per requested fraction, in the order given.
+    """
+
+    normal: ContactState
+    friction: float
+    poisson: float
+    full_stick_stiffness: float
+    states: tuple[SlipState, ...]
+
+    @property
+    def forces(self) -> np.ndarray:
+        """``Q`` per load (force unit)."""
+        return np.array([s.force for s in self.states])
+
+    @property
+    def displacements(self) -> np.ndarray:
+        """``δ_x`` per load (length unit)."""
+        return np.array([s.displacement for s in self.states])
+
+    @property
+    def stiffnesses(self) -> np.ndarray:
+        """``k_t(Q)`` per load (force/length)."""
+        return np.array([s.stiffness for s in self.states])
+
+    @property
+    def stick_areas(self) -> np.ndarray:
+        """Stick area per load (length²)."""
+        return np.array([s.stick_area for s in self.states])
+
+
+def partial_slip(state: ContactState, fractions: Sequence[float], *, friction: float, poisson: float,
+                 tol: float | None = None, maxiter: int = DEFAULT_MAXITER,
+                 stiffness: bool = True) -> SlipPath:
+    """Cattaneo–Mindlin partial slip of a normal state along ``Q = f μP``.
+
+    Parameters
+    ----------
+    state : ContactState
+        Elastic normal state (pressure ``p``, force ``P``), held fixed.
+    fractions : sequence of float
+        ``f = Q/(μP)``, each ``0 ≤ f < 1``, nondecreasing (a monotone loading path; each load
+        warm-starts from the previous one).
+    friction : float
+        Coulomb coefficient ``μ > 0``, keyword-only.
+    poisson : float
+        ``ν`` of the half-space, ``−1 < ν ≤ 1/2``, keyword-only.
+    tol : float, optional
+        Relative violation of the stick–slip conditions accepted (default ``state.tol``), and the
+        residual of the stiffness solves; keyword-only.
+    maxiter : int
+        Influence products allowed per load, keyword-only.
+    stiffness : bool
+        Compute ``k_t(Q)`` of every load (one full-stick solve on the stick zone each),
+        keyword-only.
+
+    Returns
+    -------
+    SlipPath
+
+    Raises
+    ------
+    ConvergenceError
+        A load whose conditions are not met within ``maxiter`` products.
+    """
+    _elastic(state)
+    friction = check_friction(friction)
+    poisson = check_poisson(poisson)
+    tol = state.tol if tol is None else tol
+    check_finite_positive("tol", tol)
+    fractions = np.asarray(fractions, dtype=float).reshape(-1)
+    if not np.all(np.isfinite(fractions)) or np.any(fractions < 0) or np.any(fractions >= 1):
+        raise ValueError(f"fractions must be finite with 0 <= f < 1, got {fractions.tolist()!r}")
+    if np.any(np.diff(fractions) < 0):
+        raise ValueError("fractions must be nondecreasing (a monotone tangential load path)")
+    n = state.heights.shape[0]
+    operator = tangential_operator_for(n, state.length, state.e_star, poisson, state.periodic)
+    window = _window(state.contact, operator, state.periodic)
+    footprint = state.contact[window]
+    cells = np.flatnonzero(footprint)
+    bound = friction * state.pressure[window].reshape(-1)[cells]
+    apply = _influence(operator, footprint, cells)
+    k0 = contact_tangential_stiffness(state.contact, length=state.length, e_star=state.e_star,
+                                      poisson=poisson, periodic=state.periodic, tol=tol)
+    q = np.zeros(cells.size)  # the first warm start is then q ∝ p
+    results = []
+    for fraction in fractions:
+        total = fraction * bound.sum()
+        if fraction == 0.0 or not cells.size:
+            q_cells, slip, delta, spent, error = np.zeros(cells.size), np.zeros(cells.size, bool), 0.0, 0, 0.0
+            k = k0
+        else:
+            # feasible warm start: the previous tractions, raised towards μp to the new force
+            room = bound - q
+            start = q + (total - q.sum()) * room / room.sum()
+            solution = slip_kernel(apply, bound, total, start, tol=tol, maxiter=maxiter)
+            if not solution.converged:
+                raise ConvergenceError(f"partial slip at Q/(mu P) = {fraction:g} did not converge in "
+                                       f"{maxiter} products (error {solution.error:.3g})")
+            q_cells, slip, delta = solution.traction, solution.slip, solution.displacement
+            spent, error = solution.iterations, solution.error
+            k = math.nan
+            if stiffness:
+                stick_window = np.zeros(footprint.shape, dtype=bool)
+                stick_window.reshape(-1)[cells[~slip]] = True
+                k = _stick_stiffness(apply, operator, stick_window, ~slip, tol) * state.cell_area
+        q = q_cells
+        results.append(_state(state, window, cells, q_cells, slip, fraction, friction, delta, k, spent, error))
+    return SlipPath(normal=state, friction=friction, poisson=poisson, full_stick_stiffness=k0,
+                    states=tuple(results))
+
+
+class _DenseInfluence:
+    """``v ↦ K v`` by a dense influence matrix on the contact cells, restrictable to a subset."""
+
+    def __init__(self, matrix):
+        self.matrix = matrix
+
+    def __call__(self, values):
+        return self.matrix @ values
+
+    def restrict(self, cells):
+        return self.matrix[np.ix_(cells, cells)].__matmul__
+
+
+def _influence(operator, footprint, cells):
+    """``v ↦ K v`` on the flat contact *cells* of the window *footprint*: dense or by FFT."""
+    if cells.size <= dense_limit(operator):
+        return _DenseInfluence(operator.influence_matrix(*np.unravel_index(cells, footprint.shape)))
+    field = np.zeros(footprint.shape)
+    flat = field.reshape(-1)
+
+    def apply(values):
+        flat[cells] = values
+        return operator(field).reshape(-1)[cells]
+
+    return apply
+
+
+def _stick_stiffness(apply, operator, stick_window, stick, tol) -> float:
+    """``Σ q`` of ``K q = 1`` on the stick cells (multiply by ``Δ²``): on the dense matrix's
+    submatrix when there is one, else :func:`~roughcontact.bem.punch.punch_stiffness`."""
+    if not stick.any():
+        return 0.0
+    if isinstance(apply, _DenseInfluence):
+        matrix = apply.matrix[np.ix_(stick, stick)]
+        ones = np.ones(matrix.shape[0])
+        solution, info = cg(matrix, ones, x0=ones / matrix[0, 0], rtol=tol, atol=0.0,
+                            maxiter=10 * ones.size + 100)
+        if info != 0:
+            raise ConvergenceError(f"the stick zone's stiffness solve did not converge in {info} iterations")
+        return float(solution.sum())
+    return punch_stiffness(operator, stick_window, tol)
+
+
+def _state(normal, window, cells, q_cells, slip, fraction, friction, delta, k, spent, error) -> SlipState:
+    n = normal.heights.shape[0]
+    traction = np.zeros((n, n))
+    stick = np.zeros((n, n), dtype=bool)
+    slipping = np.zeros((n, n), dtype=bool)
+    rows, cols = np.unravel_index(cells, traction[window].shape)
+    for target, values in ((traction, q_cells), (stick, ~slip), (slipping, slip)):
+        target[window][rows, cols] = values  # target[window] is a view: the window is a basic slice
+    force = float(q_cells.sum()) * normal.cell_area
+    return SlipState(force=force, fraction=float(fraction), displacement=delta, traction=traction,
+                     stick=stick, slip=slipping, stiffness=k, iterations=spent, converged=True,
+                     error=error, cell_area=normal.cell_area)

@@ -1,0 +1,51 @@
+"""The local exponents' table file and figure (the ``exponents`` rule): what
+:func:`roughcontact.study.analysis.exponents.exponent_table` measures, written for the report."""
+from __future__ import annotations
+
+import logging
+
+from ..analysis.exponents import exponent_table
+from .plotting import pyplot, save_png
+
+__all__ = ["run_exponents", "curves", "exponents_figure"]
+
+log = logging.getLogger("roughcontact.study.analysis.exponents")
+
+
+def run_exponents(study, stiffness_nc, out_csv, out_png):
+    """``exponents`` rule: stiffness.nc -> exponents.csv (local exponents with intervals) and a figure."""
+    from ..files.io import read_groups, write_csv
+
+    table = exponent_table(read_groups(stiffness_nc), study)
+    write_csv(table, out_csv)
+    exponents_figure(table, out_png)
+    log.info("local exponents: %d rows", len(table))
+
+
+def curves(table, kind: str) -> list:
+    """``(label, rows)`` of every combination of one surface kind in *table*, for the figure; the
+    label names H and the axes that vary (a flat surface has no radius and no body exponent)."""
+    sub = table[table["kind"] == kind].dropna(axis=1, how="all")
+    keys = [c for c in sub.columns if c not in ("kind", "force", "local_exponent", "ci_low", "ci_high")]
+    return [(", ".join(f"{k} {v:g}" for k, v in zip(keys, values) if sub[k].nunique() > 1 or k == "hurst"), rows)
+            for values, rows in sub.groupby(keys, sort=True)]
+
+
+def exponents_figure(table, path) -> None:
+    """Local exponents ``d ln k/d ln F`` with their 95 % bands, one panel per surface kind."""
+    plt = pyplot()
+    kinds = sorted(set(table["kind"])) if len(table) else []
+    fig, axes = plt.subplots(1, max(1, len(kinds)), figsize=(5.5 * max(1, len(kinds)), 4), squeeze=False)
+    for ax, kind in zip(axes[0], kinds):
+        for label, curve in curves(table, kind):
+            line = ax.semilogx(curve["force"], curve["local_exponent"], "o-", ms=3, label=label)[0]
+            ax.fill_between(curve["force"], curve["ci_low"], curve["ci_high"], color=line.get_color(), alpha=0.2)
+        for hurst in sorted(set(table.loc[table["kind"] == kind, "hurst"])):
+            ax.axhline(1 / (hurst + 1), ls=":", color="0.5", lw=0.8)
+        ax.axhline(1.0, ls="--", color="0.3", lw=0.8)
+        ax.set(xlabel="F / (E* L²)", ylabel="d ln k / d ln F", title=f"{kind}: local exponents (95 % band)")
+        ax.legend(fontsize=6)
+    if not kinds:
+        axes[0][0].text(0.5, 0.5, "no resolved window", ha="center")
+    fig.tight_layout()
+    save_png(fig, path)

@@ -1,0 +1,121 @@
+"""The model scorecard's page, table files and figures (the ``models`` rule): what
+:func:`roughcontact.study.analysis.scorecard.scorecard` measures, written for the report."""
+from __future__ import annotations
+
+import logging
+
+import numpy as np
+
+from ...models import scorecard as registry
+from ..analysis import decision
+from ..analysis import not_modelled as unmodelled
+from ..analysis.scorecard import scorecard
+from ..config import axes
+from ..config.settings import StudySettings
+from ..files import provenance
+from ..runs import naming as runs
+from .plotting import pyplot, save_png
+from .tables import write_html_table
+
+__all__ = ["scorecard_lead", "scorecard_figure", "run_models"]
+
+log = logging.getLogger("roughcontact.study.analysis.scorecard")
+
+
+def scorecard_lead(table=None) -> str:
+    """The lead paragraph of the scorecard page of the report (the registered models' summaries,
+    :data:`roughcontact.study.analysis.decision.RULE` and, given the *table*, whether its grid error is measured)."""
+    summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
+                          for model in registry.models().values())
+    optional = ", ".join(a.name for a in axes.optional_axes())
+    grid = "" if table is None else decision.grid_note(table) + " "
+    return (f"{decision.RULE} {grid}"
+            "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
+            "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
+            "mean, with its 95 % bootstrap-over-seeds interval, rms_rel_dev the rms of the same "
+            "deviations; rank orders the scored rows by max_rel_dev alone (rank 1 the smallest; the recommended model is the rule's, above); paper_setting says whether every "
+            f"optional axis ({optional}) is at the paper's value; not_modelled names the optional axes, with "
+            "their values, at which the combination is off the paper's value and which the model does not "
+            "model (its prediction ignores them; each model's modelled axes follow its summary at the end): such a "
+            "row keeps its deviations but is not scored (no rank, every verdict untested: not modelled); "
+            "inside_band the fraction of those loads where the model lies inside the ensemble's band; "
+            "systematic_low and systematic_high the mean deviation below and above the crossover force (eq. 17), weighted by the inverse variance of the "
+            "ensemble mean, with its interval and verdict on 0 (differs: a significant systematic deviation). "
+            "With grid.coarse (the same surfaces on a coarser grid): grid_error_max the largest grid error "
+            "estimate over those loads (Richardson's from |k_coarse/k_BEM - 1|, the measured order and a safety "
+            "factor; results/grid_error.csv), grid_resolved the fraction of loads where it is at "
+            "most half the band, inside_band_total the fraction inside the band widened by the grid error, and "
+            "the *_total_verdict columns the systematic verdicts with the grid error added to the interval "
+            "(differs: a model error). outside_range names why a combination lies outside the model's stated range "
+            "of validity (such a row is flagged, keeps its deviations and rank, and is never recommended); "
+            "decision_score is S, difference_ci_low/high the paired interval of S - S_recommended, "
+            "grid_error_measured whether S includes a measured grid error, grid_error_note why not (the "
+            f"grid-error columns are then NaN). {summaries}. models.csv holds every digit.")
+
+
+def scorecard_figure(path, label: str, curve, table) -> None:
+    """The figure of one sphere combination: every model's ``k_model/k_BEM − 1`` against the load,
+    in the ensemble's band (widened by the grid error where measured)."""
+    plt = pyplot()
+    force = curve["force_normalized"].values
+    shown = curve["resolved"].values.astype(bool)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    if "grid_error" in curve:
+        g = np.abs(curve["grid_error"].values)
+        ax.fill_between(force, -np.sqrt(curve["band_low"].values ** 2 + g ** 2),
+                        np.sqrt(curve["band_high"].values ** 2 + g ** 2), color="0.93",
+                        label="band and grid error (grid.coarse)")
+    ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
+    ax.axhline(0, color="0.4", lw=0.8)
+    for name in registry.models():
+        if name in curve:
+            mark = table[(table["combination"] == label) & (table["model"] == name)]
+            text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
+            missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
+            if missing:                      # not scored: dashed, the axes it ignores named
+                text += ", not modelled: " + missing
+            if len(mark) and "decision" in mark and mark["decision"].iloc[0] in ("recommended", "tied"):
+                text += " ★" if mark["decision"].iloc[0] == "recommended" else " ≈"
+            ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
+                        label=name + text)
+    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1",
+           title=label + ("" if "grid_error" in curve else " (grid error not measured)"))
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    save_png(fig, path)
+
+
+def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures, grid_error_csv=None):
+    """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
+    per combination) and one figure per elastic sphere combination (*figures*, in the order of
+    :func:`roughcontact.study.runs.naming.sphere_names` with ``adhesive=False``); *grid_error_csv*: ``grid_error.csv`` of the
+    study's companion on ``grid.coarse`` (or ``None``)."""
+    import pandas as pd
+
+    from ..files.io import read_groups, write_csv, write_groups
+
+    study = StudySettings.of(study)
+    grid_error = pd.read_csv(grid_error_csv) if grid_error_csv else None
+    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error)
+    attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
+                                        bootstrap_over="seeds", forces="F/(E* L^2)")
+    write_csv(table, out_csv)
+    write_groups(out_nc, curves, attrs)
+    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(table),
+                     above=decision.matrix_html(table, list(registry.models())),
+                     verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
+                                      "systematic_low_total_verdict", "systematic_high_total_verdict"),
+                     first=("combination", "model", "decision", "tied_models", "decision_score", "difference_ci_low",
+                            "difference_ci_high", "rank", unmodelled.COLUMN, decision.OUTSIDE, "max_rel_dev", "max_rel_dev_ci_low",
+                            "max_rel_dev_ci_high", "rms_rel_dev", "inside_band", "inside_band_total",
+                            "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
+                            "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",
+                            "systematic_high_total_verdict", "grid_error_measured", "n_loads"))
+    names = runs.sphere_names(study, adhesive=False)
+    if len(names) != len(figures):
+        raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
+    for label, path in zip(names, figures):
+        if label not in curves:
+            raise ValueError(f"no sphere combination {label} in {stiffness_nc} for the figure {path}")
+        scorecard_figure(path, label, curves[label], table)
+    log.info("scorecard:\n%s", table.to_string() if len(table) else "(no sphere runs)")
