@@ -150,6 +150,7 @@ def main(argv=None) -> int:
         runs_done = max(p.stat().st_mtime for p in (workdir / "results/runs").rglob("*.nc")) - tick
         report_seconds, _ = snakemake(workdir, configfile, "--report", "results/report.html", *batch)
         jobs = job_table(workdir)
+        coarse_jobs = len(list((workdir / "results/benchmarks/indent_coarse").glob("*.tsv")))
     finally:
         if args.keep is None:
             shutil.rmtree(workdir, ignore_errors=True)
@@ -161,7 +162,8 @@ def main(argv=None) -> int:
           f"load average (1, 5, 15 min) before {', '.join(f'{x:.1f}' for x in load_before)}, "
           f"after {', '.join(f'{x:.1f}' for x in load_after)}")
     if size is not None:
-        print(f"problem: {size['runs']} runs on {size['n']}² (loads: {size['loads']}), {len(jobs)} indent jobs")
+        print(f"problem: {size['runs']} runs on {size['n']}² (loads: {size['loads']}), {len(jobs)} indent jobs"
+              + (f" and {coarse_jobs} indent_coarse jobs (the grid error's companion runs)" if coarse_jobs else ""))
     header = f"{'':>38} {'wall s':>8} {'/ serial':>9} {'CPU s':>8} {'/ serial':>9}"
     print(header)
     print("-" * len(header))
