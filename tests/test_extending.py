@@ -32,7 +32,7 @@ ROOT = Path(__file__).resolve().parents[1]
 AXIS, MODEL, CLAIM = "plateau", "smooth_body", "x"
 
 #: two sphere combinations (two radii), one H and h_rms, on a small grid
-BASE = {"grid": {"n": 65, "length": 1.0}, "e_star": 1.0, "hurst": [0.7], "radius": [0.5, 1.0],
+BASE = {"grid": {"n": 65, "length": 1.0, "coarse": None}, "e_star": 1.0, "hurst": [0.7], "radius": [0.5, 1.0],
         "h_rms": [2.0e-2], "seeds": 2,
         "forces": {"sphere": {"from": 1.0e-5, "to": 1.0e-2, "count": 8}},
         "solver": {"tol": 1.0e-8, "stiffness": "punch"},
