@@ -386,9 +386,14 @@ def test_seeded_sample_through_snakemake_dry_run(tmp_path):
         if kind == "accepted":
             assert code == 0, f"{d.name}: snakemake -n failed on an accepted config\n{out}"
             assert printed == [], f"{d.name}: snakemake -n rejected an accepted config: {printed}"
-            planned = re.search(r"^indent\s+(\d+)$", out, re.MULTILINE)
+            # one indent job per combination and block of jobs.batch seeds (rules indent_seeds0_5, ...)
+            table = out.split("Job stats:", 1)[-1].split("\n\n", 1)[0]   # the first table (a dry run prints two)
+            planned = re.findall(r"^indent(?:_seeds\d+_\d+)?\s+(\d+)$", table, re.MULTILINE)
             assert planned, f"{d.name}: no indent jobs planned\n{out}"
-            assert int(planned.group(1)) == check_accepted(result), f"{d.name}: indent jobs != runs\n{out}"
+            count = check_accepted(result)
+            blocks = runs.seed_blocks(result["seeds"], result["jobs"]["batch"])
+            expected = count // len(result["seeds"]) * len(blocks)
+            assert sum(map(int, planned)) == expected, f"{d.name}: indent jobs != combinations x blocks\n{out}"
         else:
             assert code != 0, f"{d.name}: snakemake -n accepted {result!r}"
             assert printed == [result], f"{d.name}: expected {result!r}, got\n{out}"

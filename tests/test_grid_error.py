@@ -180,11 +180,13 @@ def test_grid_coarse_adds_a_coarse_run_per_run(tmp_path):
     with_coarse, without = _dry_dirs(tmp_path, 33), _dry_dirs(tmp_path, None)
     (rc1, out1), (rc2, out2) = dry_run(ROOT / "Snakefile", "c.yaml", [with_coarse, without])
     assert rc1 == 0 and rc2 == 0, out1[-2000:] + out2[-2000:]
-    jobs = runs.runs(config.study_settings(config.load_config(with_coarse / "c.yaml")))
-    spheres = [job for job in jobs if job["kind"] == "sphere"]
-    assert _count(out1, "indent_coarse") == len(spheres), out1[-3000:]
+    study = config.study_settings(config.load_config(with_coarse / "c.yaml"))
+    blocks = runs.seed_blocks(study.seeds, study.jobs.batch)
+    spheres = [combo for combo in runs.combinations(study) if combo["kind"] == "sphere"]
+    planned = sum(_count(out1, f"indent_coarse_{b.name}") for b in blocks)
+    assert planned == len(spheres) * len(blocks), out1[-3000:]
     assert _count(out1, "grid_error") == 1, "one grid error table"
-    assert _count(out2, "indent_coarse") == 0, "no coarse runs without grid.coarse"
+    assert sum(_count(out2, f"indent_coarse_{b.name}") for b in blocks) == 0, "no coarse runs without grid.coarse"
 
 
 def _count(out: str, rule: str) -> int:

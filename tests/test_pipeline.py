@@ -361,17 +361,20 @@ def test_failed_job_names_parameters_and_leaves_no_file(tmp_path):
 
 
 def test_failing_jobs_through_snakemake_keep_going(tmp_path):
-    """maxiter = 1: every solve stops unconverged. Each job fails with its
-    parameters and a remedy, --keep-going tries them all, nothing is written."""
+    """maxiter = 1: every solve stops unconverged. Each job (a combination's seeds, jobs.batch)
+    stops at its first run and fails in one console line naming the run, the remedy and its log,
+    which has the traceback; --keep-going tries them all, nothing is written."""
     proc = _snakemake(["--configfile", str(TINY), "--config", "solver={tol: 1.0e-8, stiffness: punch, maxiter: 1}",
                        "--cores", "2", "--keep-going"], tmp_path)
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0
     cfg = config.resolve_config(config.load_config(TINY))
-    n_runs = len(runs.runs(cfg))
-    assert out.count("did not converge") >= n_runs
-    assert "H = 0.8, R = inf (flat, periodic), h_rms = 0.02, seed = 1, n = 65" in out
-    assert "raise solver.maxiter" in out
-    logs = list((tmp_path / "logs/indent").glob("*.log"))
-    assert len(logs) == n_runs and all("FAILED" in p.read_text() for p in logs)
+    n_jobs = len(runs.combinations(cfg)) * len(runs.seed_blocks(cfg["seeds"], cfg["jobs"]["batch"]))
+    failed = [line for line in out.splitlines() if line.startswith("Error in rule indent")]
+    assert len(failed) == n_jobs, "one line per failed job:\n" + out[-3000:]
+    line = next(line for line in failed if "H = 0.8, R = inf (flat, periodic), h_rms = 0.02, seed = 0, n = 65" in line)
+    assert "did not converge" in line and "raise solver.maxiter" in line, line
+    log = tmp_path / line.rsplit("(log: ", 1)[1].rstrip(")")
+    assert "Traceback" in log.read_text() and "FAILED" in log.read_text(), "the details in the run's log"
+    assert "CalledProcessError" not in out, "Snakemake's own lines on the exit status left out (quiet console)"
     assert not list(tmp_path.rglob("*.nc")) and not list(tmp_path.rglob(".*tmp*"))

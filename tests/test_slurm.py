@@ -50,6 +50,7 @@ TINY = {
     "solver": {"tol": 1e-8, "stiffness": "punch"},
     "fit": {"zeta": {"min_cells": 5, "max_area_fraction": 0.1},
             "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 5.0}},
+    "jobs": {"batch": 1},   # one SLURM job per run (the setting for clusters), run by its seed wildcard
 }
 
 

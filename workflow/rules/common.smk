@@ -62,6 +62,13 @@ BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_seed{seed}.tsv"
 COARSE_RUN_PATTERN = "results/indent_coarse/{combo}/seed{seed}.nc"
 COARSE_LOG_PATTERN = "logs/indent_coarse/{combo}_seed{seed}.log"
 COARSE_BENCHMARK_PATTERN = "results/benchmarks/indent_coarse/{combo}_seed{seed}.tsv"
+# ... of an indent job of several runs (jobs.batch > 1): one benchmark per job, "{block}" its
+# seeds (e.g. seeds0_5); the run files and logs stay one per run
+BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_{block}.tsv"
+COARSE_BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent_coarse/{combo}_{block}.tsv"
+# The runs of a combination go to jobs in blocks of jobs.batch seeds (1: a job per run).
+INDENT_BATCH = STUDY.jobs.batch
+INDENT_BLOCKS = study_runs.seed_blocks(STUDY.seeds, INDENT_BATCH)
 FIGURE_DIR = "results/figures"
 CAPTION_DIR = "../report"  # relative to workflow/rules/
 
@@ -125,6 +132,47 @@ def grid_error_table(wildcards):
     return rules.grid_error.output.csv if COARSE is not None else []
 
 
+# A quiet console (profiles/default: --quiet rules) hides Snakemake's block of a failed job too:
+# every failed job is one line instead. A local indent job's script prints its own (the run's
+# error and its log), so Snakemake's block and its three lines on the script's exit status 1 are
+# left out; any other failed job (another rule, a job the scheduler ended) is its rule, Snakemake's
+# message and its logs on one line. Without --quiet rules nothing changes.
+def _one_line_failures():
+    from snakemake.logging import LogEvent, logger as snakemake_logger
+    from snakemake.settings.enums import Quietness
+
+    settings = getattr(workflow, "output_settings", None)
+    if Quietness.RULES not in (getattr(settings, "quiet", None) or ()):
+        return
+
+    def one_line(record):
+        text = str(record.msg)
+        if (
+            "CalledProcessError" in text
+            and ".indent.py' returned non-zero exit status 1." in text
+        ):
+            return False
+        if getattr(record, "event", None) != LogEvent.JOB_ERROR:
+            return True
+        name, message = getattr(record, "rule_name", "?"), getattr(
+            record, "rule_msg", None
+        )
+        if str(name).startswith("indent") and message is None:
+            return False
+        logs = ", ".join(str(log) for log in getattr(record, "log", None) or ())
+        where = " ".join(("Error in rule", str(name)))
+        record.msg = f"{where}: {message or 'failed'}" + (
+            f" (log: {logs})" if logs else ""
+        )
+        record.event = None  # a plain line, which --quiet rules lets through
+        return True
+
+    snakemake_logger.addFilter(one_line)
+
+
+_one_line_failures()
+
+
 # Scheduler resources of one indent job; both grow with the attempt: a job killed over a
 # limit is retried with more.
 def indent_mem_mb(wildcards, attempt):
@@ -133,6 +181,24 @@ def indent_mem_mb(wildcards, attempt):
 
 def indent_runtime(wildcards, attempt):
     return study_runs.indent_resources(STUDY)["runtime"] * attempt
+
+
+def batch_runtime(runs):
+    """The runtime of an indent job of *runs* runs (minutes), growing with the attempt."""
+    return (
+        lambda wildcards, attempt: study_runs.indent_resources(STUDY, runs)["runtime"]
+        * attempt
+    )
+
+
+def batch_settings(study, seeds):
+    """The params of an indent job of *seeds*: the JobSettings of each of its runs, in order."""
+    return lambda wildcards: tuple(
+        study_settings.job_settings(
+            study, {**study_runs.parse_combo(wildcards.combo), "seed": seed}
+        )
+        for seed in seeds
+    )
 
 
 # The measured inputs (workflow/rules/measured.smk): scans by name, spectra by name, radii.

@@ -1,46 +1,106 @@
-# One job per run (H, R, h_rms, optional axes, seed): surface, warm-started load path, stiffness.
-rule indent:
-    output:
-        run=RUN_PATTERN,
-    log:
-        LOG_PATTERN,
-    benchmark:
-        BENCHMARK_PATTERN
-    wildcard_constraints:
-        combo=r"H[^/]+",
-        seed=r"\d+",
-    conda:
-        "../../envs/roughcontact.yaml"
-    threads: 1
-    resources:
-        mem_mb=indent_mem_mb,
-        runtime=indent_runtime,  # minutes
-    params:
-        settings=lambda wc: study_settings.settings_from_wildcards(STUDY, wc),
-        solver_version=SOLVER_VERSION,  # bumped on purpose when results change
-    script:
-        "../scripts/indent.py"
+# The runs: surface, warm-started load path, stiffness, one run file and log per run. One job per
+# run with jobs.batch = 1 (rule indent); else one job per combination and block of jobs.batch
+# seeds (rules indent_seeds0_5, indent_seeds6_11, ...), its runs one after another in one
+# Python. A job's params are its runs' own settings: a new seed reruns only its block.
+if INDENT_BATCH == 1:
 
+    rule indent:
+        output:
+            run=RUN_PATTERN,
+        log:
+            LOG_PATTERN,
+        benchmark:
+            BENCHMARK_PATTERN
+        wildcard_constraints:
+            combo=r"H[^/]+",
+            seed=r"\d+",
+        conda:
+            "../../envs/roughcontact.yaml"
+        threads: 1
+        resources:
+            mem_mb=indent_mem_mb,
+            runtime=indent_runtime,  # minutes
+        params:
+            settings=lambda wc: study_settings.settings_from_wildcards(STUDY, wc),
+            solver_version=SOLVER_VERSION,  # bumped on purpose when results change
+        script:
+            "../scripts/indent.py"
 
-# The same run on the coarse grid of the grid error (grid.coarse): the study's surface seen there.
-rule indent_coarse:
-    output:
-        run=COARSE_RUN_PATTERN,
-    log:
-        COARSE_LOG_PATTERN,
-    benchmark:
-        COARSE_BENCHMARK_PATTERN
-    wildcard_constraints:
-        combo=r"H[^/]+",
-        seed=r"\d+",
-    conda:
-        "../../envs/roughcontact.yaml"
-    threads: 1
-    resources:
-        mem_mb=indent_mem_mb,
-        runtime=indent_runtime,  # minutes
-    params:
-        settings=lambda wc: study_settings.settings_from_wildcards(COARSE, wc),
-        solver_version=SOLVER_VERSION,  # bumped on purpose when results change
-    script:
-        "../scripts/indent.py"
+    # The same run on the coarse grid of the grid error (grid.coarse): the study's surface seen there.
+    rule indent_coarse:
+        output:
+            run=COARSE_RUN_PATTERN,
+        log:
+            COARSE_LOG_PATTERN,
+        benchmark:
+            COARSE_BENCHMARK_PATTERN
+        wildcard_constraints:
+            combo=r"H[^/]+",
+            seed=r"\d+",
+        conda:
+            "../../envs/roughcontact.yaml"
+        threads: 1
+        resources:
+            mem_mb=indent_mem_mb,
+            runtime=indent_runtime,  # minutes
+        params:
+            settings=lambda wc: study_settings.settings_from_wildcards(COARSE, wc),
+            solver_version=SOLVER_VERSION,  # bumped on purpose when results change
+        script:
+            "../scripts/indent.py"
+
+else:
+    for block in INDENT_BLOCKS:
+
+        rule:
+            name:
+                f"indent_{block.name}"
+            output:
+                run=[RUN_PATTERN.format(combo="{combo}", seed=s) for s in block.seeds],
+            log:
+                [LOG_PATTERN.format(combo="{combo}", seed=s) for s in block.seeds],
+            benchmark:
+                BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
+            wildcard_constraints:
+                combo=r"H[^/]+",
+            conda:
+                "../../envs/roughcontact.yaml"
+            threads: 1
+            resources:
+                mem_mb=indent_mem_mb,
+                runtime=batch_runtime(len(block.seeds)),  # minutes
+            params:
+                settings=batch_settings(STUDY, block.seeds),
+                solver_version=SOLVER_VERSION,  # bumped on purpose when results change
+            script:
+                "../scripts/indent.py"
+
+        # The same runs on the coarse grid of the grid error (grid.coarse).
+        rule:
+            name:
+                f"indent_coarse_{block.name}"
+            output:
+                run=[
+                    COARSE_RUN_PATTERN.format(combo="{combo}", seed=s)
+                    for s in block.seeds
+                ],
+            log:
+                [
+                    COARSE_LOG_PATTERN.format(combo="{combo}", seed=s)
+                    for s in block.seeds
+                ],
+            benchmark:
+                COARSE_BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
+            wildcard_constraints:
+                combo=r"H[^/]+",
+            conda:
+                "../../envs/roughcontact.yaml"
+            threads: 1
+            resources:
+                mem_mb=indent_mem_mb,
+                runtime=batch_runtime(len(block.seeds)),  # minutes
+            params:
+                settings=batch_settings(COARSE, block.seeds),
+                solver_version=SOLVER_VERSION,  # bumped on purpose when results change
+            script:
+                "../scripts/indent.py"

@@ -1,9 +1,17 @@
-"""Snakemake `indent` job: one (H, R, h_rms, seed) -> results/runs/...nc.
+"""Snakemake `indent` job: the runs of one combination and block of seeds (jobs.batch; one run
+with batch 1) -> results/runs/<combo>/seed<seed>.nc, one file and one log per run.
 
-The work is done by roughcontact.study.runs.indent.run_indent, the same function behind
-`roughcontact indent` on the command line.
+The work is done by roughcontact.study.runs.indent.run_batch, one run_indent per run (the
+function behind `roughcontact indent` on the command line). A failed run is one line on the
+console; its log has the traceback.
 """
-from roughcontact.study.runs.indent import run_indent
+import sys
+
+from roughcontact.study.runs.indent import run_batch
 
 snakemake = globals()["snakemake"]  # injected by Snakemake's script: directive
-run_indent(snakemake.params.settings, snakemake.output.run, log=snakemake.log[0])
+try:
+    run_batch(snakemake.params.settings, snakemake.output, logs=snakemake.log)
+except Exception as err:  # noqa: BLE001  (every failure: one line here, the details in its log)
+    log = getattr(err, "run_log", None)
+    sys.exit(f"Error in rule {snakemake.rule}: {type(err).__name__}: {err}" + (f" (log: {log})" if log else ""))

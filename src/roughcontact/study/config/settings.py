@@ -39,6 +39,7 @@ __all__ = [
     "SlopeFitSettings",
     "FitSettings",
     "UnitSettings",
+    "JobsSettings",
     "TopographyInput",
     "SpectrumInput",
     "StudySettings",
@@ -141,6 +142,24 @@ class UnitSettings:
 
 
 @dataclasses.dataclass(frozen=True)
+class JobsSettings:
+    """How the runs are grouped into Snakemake jobs (``jobs``); no result depends on it."""
+
+    batch: int   #: seeds per ``indent`` job (:func:`roughcontact.study.runs.naming.seed_blocks`); 1: a job per run
+
+    @classmethod
+    def of(cls, cfg) -> "JobsSettings":
+        """The ``jobs`` section of a resolved configuration; the schema's default where it has none
+        (a file's configuration from before the section existed)."""
+        section = cfg.get("jobs") or {}
+        if "batch" not in section:
+            from .schema import default_of, load_schema
+
+            section = {**section, "batch": default_of(load_schema(None), ("jobs", "batch"))}
+        return cls(batch=int(section["batch"]))
+
+
+@dataclasses.dataclass(frozen=True)
 class TopographyInput:
     """One measured scan (an entry of ``topography``, resolved: ``file`` absolute, ``name`` set)."""
 
@@ -189,6 +208,8 @@ class StudySettings:
         Tile side of a measured scan in cells (``None``: the whole square).
     stickiness : roughcontact.study.config.stickiness.StickinessSettings or None
         The stickiness sweep (claim (q); ``None``: the config has no ``stickiness`` section).
+    jobs : JobsSettings or None
+        How the runs are grouped into jobs (``None``: the schema's default, :meth:`JobsSettings.of`).
     fields : FieldsSettings
         What each generated run keeps beyond its per-load numbers (contact patches, fields).
     conductance : ConductanceSettings
@@ -209,6 +230,7 @@ class StudySettings:
     spectrum: tuple = ()
     tile: int | None = None
     stickiness: object = None
+    jobs: JobsSettings | None = None
     fields: FieldsSettings = FieldsSettings()
     conductance: ConductanceSettings = ConductanceSettings()
     config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
@@ -270,6 +292,7 @@ class StudySettings:
             spectrum=tuple(SpectrumInput(**entry) for entry in cfg.get("spectrum") or ()),
             tile=None if cfg.get("tile") is None else int(cfg["tile"]),
             stickiness=StickinessSettings.of(cfg),
+            jobs=JobsSettings.of(cfg),
             fields=FieldsSettings(patches=bool((cfg.get("fields") or {}).get("patches", False)),
                                   at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ())))),
             conductance=ConductanceSettings(**{key: None if value is None else tuple(float(v) for v in value)

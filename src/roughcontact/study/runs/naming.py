@@ -9,6 +9,7 @@ workflow turns names into paths with its own patterns (:func:`run_path`).
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import itertools
 import math
@@ -28,6 +29,8 @@ __all__ = [
     "combinations",
     "axis_value",
     "indent_resources",
+    "seed_blocks",
+    "SeedBlock",
     "force_grid",
     "parse_run_path",
     "combo_name",
@@ -167,19 +170,59 @@ def run_paths(study, pattern: str) -> list[str]:
     return [run_path(r, pattern) for r in runs(study)]
 
 
-def indent_resources(study) -> dict:
+def indent_resources(study, runs: int = 1) -> dict:
     """Generous per-job estimates for schedulers (SLURM): ``mem_mb`` and
-    ``runtime`` (minutes) of one ``indent`` job, from the grid and load count.
+    ``runtime`` (minutes) of one ``indent`` job of *runs* runs (one after another,
+    :func:`seed_blocks`), from the grid and load count.
 
     Memory: surface generation (24 bytes per cell), the heights and two states
     alive at a time (pressure, contact set: ~17 bytes per cell each), FFT
-    kernels up to the doubled grid, over a ~250 MB interpreter; times 1.5.
+    kernels up to the doubled grid, over a ~250 MB interpreter; times 1.5 (the
+    same for a batch: one run is alive at a time).
     Runtime: measured ~10 s for a 513^2 flat run of 13 loads on one core,
-    scaled by n^2 log n and the load count, times 10.
+    scaled by n^2 log n and the load count, times 10, times *runs*.
     """
     study = StudySettings.of(study)
     n = study.grid.n
     count = max(study.forces[kind_of(r)].count for r in study.radius)
     mem = 250 + (n * n * (24 + 8 + 2 * 17) + 8 * (2 * n) ** 2 * 16) / 1e6
     scale = (n * n * math.log(n)) / (513 * 513 * math.log(513)) * count / 13
-    return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100), "runtime": int(max(5, math.ceil(10 * scale * 10 / 60)))}
+    return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100),
+            "runtime": int(max(5, math.ceil(10 * scale * 10 / 60 * runs)))}
+
+
+@dataclasses.dataclass(frozen=True)
+class SeedBlock:
+    """The seeds one ``indent`` job runs for a combination (:func:`seed_blocks`).
+
+    Attributes
+    ----------
+    first, last : int
+        The block's range of seed values, ``first = (s // batch) batch``, ``last = first + batch - 1``.
+    seeds : tuple of int
+        The study's seeds in that range, ascending.
+    """
+
+    first: int
+    last: int
+    seeds: tuple
+
+    @property
+    def name(self) -> str:
+        """``seeds0_5``: the block in rule, log and benchmark names."""
+        return f"seeds{self.first}_{self.last}"
+
+
+def seed_blocks(seeds, batch: int) -> list[SeedBlock]:
+    """The study's *seeds* grouped for ``batch`` runs per job: the seeds ``s`` with the same
+    ``s // batch`` form one block (batch 6: 0-5, 6-11, ...), in ascending order. A seed belongs to
+    its block by its value, not by its place in the list, so adding a seed changes only the block
+    of its value (``jobs.batch``); a sparse list gives blocks of fewer seeds."""
+    if int(batch) < 1:
+        raise ValueError(f"batch must be a positive number of seeds, not {batch!r}")
+    batch = int(batch)
+    blocks: dict[int, list[int]] = {}
+    for seed in sorted(int(s) for s in seeds):
+        blocks.setdefault(seed // batch, []).append(seed)
+    return [SeedBlock(first=j * batch, last=j * batch + batch - 1, seeds=tuple(members))
+            for j, members in sorted(blocks.items())]
