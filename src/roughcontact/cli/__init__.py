@@ -195,8 +195,11 @@ def main(argv=None) -> int:
         sticky = ("" if sticky is None else
                   f"; stickiness: {len(sticky.jobs())} runs ({len(sticky.hurst)} H x {len(sticky.number)} N x "
                   f"{sticky.seeds} seeds on {sticky.n}²)")
-        print(f"{args.config}: valid; {len(runs.runs(study))} indent jobs "
-              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds){coarse}{scans}{sticky}")
+        blocks = len(runs.seed_blocks(study.seeds, study.jobs.batch)) if study.seeds else 0
+        print(f"{args.config}: valid; {len(runs.runs(study))} runs "
+              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds) in "
+              f"{len(runs.combinations(study)) * blocks} indent jobs (jobs.batch = {study.jobs.batch})"
+              f"{coarse}{scans}{sticky}")
         return 0
     if args.command == "measured":
         return measured.run(args)
