@@ -24,9 +24,10 @@ eqs. 1–3), :mod:`~roughcontact.bem` (the boundary-element solver and stiffness
 :mod:`~roughcontact.errors`.
 """
 
+import importlib
 from importlib.metadata import PackageNotFoundError, version
 
-from . import bem, errors, models, surfaces
+from . import bem, errors, surfaces
 
 try:
     __version__ = version("roughcontact")
@@ -34,3 +35,11 @@ except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
 __all__ = ["bem", "errors", "models", "surfaces", "__version__"]
+
+
+def __getattr__(name: str):
+    """``roughcontact.models`` imported when first used (PEP 562): an indentation job, which
+    needs only the surfaces and the solver, starts without it (scipy.special, scipy.integrate)."""
+    if name == "models":
+        return importlib.import_module(".models", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -12,7 +12,22 @@ Tabor's asperities, Johnson's rough-sphere parameter, Pastewka & Robbins' sticki
 :mod:`roughcontact.surfaces` and never the boundary-element method.
 """
 
-from . import asperities, axisymmetric, greenwood_tripp, mdr, paper, persson, tangential
+import importlib
+
 from .elasticity import effective_modulus
 
 __all__ = ["asperities", "axisymmetric", "greenwood_tripp", "mdr", "paper", "persson", "tangential", "effective_modulus"]
+
+#: the submodules, each imported when first used (PEP 562): ``from roughcontact.models import paper``
+#: loads the paper's equations without Persson's theory or Greenwood–Tripp (scipy.integrate, ...)
+_SUBMODULES = frozenset(__all__) - {"effective_modulus"}
+
+
+def __getattr__(name: str):
+    if name in _SUBMODULES:
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | _SUBMODULES)
