@@ -226,15 +226,14 @@ def sphere_verdicts(force, stiffness, contact_cells, *, case: SphereCase, zeta_f
     f_split = row["Ftr_measured"] if math.isfinite(row["Ftr_measured"]) else f_window
     soft = resolved & (F < f_split)
     row["n_loads_below_Ftr"] = int(soft.sum())
-    if soft.any():   # eq. 16 on the fractal branch alone: the resolved loads below F_tr
-        k16 = paper.stiffness_from_force(F[soft] * L**2, radius=radius, hurst=hurst, h_rms=h_rms, length=L,
-                                         e_star=1.0, zeta=z_used, exponent=m) / L
-        signed = k_boot[:, soft] / k16 - 1
+    if soft.any():   # eq. 16 on the fractal branch alone: the resolved loads below F_tr (k16 at Fr above)
+        k16_soft = k16[soft[resolved]]
+        signed = k_boot[:, soft] / k16_soft - 1
         m_lo, m_hi = interval(np.abs(signed).max(-1), level)
         s_lo, s_hi = interval(signed.mean(-1), level)
-        row.update({"eq16_fractal_max_rel_dev": float(np.abs(k_mean[soft] / k16 - 1).max()),
+        row.update({"eq16_fractal_max_rel_dev": float(np.abs(k_mean[soft] / k16_soft - 1).max()),
                     "eq16_fractal_max_rel_dev_ci_low": m_lo, "eq16_fractal_max_rel_dev_ci_high": m_hi,
-                    "eq16_fractal_mean_rel_dev": float((k_mean[soft] / k16 - 1).mean()),
+                    "eq16_fractal_mean_rel_dev": float((k_mean[soft] / k16_soft - 1).mean()),
                     "eq16_fractal_mean_rel_dev_ci_low": s_lo, "eq16_fractal_mean_rel_dev_ci_high": s_hi})
     if soft.any():
         k_h = paper.body_stiffness(F[soft] * L**2, radius=radius, e_star=1.0, exponent=m) / L

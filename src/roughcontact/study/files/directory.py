@@ -56,7 +56,6 @@ class StudyDirectory:
 
     def __init__(self, root):
         self.root = Path(root)
-        self.name = self.root.resolve().name
 
     def __repr__(self) -> str:
         return f"StudyDirectory({str(self.root)!r})"

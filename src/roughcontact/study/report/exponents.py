@@ -9,7 +9,7 @@ from .plotting import pyplot, save_png
 
 __all__ = ["run_exponents", "curves", "exponents_figure"]
 
-log = logging.getLogger("roughcontact.study.analysis.exponents")
+log = logging.getLogger(__name__)
 
 
 def run_exponents(study, stiffness_nc, out_csv, out_png):

@@ -19,7 +19,7 @@ from .tables import write_html_table
 
 __all__ = ["scorecard_lead", "scorecard_figure", "run_models"]
 
-log = logging.getLogger("roughcontact.study.analysis.scorecard")
+log = logging.getLogger(__name__)
 
 
 def scorecard_lead(table=None) -> str:
