@@ -21,6 +21,7 @@ include: "workflow/rules/figures.smk"
 include: "workflow/rules/measured.smk"
 include: "workflow/rules/adhesion.smk"
 include: "workflow/rules/stickiness.smk"
+include: "workflow/rules/tangential.smk"
 
 
 localrules:
@@ -39,6 +40,9 @@ localrules:
     adhesion_figures,
     stickiness,
     stickiness_figures,
+    tangential,
+    tangential_figures,
+    partial_slip_figures,
     measured_surface,
     measured_merge,
     measured_spectrum,
@@ -78,4 +82,11 @@ rule all:
             if STICKINESS is not None
             else []
         ),
+        # the tangential problem (none without poisson; partial slip with friction > 0)
+        (
+            [rules.tangential.output, rules.tangential_figures.output]
+            if TANGENTIAL
+            else []
+        ),
+        ([rules.partial_slip_figures.output] if PARTIAL_SLIP else []),
         measured_targets(),

@@ -24,7 +24,7 @@ from roughcontact.study.files.directory import StudyDirectory
 DOCS = Path(__file__).resolve().parent
 #: the figure shown for each preset (a file of results/figures/, first match)
 FIGURE = {"zeta": ["zeta.png"], "zeta-law": ["zeta.png"], "zeta-law-fine": ["zeta.png"], "finite-size": ["../exponents/local_exponents.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"],
-          "adhesion": ["../adhesion_figures/pull_off.png"]}
+          "adhesion": ["../adhesion_figures/pull_off.png"], "tangential": ["../tangential/ratio.png"]}
 SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
                  "rms_rel_dev", "n_loads"]
 #: the scorecard's decision (roughcontact.study.analysis.decision), shown where models.csv has it
@@ -134,7 +134,16 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
                   "covers `stickiness.area` of the grid, with its 95 % bootstrap-over-seeds interval (negative: "
                   "sticky), and the measured threshold N where the mean slope changes sign.", "",
                   _table(study.table("stickiness")[STICKINESS_COLUMNS]), ""]
-    figures = [f for f in (_figure(preset, results), results / "stickiness_figures" / "loading.png")
+    if study.has("tangential"):
+        rows = claims[claims["claim"].isin(["r", "s", "t"])]
+        lines += ["## Tangential contact (claims r-t)", "",
+                  "Per sphere combination, Poisson ratio nu and friction mu: the ensemble's value on each branch "
+                  "(fractal: resolved loads below F_tr; Hertz: above) with its 95 % bootstrap-over-seeds interval "
+                  "against the model's value. Per load: results/tangential/tangential.csv.", "",
+                  _table(rows[[c for c in ["claim", "statement", "h_rms", "poisson", "friction", "measured", "ci_low",
+                                            "ci_high", "paper_value", "verdict", "loads"] if c in rows]]), ""]
+    figures = [f for f in (_figure(preset, results), results / "stickiness_figures" / "loading.png",
+                           results / "tangential" / "partial_slip.png", results / "tangential" / "micro_slip.png")
                if f is not None and f.is_file()]
     for i, figure in enumerate(figures):
         target = out_dir / f"{preset}_{figure.name}"

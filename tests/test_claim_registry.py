@@ -32,7 +32,7 @@ def _table(groups):
 
 def test_registry_holds_the_claims_of_the_study():
     assert list(claims.claims()) == ["a", "b", "c", "c'", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p",
-                                     "q"], \
+                                     "q", "r", "s", "t"], \
         f"claims: {list(claims.claims())}"
 
 

@@ -15,6 +15,7 @@ import pytest
 import xarray as xr
 from test_adhesion_study import _pair, _table as _adhesion
 from test_claim_isolation import _ZETA, _groups, _study
+from test_tangential_study import _synthetic
 
 from roughcontact.study import claims
 from roughcontact.study.claims import Claim, register, row
@@ -36,7 +37,8 @@ def _stickiness():
 @pytest.fixture(scope="module")
 def table():
     """The claims table of a two-radius sphere study with a cutoff of 0 (the paper's) and 0.05, and
-    adhesive, stickiness and (empty) exponent inputs: every registered claim has rows."""
+    adhesive, stickiness, (empty) exponent and tangential inputs (a synthetic Hertzian ensemble
+    with no row of crossover.csv: its rows say why they are untested): every registered claim has rows."""
     groups, study = _groups(("cutoff", [0.0, 0.05])), _study(cutoff=[None, 0.05])
     zeta = _ZETA.assign(exponent=0.6, exponent_ci_low=0.55, exponent_ci_high=0.65, window="5 loads")
     cross, reps = crossover_table(groups, zeta, study)
@@ -44,7 +46,7 @@ def table():
                                                         "preload_radius_ratio": 0.5}])
     return claims.claims_table(cross, reps, zeta, study, groups, exponents=pd.DataFrame(),
                                zeta_replicates=xr.DataArray(np.zeros((0, 1))), adhesion=adhesion,
-                               stickiness=_stickiness())
+                               stickiness=_stickiness(), tangential=_synthetic())
 
 
 def test_every_registered_claim_has_rows(table):

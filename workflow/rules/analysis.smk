@@ -148,6 +148,7 @@ rule claims:
         exponents=rules.exponents.output.csv,
         pull_off=pull_off_table,
         stickiness=stickiness_table,
+        tangential=tangential_file,
     output:
         csv="results/claims.csv",
         html=report(

@@ -127,6 +127,17 @@ def stickiness_table(wildcards):
     return rules.stickiness.output.csv if STICKINESS is not None else []
 
 
+# The tangential problem (axes poisson, friction; workflow/rules/tangential.smk): whether the
+# sphere runs have a Poisson ratio (the full-stick stiffness) and a friction > 0 (partial slip).
+TANGENTIAL = STUDY.generated and any(nu is not None for nu in STUDY.poisson)
+PARTIAL_SLIP = TANGENTIAL and any(mu > 0 for mu in STUDY.friction)
+
+
+def tangential_file(wildcards):
+    """The merged tangential runs where the study has them (the claims rule's optional input)."""
+    return rules.tangential.output.nc if TANGENTIAL else []
+
+
 def grid_error_table(wildcards):
     """The grid error table where grid.coarse is set (the models rule's optional input)."""
     return rules.grid_error.output.csv if COARSE is not None else []

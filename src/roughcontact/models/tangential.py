@@ -12,7 +12,10 @@ neglected (Goodman's approximation; exact for elastically similar bodies):
   tangent stiffness ``k_t(Q) = k_t(0)(1 − Q/μP)^(1/3)``;
 * the MDR (Popov & Heß 2015, §6): tangential springs ``G* Δx``, ``G* = 4G/(2 − ν)``, beside the
   normal ``E* Δx``, so ``k_t/k_n = 2(1 − ν)/(2 − ν)`` for any profile, the rough sphere's
-  included: :func:`mdr_sphere_stiffness`.
+  included: :func:`mdr_sphere_stiffness`;
+* Ciavarella (1998)–Jäger (1998): ``k_t(Q)/k_t(0) = k_n(P − Q/μ)/k_n(P)`` for any normal path
+  (:func:`ciavarella_jaeger_stiffness_ratio`); Grzemba et al. (2014): the largest micro-slip
+  ``δ_max = μ d E*/G*`` (:func:`largest_micro_slip`).
 
 References: R. D. Mindlin, J. Appl. Mech. 16, 259 (1949); C. Cattaneo, Rend. Accad. Naz. Lincei
 27, 342 (1938); K. L. Johnson, *Contact Mechanics*, Cambridge University Press 1985,
@@ -28,7 +31,8 @@ from .._validate import check_finite_positive, is_finite_number
 from . import mdr
 
 __all__ = ["shear_modulus", "stiffness_ratio", "tangential_from_normal", "mindlin_stiffness",
-           "stick_radius", "cattaneo_displacement", "cattaneo_stiffness", "mdr_sphere_stiffness"]
+           "stick_radius", "cattaneo_displacement", "cattaneo_stiffness", "cattaneo_stiffness_ratio",
+           "ciavarella_jaeger_stiffness_ratio", "largest_micro_slip", "mdr_sphere_stiffness"]
 
 
 def _poisson(poisson) -> float:
@@ -95,6 +99,33 @@ def cattaneo_displacement(load_ratio, *, normal_force: float, friction: float, c
 def cattaneo_stiffness(load_ratio, *, contact_radius, e_star: float, poisson: float):
     """Tangent ``k_t(Q) = k_t(0)(1 − Q/μP)^(1/3)``, ``k_t(0)`` Mindlin's (force/length)."""
     return mindlin_stiffness(contact_radius, e_star=e_star, poisson=poisson) * np.cbrt(1.0 - _ratio(load_ratio))
+
+
+def cattaneo_stiffness_ratio(load_ratio):
+    """Cattaneo–Mindlin ``k_t(Q)/k_t(0) = (1 − Q/μP)^(1/3)`` (Johnson 1985, §7.2; the stick radius
+    over the contact radius)."""
+    return np.cbrt(1.0 - _ratio(load_ratio))
+
+
+def ciavarella_jaeger_stiffness_ratio(load_ratio, normal_force: float, normal_stiffness):
+    """Ciavarella (1998)–Jäger (1998): ``k_t(Q)/k_t(0) = k_n(P(1 − Q/μP))/k_n(P)`` for any normal
+    path, the stick zone being the contact at the normal force ``P − Q/μ``.
+
+    *normal_stiffness*: ``k_n(F)``, a callable of the force (any unit, that of *normal_force*).
+    For a power law ``k_n ∝ F^β``: ``(1 − Q/μP)^β`` (Hertz, ``β = 1/3``: Cattaneo–Mindlin; the fractal
+    branch, ``β = 1/(H+1)``, eq. 11)."""
+    check_finite_positive("normal_force", normal_force)
+    ratio = _ratio(load_ratio)
+    return np.asarray(normal_stiffness(normal_force * (1.0 - ratio)), dtype=float) / float(normal_stiffness(normal_force))
+
+
+def largest_micro_slip(depth, *, friction: float, poisson: float):
+    """Grzemba, Pohrt, Teidelt & Popov (Wear 309, 40 (2014), doi:10.1016/j.wear.2013.09.020): the
+    tangential displacement at the onset of gross sliding, ``δ_max = μ d E*/G* = μ d (2 − ν)/(2(1 − ν))``,
+    ``d`` the normal approach from first touch (length, the unit of *depth*); exact for every body of
+    revolution by the Ciavarella–Jäger construction."""
+    check_finite_positive("friction", friction)
+    return friction * np.asarray(depth, dtype=float) / stiffness_ratio(poisson)
 
 
 def mdr_sphere_stiffness(force, *, poisson: float, **kwargs) -> mdr.StiffnessEnsemble:

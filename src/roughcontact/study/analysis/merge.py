@@ -74,11 +74,14 @@ class KindLayout:
 
 def kind_layouts(study: StudySettings, table: list, paths) -> list[KindLayout]:
     """The :class:`KindLayout` of each surface kind that the runs *table* (dicts of
-    :func:`runs.runs`, one path of *paths* each, in order) have, sphere first."""
+    :func:`runs.runs`, one path of *paths* each, in order) have, sphere first: the runs of the
+    normal problem (:func:`runs.normal_representative`; the tangential axes' other values repeat
+    the same normal path and are merged by :mod:`roughcontact.study.analysis.tangential`)."""
     L = study.grid.length
     out = []
     for kind in ("sphere", "flat"):
-        rows = [(row, path) for row, path in zip(table, paths) if row["kind"] == kind]
+        rows = [(row, path) for row, path in zip(table, paths)
+                if row["kind"] == kind and runs.normal_representative(study, row)]
         if not rows:
             continue
         axes = runs.AXES[kind]

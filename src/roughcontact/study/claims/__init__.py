@@ -22,13 +22,17 @@ where the contact is larger than the cutoff; (j) a roll-off's effect on the
 low-force slope; (k) elasticity on all scales is not crucial (a hardness cap
 leaves the unloading and the loading stiffness unchanged); (l), (m) the local
 exponents of flat surfaces against Pastewka et al. (2013) and Pohrt & Popov (2012).
+Tangential contact (axes ``poisson``, ``friction``): (r) the full-stick k_t/k_n against Mindlin's
+2(1−ν)/(2−ν) on each branch; (s) k_t(Q) against Cattaneo–Mindlin above the crossover and
+Ciavarella–Jäger below it; (t) the largest micro-slip against Grzemba et al.'s μ d E*/G*.
 
 Each claim is one :class:`Claim` (its letter, statement, the inputs it needs and its estimator:
 ``rows(inputs)`` over the whole study, or ``estimate(combination)`` over one sweep combination
 with ``applies``, the rule of the combinations it is tested on; the registry loops over the
 combinations), registered by a module of
 this package: :mod:`roughcontact.study.claims.paper` (a)-(h), :mod:`roughcontact.study.claims.zeta_law` (c'), :mod:`roughcontact.study.claims.effects` (i)-(k),
-:mod:`roughcontact.study.claims.exponents` (l), (m). :func:`claims_table` loops over the registry; a new claim is one
+:mod:`roughcontact.study.claims.exponents` (l), (m), :mod:`roughcontact.study.claims.adhesion` (n)-(q),
+:mod:`roughcontact.study.claims.tangential` (r)-(t). :func:`claims_table` loops over the registry; a new claim is one
 object in one module (worked example in the package guide, ``docs/guide/package.md``). A claim
 that raises gives rows with the verdict ``error`` and the exception as the reason; the others'
 rows are kept.
@@ -52,7 +56,7 @@ log = logging.getLogger(__name__)
 
 #: the modules of the claims of Pohrt & Popov (2013) and the studies that extend them, in the order
 #: they are imported (each registers its claims); further modules of this package follow by name
-_ORDER = ("paper", "zeta_law", "effects", "exponents", "adhesion")
+_ORDER = ("paper", "zeta_law", "effects", "exponents", "adhesion", "tangential")
 _loaded: list = []
 
 
@@ -84,7 +88,7 @@ def __getattr__(name: str):
 
 
 def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, exponents=None,
-                 zeta_replicates=None, adhesion=None, stickiness=None):
+                 zeta_replicates=None, adhesion=None, stickiness=None, tangential=None):
     """``claims.csv``: one row per quantitative claim (every registered :class:`Claim` whose
     inputs are given) and per combination it is tested on, with the measured value, its 95 %
     interval, the paper's value, the verdict and the sweep and loads it rests on; ordered by
@@ -95,7 +99,7 @@ def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, expone
 
     inputs = ClaimInputs(cross=cross, replicates=reps, zeta=zeta_df, study=StudySettings.of(study), groups=groups,
                          exponents=exponents, zeta_replicates=zeta_replicates, adhesion=adhesion,
-                         stickiness=stickiness)
+                         stickiness=stickiness, tangential=tangential)
     rows = []
     for claim in claims().values():
         if all(getattr(inputs, need) is not None for need in claim.needed):
@@ -124,11 +128,12 @@ CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per s
 
 
 def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
-               pull_off_csv=None, stickiness_csv=None):
+               pull_off_csv=None, stickiness_csv=None, tangential_nc=None):
     """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
     runs, the local exponents, the adhesive runs' pull-off table (*pull_off_csv*, or ``None``
     without adhesive runs) and the stickiness table (*stickiness_csv*, or ``None`` without the
-    config's ``stickiness`` section) -> claims.csv and the same table as an HTML page for the report
+    config's ``stickiness`` section), the tangential runs (*tangential_nc*, or ``None`` without the
+    axis ``poisson``) -> claims.csv and the same table as an HTML page for the report
     (:mod:`roughcontact.study.report.tables`)."""
     import pandas as pd
     import xarray as xr
@@ -141,7 +146,8 @@ def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_
         table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), study, read_groups(stiffness_nc), exponents,
                              zds["zeta_replicates"].load(),
                              adhesion=pd.read_csv(pull_off_csv) if pull_off_csv else None,
-                             stickiness=pd.read_csv(stickiness_csv) if stickiness_csv else None)
+                             stickiness=pd.read_csv(stickiness_csv) if stickiness_csv else None,
+                             tangential=read_groups(tangential_nc) if tangential_nc else None)
     write_csv(table, out_csv)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
                      first=("claim", "statement", "verdict", "untested_because", "measured", "ci_low", "ci_high",

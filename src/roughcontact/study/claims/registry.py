@@ -50,6 +50,10 @@ class ClaimInputs:
     stickiness : pandas.DataFrame or None
         The stickiness table (``stickiness/stickiness.csv``, :mod:`roughcontact.study.analysis.stickiness`);
         ``None`` without the config's ``stickiness`` section.
+    tangential : dict or None
+        The tangential runs merged (``tangential/tangential.nc``: groups ``full_stick`` and
+        ``partial_slip``, :mod:`roughcontact.study.analysis.tangential`); ``None`` without the axis
+        ``poisson``.
     """
 
     cross: object
@@ -61,6 +65,7 @@ class ClaimInputs:
     zeta_replicates: object = None
     adhesion: object = None
     stickiness: object = None
+    tangential: object = None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -197,11 +202,12 @@ def register(claim: Claim) -> Claim:
 
 
 def __getattr__(name: str):
-    """``AXIS_COLUMNS``: the sweep axes (:data:`roughcontact.study.config.axes.AXES`), the columns naming the
-    combination a row rests on; ``EFFECT_CLAIM``: the claim that tests each optional axis off the
+    """``AXIS_COLUMNS``: the sweep axes of the normal problem (:data:`roughcontact.study.config.axes.AXES`
+    whose ``normal`` is true), the columns naming the combination every row rests on (a row of the
+    tangential claims also has ``poisson`` and ``friction``); ``EFFECT_CLAIM``: the claim that tests each optional axis off the
     paper's elastic, purely self-affine setting. Both read the axis registry when asked."""
     if name == "AXIS_COLUMNS":
-        return tuple(AXES)
+        return axes.names(normal=True)
     if name == "EFFECT_CLAIM":
         return {a.name: a.claim for a in optional_axes() if a.claim}
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
@@ -211,10 +217,12 @@ def row(claim, statement, measured, low, high, paper, verdict_text, *, sweep="",
     """One row of the claims table; *verdict_text* is ``"verdict: reason"``, an untested one made by
     :func:`roughcontact.study.analysis.statistics.untested` (its named reason is the ``untested_because``
     column; any other untested text raises ``ValueError``: an ``error`` row); *where* the
-    combination's axes (missing ones NaN). The *note* says what the measured value is; it states
+    combination's axes (missing ones NaN; an axis of the tangential problem only where given, so a
+    study without them has the columns it had). The *note* says what the measured value is; it states
     no verdict (a second comparison is a row of its own)."""
     word, because, reason = split_verdict(verdict_text)
-    return {"claim": claim, "statement": statement, **{k: where.get(k, math.nan) for k in AXES},
+    return {"claim": claim, "statement": statement,
+            **{k: where.get(k, math.nan) for k, spec in AXES.items() if spec.normal or k in where},
             "measured": measured, "ci_low": low, "ci_high": high, "paper_value": paper,
             "verdict": word, "untested_because": because, "reason": reason,
             "sweep": sweep, "loads": loads, "note": note}

@@ -34,6 +34,7 @@ __all__ = [
     "GridSettings",
     "SolverSettings",
     "FieldsSettings",
+    "TangentialSettings",
     "ConductanceSettings",
     "ZetaFitSettings",
     "SlopeFitSettings",
@@ -91,6 +92,14 @@ class FieldsSettings:
 
     patches: bool = False   #: per load, the number of contact patches and the largest one's cells
     at: tuple = ()          #: ``F/(E* L²)``: the loads nearest these keep their contact fields
+
+
+@dataclasses.dataclass(frozen=True)
+class TangentialSettings:
+    """The partial-slip path of the runs with ``friction > 0`` (``tangential``)."""
+
+    at: tuple | None = None   #: ``F/(E* L²)``: the loads nearest these follow it (``None``: every load)
+    steps: int = 20           #: tangential loads ``Q/(μP) = 1/(steps+1) … steps/(steps+1)``
 
 
 @dataclasses.dataclass(frozen=True)
@@ -212,6 +221,8 @@ class StudySettings:
         How the runs are grouped into jobs (``None``: the schema's default, :meth:`JobsSettings.of`).
     fields : FieldsSettings
         What each generated run keeps beyond its per-load numbers (contact patches, fields).
+    tangential : TangentialSettings
+        The partial-slip path of the runs with ``friction > 0``.
     conductance : ConductanceSettings
         The bodies' resistivities and conductivities of the contact conductance (false: none).
     config : mapping
@@ -232,6 +243,7 @@ class StudySettings:
     stickiness: object = None
     jobs: JobsSettings | None = None
     fields: FieldsSettings = FieldsSettings()
+    tangential: TangentialSettings = TangentialSettings()
     conductance: ConductanceSettings = ConductanceSettings()
     config: Mapping = dataclasses.field(default_factory=lambda: types.MappingProxyType({}), repr=False,
                                         compare=False)
@@ -295,6 +307,7 @@ class StudySettings:
             jobs=JobsSettings.of(cfg),
             fields=FieldsSettings(patches=bool((cfg.get("fields") or {}).get("patches", False)),
                                   at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ())))),
+            tangential=_tangential(cfg.get("tangential") or {}),
             conductance=ConductanceSettings(**{key: None if value is None else tuple(float(v) for v in value)
                                                for key, value in (cfg.get("conductance") or {}).items()}),
             config=types.MappingProxyType(dict(cfg)),
@@ -339,7 +352,8 @@ def coarse_config(cfg) -> dict:
     """The resolved configuration of the companion study of the grid error of *cfg* (resolved,
     with ``grid.coarse``): ``grid.n`` = the coarse grid, ``grid.realization_of`` = the grid whose
     surfaces *cfg* presses, ``radius`` the finite radii only (the grid error is the spheres'; no
-    flat run is pressed twice), everything else as in *cfg*. ``ValueError`` without
+    flat run is pressed twice), the tangential axes at their paper setting, everything else as in
+    *cfg*. ``ValueError`` without
     ``grid.coarse`` or without a sphere."""
     grid = dict(cfg["grid"])
     coarse = grid.pop("coarse", None)
@@ -349,7 +363,15 @@ def coarse_config(cfg) -> dict:
     if not spheres:
         raise ValueError("the study has no sphere radius: its companion on grid.coarse would have no run")
     fine = grid["n"] if grid.get("realization_of") is None else grid["realization_of"]
-    return {**cfg, "radius": spheres, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
+    # the grid error is the normal stiffness's: the tangential axes at their paper setting
+    tangential = {a.name: [a.paper] for a in axes.optional_axes(normal=False) if a.name in cfg}
+    return {**cfg, **tangential, "radius": spheres, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
+
+
+def _tangential(section: dict) -> TangentialSettings:
+    at = section.get("at")
+    return TangentialSettings(at=None if at is None else tuple(sorted(float(f) for f in at)),
+                              steps=int(section.get("steps", 20)))
 
 
 def _rebuild(fields: dict) -> StudySettings:

@@ -35,6 +35,8 @@ FILES = {
     "stickiness": ("results/stickiness/stickiness.csv", "stickiness"),
     "stickiness_fit": ("results/stickiness/stickiness.nc", "stickiness"),
     "summary": ("results/summary.html", "summary"),
+    "tangential": ("results/tangential/tangential.csv", "tangential"),
+    "tangential_fit": ("results/tangential/tangential.nc", "tangential"),
 }
 
 #: the run files of each run rule: rule -> directory under the study directory

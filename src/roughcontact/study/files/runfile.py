@@ -13,7 +13,7 @@ import numpy as np
 
 
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "PATCH_VARIABLES", "FIELD_VARIABLES",
-           "FIELD_GROUP", "RETRACT_VARIABLES",
+           "TANGENTIAL_VARIABLES", "SLIP_VARIABLES", "SLIP_COORDS", "FIELD_GROUP", "RETRACT_VARIABLES",
            "PULL_OFF_VARIABLES", "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
            "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
 
@@ -23,11 +23,12 @@ TITLE = "roughcontact indentation run"
 
 @dataclasses.dataclass(frozen=True)
 class Variable:
-    """One per-load variable of a run file (dimension ``force``)."""
+    """One variable of a run file: per load (dimension ``force``) unless *dims* says otherwise."""
 
     dtype: str
     long_name: str
     units: str
+    dims: tuple = ("force",)
 
 
 #: every per-load variable a run file can hold
@@ -50,6 +51,35 @@ RUN_VARIABLES = ("depth", "stiffness", "contact_area", "contact_cells", "iterati
 PLASTIC_VARIABLES = ("loading_stiffness", "plastic_cells")
 #: further variables of a run that counts its contact patches (``fields.patches``)
 PATCH_VARIABLES = ("contact_patches", "largest_patch_cells")
+#: further per-load variables of a sphere run with a Poisson ratio (axis ``poisson``;
+#: :mod:`roughcontact.study.runs.tangential`)
+TANGENTIAL_VARIABLES = {
+    "tangential_stiffness": Variable("f8", "full-stick tangential contact stiffness dQ/d(delta_x) (Cerruti kernel, "
+                                           "normal-tangential coupling neglected)", "e_star * length"),
+}
+#: the partial-slip paths of a run with friction > 0 (axis ``friction``): per normal load of
+#: ``tangential.at`` (dimension ``slip_load``, its values the 0-based load index) and tangential
+#: load (dimension ``slip_step``, its values ``Q/(mu P)``)
+SLIP_VARIABLES = {
+    "slip_normal_force": Variable("f8", "normal force P of the partial-slip path", "e_star * length**2",
+                                  ("slip_load",)),
+    "slip_depth": Variable("f8", "indentation depth from first touch of the partial-slip path", "length",
+                           ("slip_load",)),
+    "gross_slip_displacement": Variable("f8", "largest micro-slip: tangential displacement at the onset of gross "
+                                              "sliding, max of u_x[mu p] over the contact", "length", ("slip_load",)),
+    "slip_force": Variable("f8", "tangential force Q", "e_star * length**2", ("slip_load", "slip_step")),
+    "slip_displacement": Variable("f8", "tangential displacement delta_x of the indenter", "length",
+                                  ("slip_load", "slip_step")),
+    "slip_stiffness": Variable("f8", "tangential tangent stiffness dQ/d(delta_x): full stick of the stick zone",
+                               "e_star * length", ("slip_load", "slip_step")),
+    "stick_cells": Variable("i8", "number of contact cells that stick (|q| < mu p)", "1", ("slip_load", "slip_step")),
+    "slip_iterations": Variable("i8", "influence products of the partial-slip solve (warm-started)", "1",
+                                ("slip_load", "slip_step")),
+}
+#: the coordinates of the partial-slip paths
+SLIP_COORDS = {"slip_load": ("i8", {"long_name": "index of the normal load of the partial-slip path", "units": "1"}),
+               "slip_step": ("f8", {"long_name": "tangential load Q/(mu P)", "units": "1"})}
+
 #: the contact fields a run keeps at chosen loads (``fields.at``), one group ``fields/loadI`` per load
 #: (I the 0-based load index) over the contact's window (dimensions ``y``, ``x``), compressed
 FIELD_VARIABLES = {
@@ -241,6 +271,15 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = No
                 _put(nc, name, meta.dtype, (), out[name], _meta(meta))
         for name, (values, var_attrs) in extra.items():
             _put(nc, name, "f8", ("force",), values, var_attrs)
+        for name, meta in TANGENTIAL_VARIABLES.items():   # axis poisson: per load
+            if name in out:
+                _put(nc, name, meta.dtype, ("force",), out[name], _meta(meta))
+        if "slip_force" in out:   # axis friction: the partial-slip paths
+            for dim, (dtype, dim_attrs) in SLIP_COORDS.items():
+                nc.createDimension(dim, len(out[dim]))
+                _put(nc, dim, dtype, (dim,), out[dim], dim_attrs)
+            for name, meta in SLIP_VARIABLES.items():
+                _put(nc, name, meta.dtype, meta.dims, out[name], _meta(meta))
         for index, kept in sorted(out.get("fields", {}).items()):   # fields.at: one group per kept load
             _put_fields(nc, index, kept)
 

@@ -15,6 +15,7 @@ import numpy as np
 from ... import bem, surfaces
 from ...errors import ConvergenceError, DomainTooSmallError, IndentError
 from ..files import provenance, runfile
+from . import tangential
 from .path import LoadPath
 from .jobs import JobSettings
 
@@ -71,6 +72,12 @@ class PathSettings:
         Count each load's contact patches (:data:`roughcontact.study.files.runfile.PATCH_VARIABLES`).
     field_loads : tuple of int
         Loads (0-based) whose contact fields are kept (:data:`~roughcontact.study.files.runfile.FIELD_VARIABLES`).
+    poisson : float or None
+        ``ν`` of the half-space (axis ``poisson``): every load also gets its full-stick tangential
+        stiffness (:mod:`roughcontact.study.runs.tangential`); ``None``: none.
+    friction : float
+        Coulomb ``μ`` (axis ``friction``); ``> 0``: the loads *slip_loads* (0-based) also follow a
+        partial-slip path of *slip_steps* tangential loads.
     """
 
     length: float
@@ -87,6 +94,10 @@ class PathSettings:
     edge_contact: bool = False
     patches: bool = False
     field_loads: tuple = ()
+    poisson: float | None = None
+    friction: float = 0.0
+    slip_loads: tuple = ()
+    slip_steps: int = 0
 
 
 def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress=None, *,
@@ -115,6 +126,7 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     out["force"] = np.asarray(forces, dtype=float)
     if p.field_loads:
         out["fields"] = {}
+    tangential.allocate(out, p, total)
 
     def record(i, state) -> str:
         _record(p, out, i, state, cell)
@@ -163,6 +175,7 @@ def path_settings(s, **where) -> PathSettings:
     fields a job record does not hold (a measured run's tile ``length``, ``periodic``,
     ``edge_hint``, ``edge_contact``)."""
     own = ({"length": s.length, "periodic": s.periodic, "patches": s.patches, "field_loads": s.field_loads,
+            "poisson": s.poisson, "friction": s.friction, "slip_loads": s.slip_loads, "slip_steps": s.slip_steps,
             **s.arguments("solver")} if isinstance(s, JobSettings) else {})
     return PathSettings(e_star=s.e_star, tol=s.tol, maxiter=s.maxiter, stiffness_method=s.stiffness_method,
                         rel_step=s.rel_step, name=s.describe(), force_key=f"forces.{s.kind}.to", **{**own, **where})
@@ -205,6 +218,7 @@ def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
         out["largest_patch_cells"][i] = patches.largest
     if i in p.field_loads:
         out["fields"][i] = _fields(state, cell)
+    tangential.record(p, out, i, state, where)
     if "loading_stiffness" in out:  # with a hardness: the loading tangent along the plastic path too
         try:
             loading = bem.stiffness(state, method="loading", rel_step=p.rel_step)

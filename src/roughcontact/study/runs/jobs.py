@@ -50,6 +50,11 @@ class JobSettings(ForcePathRecord):
         Whether every load also counts its contact patches (``fields.patches``).
     field_loads : tuple of int
         The loads (0-based, of the path) that keep their contact fields (``fields.at``).
+    slip_loads : tuple of int
+        With ``friction > 0``: the loads (0-based) that follow the partial-slip path
+        (``tangential.at``); ``()`` otherwise.
+    slip_steps : int
+        With ``friction > 0``: tangential loads of each partial-slip path (``tangential.steps``); 0 otherwise.
     """
 
     hurst: float
@@ -60,6 +65,8 @@ class JobSettings(ForcePathRecord):
     realization_of: int | None = None
     patches: bool = False
     field_loads: tuple = ()
+    slip_loads: tuple = ()
+    slip_steps: int = 0
 
     def __getattr__(self, name: str):
         """The value of an optional axis (its paper value where :attr:`options` does not list it)."""
@@ -120,7 +127,8 @@ class JobSettings(ForcePathRecord):
         """The settings as a flat mapping of plain values: what a run file's ``config_hash``
         and attributes are made of. Optional axes at the paper's setting are left out."""
         out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
-               if field.name not in ("options", "realization_of", "patches", "field_loads")}
+               if field.name not in ("options", "realization_of", "patches", "field_loads", "slip_loads",
+                                     "slip_steps")}
         # each at its default is left out: runs of a grid's own surfaces, and runs that keep nothing
         # more than their per-load numbers, keep their hash
         if self.realization_of is not None:
@@ -129,6 +137,9 @@ class JobSettings(ForcePathRecord):
             out["patches"] = True
         if self.field_loads:
             out["field_loads"] = list(self.field_loads)
+        if self.slip_loads:   # friction > 0: the partial-slip path
+            out["slip_loads"] = list(self.slip_loads)
+            out["slip_steps"] = self.slip_steps
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
 
     def file_spec(self) -> runfile.RunFileSpec:
@@ -136,8 +147,10 @@ class JobSettings(ForcePathRecord):
         variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
         H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
         variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS,
-                     *(runfile.PATCH_VARIABLES if self.patches else ()))
-        dims = ("force",)
+                     *(runfile.PATCH_VARIABLES if self.patches else ()),
+                     *(runfile.TANGENTIAL_VARIABLES if self.poisson is not None else ()),
+                     *(runfile.SLIP_VARIABLES if self.slip_loads else ()))
+        dims = ("force", *(runfile.SLIP_COORDS if self.slip_loads else ()))
         if self.work_of_adhesion > 0:
             variables += (*runfile.RETRACT_VARIABLES, *runfile.PULL_OFF_VARIABLES)
             dims = ("force", "retract")
@@ -170,6 +183,9 @@ def job_settings(study, run: dict) -> JobSettings:
     radius = float(run["radius"])
     rng = study.forces[kind_of(radius)]
     solver = study.solver
+    sliding = float(run.get("friction", 0.0) or 0.0) > 0
+    slip_loads = ((tuple(range(rng.count)) if study.tangential.at is None
+                   else nearest_loads(rng.normalized(), study.tangential.at)) if sliding else ())
     return JobSettings(
         hurst=float(run["hurst"]), radius=radius, h_rms=float(run["h_rms"]), seed=int(run["seed"]),
         n=study.grid.n, length=study.grid.length, e_star=study.e_star,
@@ -177,7 +193,8 @@ def job_settings(study, run: dict) -> JobSettings:
         tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
         maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
         realization_of=study.grid.realization_of, patches=study.fields.patches,
-        field_loads=nearest_loads(rng.normalized(), study.fields.at))
+        field_loads=nearest_loads(rng.normalized(), study.fields.at), slip_loads=slip_loads,
+        slip_steps=study.tangential.steps if sliding else 0)
 
 
 def nearest_loads(forces, at) -> tuple:

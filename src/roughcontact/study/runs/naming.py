@@ -36,19 +36,21 @@ __all__ = [
     "combo_name",
     "sphere_names",
     "parse_combo",
+    "normal_representative",
     "AXES",
     "DEFAULTS",
     "kind_of",
 ]
 
 def __getattr__(name: str):
-    """``AXES``: the sweep axes of the runs of each surface kind, in the order of the merged
-    file's dimensions (then ``seed`` and ``force``); ``DEFAULTS``: the paper's setting of the
+    """``AXES``: the sweep axes of the normal problem of each surface kind, in the order of the
+    merged file's dimensions (then ``seed`` and ``force``; the tangential axes, whose
+    :attr:`~roughcontact.study.config.axes.Axis.normal` is ``False``, are not among them); ``DEFAULTS``: the paper's setting of the
     optional axes (a paraboloid, no roll-off, no cutoff, elastic), whose runs have the names
     and settings they had before the axes existed. Both read the registry
     :data:`roughcontact.study.config.axes.AXES` when asked, so an axis registered later is in them."""
     if name == "AXES":
-        return {kind: axes.names(kind) for kind in ("sphere", "flat")}
+        return {kind: axes.names(kind, normal=True) for kind in ("sphere", "flat")}
     if name == "DEFAULTS":
         return {a.name: a.paper for a in axes.optional_axes()}
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
@@ -137,10 +139,29 @@ def parse_combo(name: str) -> dict:
     return out
 
 
+def normal_representative(study, run: dict) -> bool:
+    """Whether *run* (a dict of :func:`runs` or :func:`combinations`) is the one of its normal
+    problem that the normal merged files hold: at the first of the study's values of every axis
+    that does not change the normal problem (:attr:`~roughcontact.study.config.axes.Axis.normal`
+    ``False``; its paper value for a kind that does not sweep it). Runs differing only in such
+    axes have the same normal load path."""
+    study = StudySettings.of(study)
+    for spec in axes.AXES.values():
+        if spec.normal:
+            continue
+        first = getattr(study, spec.name)[0] if run["kind"] in spec.kinds and getattr(study, spec.name) else spec.paper
+        if run.get(spec.name, spec.paper) != first:
+            return False
+    return True
+
+
 def sphere_names(study, *, adhesive: bool | None = None) -> list[str]:
-    """:func:`combo_name` of every sphere combination of the study, in sweep order; *adhesive*:
-    only those with (``True``) or without (``False``) a work of adhesion."""
-    return [combo_name(c) for c in combinations(study) if c["kind"] == "sphere"
+    """:func:`combo_name` of every sphere combination of the normal problem of the study
+    (:func:`normal_representative`, named without the tangential axes), in sweep order;
+    *adhesive*: only those with (``True``) or without (``False``) a work of adhesion."""
+    normal = axes.names(normal=True)
+    return [combo_name({a: c[a] for a in normal}) for c in combinations(study)
+            if c["kind"] == "sphere" and normal_representative(study, c)
             and (adhesive is None or (c.get("work_of_adhesion", 0.0) > 0) == adhesive)]
 
 

@@ -35,8 +35,10 @@ __all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema
 #: :attr:`Axis.transform` of the roughness heights before the body is added), the body it is
 #: superposed on (a keyword of ``rough_sphere`` only), the contact solver (a keyword of
 #: :func:`roughcontact.bem.iter_load_path`), or the interaction of the surfaces (passed nowhere:
-#: adhesion, off its paper value the run is an adhesive one, :mod:`roughcontact.study.runs.adhesive`)
-ROLES = ("roughness", "body", "solver", "interaction")
+#: adhesion, off its paper value the run is an adhesive one, :mod:`roughcontact.study.runs.adhesive`),
+#: or the tangential problem solved at each load of the normal path (passed to it:
+#: :class:`roughcontact.study.runs.indent.PathSettings`, :mod:`roughcontact.study.runs.tangential`)
+ROLES = ("roughness", "body", "solver", "interaction", "tangential")
 
 
 def kind_of(radius) -> str:
@@ -88,6 +90,14 @@ class Axis:
     keyword : str
         The keyword the axis feeds to the function of its role (default: :attr:`name`); an
         axis at its paper value is not passed at all.
+    normal : bool
+        Whether the axis changes the normal contact problem (the load path ``F(d)``, ``k``).
+        ``False`` (``poisson``, ``friction``: the tangential problem, its coupling to the normal
+        one neglected): runs that differ only in such axes have the same normal path, so the
+        normal merged files (``stiffness.nc``) and every table of the normal problem hold the
+        runs at the first of its values, without it as a dimension or a column (a study that
+        leaves it out has every output it had before); only the files of its own path kind
+        (``tangential/tangential.nc``) have it as a dimension. Not part of :func:`paper_coordinates`.
     transform : callable or None
         ``transform(heights, value, run) -> heights``: how a ``roughness`` axis acts when no
         generator takes it as a keyword: applied to the roughness heights (mean 0, rms
@@ -122,6 +132,7 @@ class Axis:
     in_units: Callable | None = None
     keyword: str = ""
     transform: Callable | None = None
+    normal: bool = True
 
     def __post_init__(self):
         if not self.keyword:
@@ -183,14 +194,17 @@ def axis(name: str) -> Axis:
     return AXES[name]
 
 
-def names(kind: str | None = None) -> tuple[str, ...]:
-    """The axes' names in order; those a *kind* of surface sweeps if given."""
-    return tuple(a.name for a in AXES.values() if kind is None or kind in a.kinds)
+def names(kind: str | None = None, *, normal: bool | None = None) -> tuple[str, ...]:
+    """The axes' names in order; those a *kind* of surface sweeps if given; with *normal*, only
+    those whose :attr:`Axis.normal` is it (``True``: the dimensions of the normal merged files)."""
+    return tuple(a.name for a in AXES.values() if (kind is None or kind in a.kinds)
+                 and (normal is None or a.normal == normal))
 
 
-def optional_axes() -> tuple[Axis, ...]:
-    """The axes with a paper setting (off it, a run's name has their tag)."""
-    return tuple(a for a in AXES.values() if a.optional)
+def optional_axes(*, normal: bool | None = None) -> tuple[Axis, ...]:
+    """The axes with a paper setting (off it, a run's name has their tag); with *normal*, only
+    those whose :attr:`Axis.normal` is it."""
+    return tuple(a for a in AXES.values() if a.optional and (normal is None or a.normal == normal))
 
 
 def schema_properties() -> dict:
@@ -209,8 +223,10 @@ def coordinate_attrs(name: str) -> dict:
 
 def paper_coordinates(length: float) -> dict:
     """``{name: coordinate}`` of the paper's setting of every optional axis, as merged-file
-    coordinates (:meth:`Axis.coordinate`; a roll-off of ``None`` is ``length``)."""
-    return {a.name: a.coordinate(a.paper, length) for a in optional_axes()}
+    coordinates (:meth:`Axis.coordinate`; a roll-off of ``None`` is ``length``); the axes of the
+    normal problem only (:attr:`Axis.normal`: the tangential axes leave the normal one as the
+    paper has it)."""
+    return {a.name: a.coordinate(a.paper, length) for a in optional_axes(normal=True)}
 
 
 def off_paper(combination, length: float) -> dict:
@@ -259,7 +275,7 @@ def nullable(**bounds) -> dict:
 
 #: the modules of the registry's own axes, in the order of the merged files' dimensions; further
 #: modules of this package follow by name (their axes after these)
-_ORDER = ("rough_body", "spectrum", "plasticity", "adhesion")
+_ORDER = ("rough_body", "spectrum", "plasticity", "adhesion", "tangential")
 
 
 def _load() -> None:
