@@ -25,6 +25,10 @@ def _check_poisson(cfg: dict, kinds: set) -> None:
     if len(given) != len(cfg["poisson"]):
         raise ConfigError(f"config key 'poisson' = {_text(cfg['poisson'])} mixes null with Poisson ratios; allowed: "
                           "[null] (no tangential problem) or Poisson ratios -1 < nu <= 0.5 only", key="poisson")
+    if not cfg["hurst"]:
+        raise ConfigError(f"config key 'poisson' = {_text(given)} acts on the generated rough spheres, and the study "
+                          "has none (hurst is empty: measured inputs only); allowed: [null], or generated surfaces "
+                          "(hurst, h_rms) with a finite radius", key="poisson")
     if "sphere" not in kinds:
         raise ConfigError(f"config key 'poisson' = {_text(given)} needs a sphere: the tangential problem is solved for "
                           "the rough spheres (finite radius) only; allowed: [null], or a finite radius", key="poisson")
