@@ -36,6 +36,8 @@ localrules:
     summary,
     merge_coarse,
     grid_error,
+    merge_fine,
+    fine_reference,
     adhesion,
     adhesion_figures,
     stickiness,
@@ -67,6 +69,7 @@ rule all:
                 rules.figures.output,
                 rules.summary.output,
             ]
+            + ([rules.fine_reference.output] if FINE is not None else [])
             if STUDY.generated
             else []
         ),

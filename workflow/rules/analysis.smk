@@ -66,6 +66,48 @@ rule grid_error:
         "../scripts/grid_error.py"
 
 
+# The fine reference's sphere runs on grid.fine (their small loads), merged; the study's grid
+# error against them and the converged reference of the fractal branch (study.analysis.fine_reference).
+rule merge_fine:
+    input:
+        runs=fine_run_files,
+    output:
+        stiffness="results/merge_fine/stiffness.nc",
+        ensemble="results/merge_fine/ensemble.nc",
+    log:
+        "logs/merge_fine.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=FINE_CONFIG,
+    script:
+        "../scripts/merge.py"
+
+
+rule fine_reference:
+    input:
+        stiffness=rules.merge.output.stiffness,
+        fine=rules.merge_fine.output.stiffness,
+        coarse=coarse_stiffness,
+    output:
+        csv="results/fine_reference.csv",
+        html=report(
+            "results/fine_reference.html",
+            caption="../report/fine_reference_table.rst",
+            category="Tables",
+            labels={"table": "fine reference"},
+        ),
+    log:
+        "logs/fine_reference.log",
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+        code=CODE["grid_error"],  # the estimate's rule and constants
+    script:
+        "../scripts/fine_reference.py"
+
+
 rule fit_zeta:
     input:
         stiffness=rules.merge.output.stiffness,
@@ -173,6 +215,7 @@ rule models:
         stiffness=rules.merge.output.stiffness,
         zeta=rules.fit_zeta.output.csv,
         grid_error=grid_error_table,
+        fine_reference=fine_reference_table,
     output:
         csv="results/models.csv",
         nc="results/models.nc",

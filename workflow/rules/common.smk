@@ -25,6 +25,7 @@ from roughcontact.study.runs import (
 from roughcontact.study.config.settings import (
     StudySettings,
     coarse_config,
+    fine_config,
 )  # noqa: E402
 from roughcontact.study.analysis import adhesion as study_adhesion  # noqa: E402
 from roughcontact.study.config.stickiness import StickinessSettings  # noqa: E402
@@ -52,6 +53,9 @@ COARSE_CONFIG = (
     else None
 )
 COARSE = StudySettings.of(COARSE_CONFIG) if COARSE_CONFIG is not None else None
+# the fine reference of the small loads (grid.fine): the sphere runs' loads up to grid.fine_to
+FINE_CONFIG = fine_config(config) if STUDY.grid.fine is not None else None
+FINE = StudySettings.of(FINE_CONFIG) if FINE_CONFIG is not None else None
 
 # The workflow's paths: one run file, log and benchmark per (combination, seed).
 RUN_PATTERN = "results/runs/{combo}/seed{seed}.nc"
@@ -62,10 +66,15 @@ BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_seed{seed}.tsv"
 COARSE_RUN_PATTERN = "results/indent_coarse/{combo}/seed{seed}.nc"
 COARSE_LOG_PATTERN = "logs/indent_coarse/{combo}_seed{seed}.log"
 COARSE_BENCHMARK_PATTERN = "results/benchmarks/indent_coarse/{combo}_seed{seed}.tsv"
+# ... and of the fine reference (grid.fine)
+FINE_RUN_PATTERN = "results/indent_fine/{combo}/seed{seed}.nc"
+FINE_LOG_PATTERN = "logs/indent_fine/{combo}_seed{seed}.log"
+FINE_BENCHMARK_PATTERN = "results/benchmarks/indent_fine/{combo}_seed{seed}.tsv"
 # ... of an indent job of several runs (jobs.batch > 1): one benchmark per job, "{block}" its
 # seeds (e.g. seeds0_5); the run files and logs stay one per run
 BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent/{combo}_{block}.tsv"
 COARSE_BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent_coarse/{combo}_{block}.tsv"
+FINE_BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent_fine/{combo}_{block}.tsv"
 # The runs of a combination go to jobs in blocks of jobs.batch seeds (1: a job per run).
 INDENT_BATCH = STUDY.jobs.batch
 INDENT_BLOCKS = study_runs.seed_blocks(STUDY.seeds, INDENT_BATCH)
@@ -84,6 +93,24 @@ def coarse_run_files(wildcards):
     if COARSE is None:
         raise ValueError("grid.coarse is not set: no coarse runs")
     return study_runs.run_paths(COARSE, COARSE_RUN_PATTERN)
+
+
+def fine_run_files(wildcards):
+    """Every run file of the fine reference on grid.fine (its sphere runs at the small loads:
+    fine_config), in the order merge expects."""
+    if FINE is None:
+        raise ValueError("grid.fine is not set: no fine runs")
+    return study_runs.run_paths(FINE, FINE_RUN_PATTERN)
+
+
+def coarse_stiffness(wildcards):
+    """The coarse companion's merged runs where grid.coarse is set (the fine reference's third grid)."""
+    return rules.merge_coarse.output.stiffness if COARSE is not None else []
+
+
+def fine_reference_table(wildcards):
+    """The fine reference where grid.fine is set (the models rule's optional input)."""
+    return rules.fine_reference.output.csv if FINE is not None else []
 
 
 # The adhesive runs (work_of_adhesion > 0), in the order their merge expects; empty without.

@@ -49,6 +49,29 @@ if INDENT_BATCH == 1:
         script:
             "../scripts/indent.py"
 
+    # The same run's small loads on the fine grid of the reference (grid.fine).
+    rule indent_fine:
+        output:
+            run=FINE_RUN_PATTERN,
+        log:
+            FINE_LOG_PATTERN,
+        benchmark:
+            FINE_BENCHMARK_PATTERN
+        wildcard_constraints:
+            combo=r"H[^/]+",
+            seed=r"\d+",
+        conda:
+            "../../envs/roughcontact.yaml"
+        threads: 1
+        resources:
+            mem_mb=indent_mem_mb,
+            runtime=indent_runtime,  # minutes
+        params:
+            settings=lambda wc: study_settings.settings_from_wildcards(FINE, wc),
+            solver_version=SOLVER_VERSION,  # bumped on purpose when results change
+        script:
+            "../scripts/indent.py"
+
 else:
     for block in INDENT_BLOCKS:
 
@@ -101,6 +124,33 @@ else:
                 runtime=batch_runtime(len(block.seeds)),  # minutes
             params:
                 settings=batch_settings(COARSE, block.seeds),
+                solver_version=SOLVER_VERSION,  # bumped on purpose when results change
+            script:
+                "../scripts/indent.py"
+
+        # The same runs' small loads on the fine grid of the reference (grid.fine).
+        rule:
+            name:
+                f"indent_fine_{block.name}"
+            output:
+                run=[
+                    FINE_RUN_PATTERN.format(combo="{combo}", seed=s)
+                    for s in block.seeds
+                ],
+            log:
+                [FINE_LOG_PATTERN.format(combo="{combo}", seed=s) for s in block.seeds],
+            benchmark:
+                FINE_BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
+            wildcard_constraints:
+                combo=r"H[^/]+",
+            conda:
+                "../../envs/roughcontact.yaml"
+            threads: 1
+            resources:
+                mem_mb=indent_mem_mb,
+                runtime=batch_runtime(len(block.seeds)),  # minutes
+            params:
+                settings=batch_settings(FINE, block.seeds),
                 solver_version=SOLVER_VERSION,  # bumped on purpose when results change
             script:
                 "../scripts/indent.py"

@@ -169,6 +169,7 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
                 )
     _check_fields(cfg)
     _check_conductance(cfg)
+    _check_fine_grid(cfg)
     if not cfg["hurst"]:  # measured inputs only: the checks of the generated surfaces do not apply
         return cfg
     if "flat" in kinds:
@@ -202,6 +203,42 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
         if axis.check is not None:
             axis.check(cfg, kinds)
     return cfg
+
+
+def _check_fine_grid(cfg: dict) -> None:
+    """``grid.fine``: a finer grid than ``n`` whose surfaces the study then presses (``grid.realization_of``
+    resolved to it where absent; absent ``grid.fine``: nothing changes)."""
+    grid = cfg["grid"]
+    fine = grid.get("fine")
+    if fine is None:
+        if grid.get("fine_to") is not None:
+            raise ConfigError(f"config key 'grid.fine_to' = {grid['fine_to']:g} needs grid.fine; allowed: null, or give "
+                              "grid.fine (the finer grid of the small loads)", key="grid.fine_to")
+        return
+    grid["fine"] = fine = int(fine)
+    if fine <= grid["n"]:
+        raise ConfigError(f"config key 'grid.fine' = {fine} is not allowed; allowed: null or a grid of more than grid.n "
+                          f"= {grid['n']} points (e.g. {2 * grid['n'] - 1}, twice as fine)", key="grid.fine")
+    source = grid.get("realization_of")
+    if source is not None and int(source) < fine:
+        raise ConfigError(f"config key 'grid.realization_of' = {source} is not allowed with grid.fine = {fine}; allowed: "
+                          f"null (the surfaces of grid.fine) or a grid of at least {fine} points", key="grid.realization_of")
+    if not cfg["hurst"] or not any(math.isfinite(r) for r in cfg["radius"]):
+        raise ConfigError(f"config key 'grid.fine' = {fine} needs generated sphere runs (hurst, h_rms and a finite "
+                          "radius); allowed: null", key="grid.fine")
+    grid["realization_of"] = fine if source is None else int(source)
+    rng = cfg["forces"]["sphere"]
+    if grid.get("fine_to") is None:   # the largest crossover of eq. 17 (zeta of eq. 13) of the sweep
+        crossover = max(paper.crossover_force(r, hurst=h, h_rms=s, length=grid["length"], e_star=1.0,
+                                              zeta=paper.zeta_estimate(h), exponent=m) / grid["length"] ** 2
+                        for r in cfg["radius"] if math.isfinite(r) for h in cfg["hurst"] for s in cfg["h_rms"]
+                        for m in cfg["exponent"])
+        grid["fine_to"] = float(min(rng["to"], crossover))
+    grid["fine_to"] = float(grid["fine_to"])
+    second = float(np.geomspace(rng["from"], rng["to"], int(rng["count"]))[1])
+    if not second <= grid["fine_to"] <= rng["to"]:
+        raise ConfigError(f"config key 'grid.fine_to' = {grid['fine_to']:g} is outside the spheres' load path; allowed: "
+                          f"{second:.4g} (its second load) ... {rng['to']:g} (forces.sphere.to)", key="grid.fine_to")
 
 
 def _check_fields(cfg: dict) -> None:

@@ -45,6 +45,7 @@ __all__ = [
     "SpectrumInput",
     "StudySettings",
     "coarse_config",
+    "fine_config",
 ]
 
 
@@ -69,6 +70,8 @@ class GridSettings:
     length: float                   #: side ``L`` of the periodic cell (length unit)
     realization_of: int | None = None   #: finer grid whose surfaces are pressed (``None``: own)
     coarse: int | None = None       #: coarser grid of the grid error (``None``: none)
+    fine: int | None = None         #: finer grid of the small loads' reference (``None``: none)
+    fine_to: float | None = None    #: ``F/(E* L²)``: the largest load pressed on ``fine``
 
     @property
     def spacing(self) -> float:
@@ -277,7 +280,9 @@ class StudySettings:
             grid=GridSettings(n=int(grid["n"]), length=float(grid["length"]),
                               realization_of=None if grid.get("realization_of") is None
                               else int(grid["realization_of"]),
-                              coarse=None if grid.get("coarse") is None else int(grid["coarse"])),
+                              coarse=None if grid.get("coarse") is None else int(grid["coarse"]),
+                              fine=None if grid.get("fine") is None else int(grid["fine"]),
+                              fine_to=None if grid.get("fine_to") is None else float(grid["fine_to"])),
             e_star=float(cfg["e_star"]),
             # floats: a configuration read back from JSON has "inf"; an optional axis the mapping lacks
             # (a file's configuration from before the axis was registered) at its paper value
@@ -356,6 +361,7 @@ def coarse_config(cfg) -> dict:
     *cfg*. ``ValueError`` without
     ``grid.coarse`` or without a sphere."""
     grid = dict(cfg["grid"])
+    grid.pop("fine", None), grid.pop("fine_to", None)   # the companions press on the study's grid only
     coarse = grid.pop("coarse", None)
     if coarse is None:
         raise ValueError("the study has no grid.coarse: there is no coarse companion study")
@@ -366,6 +372,30 @@ def coarse_config(cfg) -> dict:
     # the grid error is the normal stiffness's: the tangential axes at their paper setting
     tangential = {a.name: [a.paper] for a in axes.optional_axes(normal=False) if a.name in cfg}
     return {**cfg, **tangential, "radius": spheres, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
+
+
+def fine_config(cfg) -> dict:
+    """The resolved configuration of the fine reference of *cfg* (resolved, with ``grid.fine``): the
+    sphere runs on ``grid.n`` = ``grid.fine`` with the same surfaces (``grid.realization_of`` where
+    it is finer still, else the fine grid's own), at the loads of the sphere load path up to
+    ``grid.fine_to`` (the same loads: a log grid cut short), counting their contact patches (the
+    single-asperity regime, :mod:`roughcontact.study.analysis.fine_reference`), without contact
+    fields, grid-error companions or the tangential axes. ``ValueError`` without ``grid.fine``."""
+    import numpy as np
+
+    grid = dict(cfg["grid"])
+    fine, to = grid.pop("fine", None), grid.pop("fine_to", None)
+    if fine is None:
+        raise ValueError("the study has no grid.fine: there is no fine reference")
+    rng = dict(cfg["forces"]["sphere"])
+    path = np.geomspace(rng["from"], rng["to"], int(rng["count"]))
+    last = max(1, int(np.searchsorted(path, to * (1 + 1e-12), side="right")) - 1)
+    source = grid.get("realization_of")
+    tangential = {a.name: [a.paper] for a in axes.optional_axes(normal=False) if a.name in cfg}
+    return {**cfg, **tangential, "radius": [r for r in cfg["radius"] if math.isfinite(r)],
+            "grid": {**grid, "n": int(fine), "coarse": None, "realization_of": source if source and source > fine else None},
+            "forces": {"sphere": {**rng, "to": float(path[last]), "count": last + 1}},
+            "fields": {**(cfg.get("fields") or {}), "patches": True, "at": []}}
 
 
 def _tangential(section: dict) -> TangentialSettings:

@@ -27,6 +27,8 @@ FILES = {
     "crossover": ("results/crossover.csv", "crossover"),
     "exponents": ("results/exponents.csv", "exponents"),
     "grid_error": ("results/grid_error.csv", "grid_error"),
+    "fine_stiffness": ("results/merge_fine/stiffness.nc", "merge_fine"),
+    "fine_reference": ("results/fine_reference.csv", "fine_reference"),
     "claims": ("results/claims.csv", "claims"),
     "models": ("results/models.csv", "models"),
     "models_fit": ("results/models.nc", "models"),
@@ -43,6 +45,7 @@ FILES = {
 RUN_DIRECTORIES = {
     "indent": "results/runs",
     "indent_coarse": "results/indent_coarse",
+    "indent_fine": "results/indent_fine",
     "stickiness_run": "results/stickiness_run",
 }
 

@@ -116,6 +116,13 @@ TABLE_PAGES = {
     "grid_error": ("Grid error", "The stiffness on grid.coarse against the study's grid at every load, and "
                                  "the estimate of the study grid's error from it (grid_error_estimate). "
                                  "Every digit: results/grid_error.csv."),
+    "fine_reference": ("Fine reference", "The study's stiffness at the small loads against the same surfaces on "
+                                         "grid.fine: study_grid_error k_n/k_N - 1 with its interval, the fine "
+                                         "grid's own error estimate, grid_error_estimate (their bound, used by "
+                                         "the model scorecard at these loads), the reference stiffness "
+                                         "(Richardson's where the three grids are monotone) and the loads where "
+                                         "one asperity carries the load (single_asperity). Every digit: "
+                                         "results/fine_reference.csv."),
     "pull_off": ("Pull-off", "The pull-off force of the adhesive runs over JKR's with the interval over seeds. "
                              "Every digit: results/adhesion/pull_off.csv."),
     "stickiness": ("Stickiness", "Pastewka & Robbins' stickiness: the loading slope dF/dA per (H, N) with its "
