@@ -108,6 +108,16 @@ def test_single_asperity_share_is_measured():
     assert not table["single_asperity"].any() and 100 / 160 < SINGLE_ASPERITY_SHARE
 
 
+def test_single_asperity_is_the_leading_run_of_loads_only():
+    """Shares 0.9, 0.85, 0.5, 0.95: the first two loads; the last (a merged contact) is not."""
+    k_inf = np.array([1.0, 2.0, 3.0, 4.0])
+    fine = _ds(200, k_inf, 100, 0, loads=4)
+    fine["largest_patch_cells"][...] = np.array([90, 85, 50, 95])
+    table = fine_reference(_ds(100, k_inf, 40, 36, loads=4), fine, None, n=100, n_fine=200, min_cells=5,
+                           bootstrap=100, confidence=0.95)
+    assert table["single_asperity"].tolist() == [True, True, False, False]
+
+
 def test_the_fine_reference_replaces_the_coarse_grid_error_at_its_loads():
     coarse = pd.DataFrame({"hurst": [0.7, 0.7], "force_normalized": [1e-5, 1e-3], "grid_error_estimate": [0.5, 0.02],
                            "grid_error": [0.4, 0.01]})

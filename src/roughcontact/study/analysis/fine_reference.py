@@ -18,10 +18,11 @@ contact, small there). Per sphere combination and load of the companion (``fine_
   (:func:`~roughcontact.study.analysis.grid_error.richardson`); ``reference_stiffness`` is it, else
   ``k̄_N``;
 * ``largest_patch_share`` — the mean over seeds of the largest contact patch's share of the contact
-  cells on ``N`` (:func:`roughcontact.bem.contact_patches`), and ``single_asperity`` where it is at
-  least :data:`SINGLE_ASPERITY_SHARE`: the smallest loads, where one asperity carries the load and
-  the sphere is Hertz-like again on that asperity's radius (which the grid sets), are measured, not
-  guessed from a cell count, and are not the fractal branch.
+  cells on ``N`` (:func:`roughcontact.bem.contact_patches`), and ``single_asperity`` on the loads
+  from the smallest one up to the first where it falls below :data:`SINGLE_ASPERITY_SHARE`: the
+  smallest loads, where one asperity carries the load and the sphere is Hertz-like again on that
+  asperity's radius (which the grid sets), are measured, not guessed from a cell count, and are not
+  the fractal branch (a contact that has merged into one patch at high loads is not flagged).
 
 Forces ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
 """
@@ -78,7 +79,7 @@ def fine_reference(study_ds, fine_ds, coarse_ds=None, *, n: int, n_fine: int, n_
             k_coarse.append(float(coarse_ds["stiffness"].sel(pick).sel(seed=seeds).isel(at).mean()))
     table["stiffness"], table["fine_stiffness"] = k_study, k_fine
     table["largest_patch_share"] = share
-    table["single_asperity"] = table["largest_patch_share"] >= SINGLE_ASPERITY_SHARE
+    table["single_asperity"] = _leading(table, axes)
     table["reference_stiffness"] = table["fine_stiffness"]
     if coarse_ds is not None and n_coarse is not None:
         table["coarse_stiffness"] = k_coarse
@@ -88,6 +89,19 @@ def fine_reference(study_ds, fine_ds, coarse_ds=None, *, n: int, n_fine: int, n_
         table["reference_stiffness"] = np.where(np.isfinite(extrapolated), extrapolated, table["fine_stiffness"])
     table["grid_n"], table["fine_grid_n"] = n, n_fine
     return table
+
+
+def _leading(table, axes) -> np.ndarray:
+    """``single_asperity`` per row: the loads of a combination from its smallest one up to the first
+    whose largest patch holds less than :data:`SINGLE_ASPERITY_SHARE` (a contact that has merged into
+    one large patch at higher loads is the Hertz branch, not a single asperity)."""
+    flag = np.zeros(len(table), dtype=bool)
+    for _, rows in table.groupby(axes, sort=False, dropna=False) if axes else [(None, table)]:
+        for index in rows.sort_values("force_normalized").index:
+            if not table.at[index, "largest_patch_share"] >= SINGLE_ASPERITY_SHARE:
+                break
+            flag[table.index.get_loc(index)] = True
+    return flag
 
 
 def combined_grid_error(coarse, fine):
