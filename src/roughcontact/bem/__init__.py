@@ -1,7 +1,7 @@
 """Boundary-element method: a rigid indenter pressed into an elastic half-space.
 
 The face is :func:`solve` (one load), :func:`load_path` and :func:`iter_load_path`
-(warm-started loads), :func:`stiffness` (``k = dF/dd`` of a solved state),
+(warm-started loads), :func:`stiffness` (``k = dF/dd`` of a solved state, :mod:`.incremental`),
 :func:`displacement` and :class:`ContactState`. Behind it: the half-space influence
 operators (:mod:`.operators`), the constrained conjugate-gradient kernels
 (:mod:`.solver`), the windows and working sets they run on (:mod:`.active_sets`), the
@@ -22,8 +22,8 @@ from .contact import (
     iter_load_path,
     load_path,
     solve,
-    stiffness,
 )
+from .incremental import stiffness
 from .patches import Patches, contact_patches
 from .tangential import SlipPath, SlipState, partial_slip, tangential_stiffness
 from .cj_superposition import CiavarellaJagerPath, ciavarella_jager

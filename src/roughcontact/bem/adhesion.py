@@ -56,7 +56,8 @@ from ..errors import ConvergenceError
 from .active_sets import bounding_box
 from .operators import operator_for
 
-__all__ = ["DETACHMENT_CONSTANT", "AdhesivePath", "adhesive_force_path", "adhesive_path", "critical_stress"]
+__all__ = ["DETACHMENT_CONSTANT", "AdhesivePath", "CohesivePath", "adhesive_force_path", "adhesive_path",
+           "critical_stress"]
 
 #: ``c`` of the detachment criterion ``σ_c = √(c E* w/Δx)``, calibrated on JKR (module docstring)
 DETACHMENT_CONSTANT = 2.1
@@ -306,3 +307,40 @@ def adhesive_force_path(z, forces, *, step: float, length: float, e_star: float,
         if on_state is not None:
             on_state(len(records) - 1, contact)
     return _path(records, solver, float(least) if records else math.nan, detach_depth)
+
+
+@dataclasses.dataclass(frozen=True)
+class CohesivePath(AdhesivePath):
+    """An :class:`~roughcontact.bem.adhesion.AdhesivePath` of the cohesive-zone model, with its zone.
+
+    Attributes
+    ----------
+    depth, force, contact_cells, contact_radius :
+        As :class:`~roughcontact.bem.adhesion.AdhesivePath`: ``force`` includes the zone's tension,
+        ``contact_cells`` are the cells in contact (``g = 0``, ``q > 0``).
+    iterations : numpy.ndarray
+        Updates of ``S`` (contact solves) of each approach.
+    pull_off_force : float
+        The most tensile force of the path (force): under load control, the pull-off.
+    detach_depth : float
+        The first approach at which no cell is left in contact (``g = 0``) after some were: the
+        zone may still pull there (NaN if the contact never comes off).
+    zone_cells : numpy.ndarray
+        Cells of the cohesive zone per approach: within range, not in contact (``q = 0``).
+    zone_radius : numpy.ndarray
+        ``√((A_C + A_Z)/π)``: the radius of the area inside the zone's outer edge (length;
+        Maugis' ``c``).
+    fallback : numpy.ndarray
+        Bool per approach: the ``"energy"`` edge rule's updates cycled and the ``"metastable"``
+        rule settled the approach (module docstring, The edge).
+    cohesive_stress : float
+        ``σ₀`` (pressure).
+    interaction_range : float
+        ``δ_t = w/σ₀`` (length).
+    """
+
+    zone_cells: np.ndarray
+    zone_radius: np.ndarray
+    fallback: np.ndarray
+    cohesive_stress: float
+    interaction_range: float

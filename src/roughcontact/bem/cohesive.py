@@ -67,8 +67,8 @@ import numpy as np
 from .._validate import check_finite, check_finite_positive
 from ..errors import ConvergenceError, DomainTooSmallError
 from .active_sets import bounding_box
-from .adhesion import AdhesivePath
-from .operators import FreeSpaceOperator, PeriodicOperator, operator_for
+from .adhesion import CohesivePath
+from .operators import operator_for, periodic_windows
 
 __all__ = ["EDGE_RULES", "CohesivePath", "cohesive_path"]
 
@@ -78,43 +78,6 @@ _REFRESH = 50
 #: How a cell at the zone's outer edge is counted (module docstring): the state of lower energy, or
 #: the state it was in while that is consistent
 EDGE_RULES = ("energy", "metastable")
-
-
-@dataclasses.dataclass(frozen=True)
-class CohesivePath(AdhesivePath):
-    """An :class:`~roughcontact.bem.adhesion.AdhesivePath` of the cohesive-zone model, with its zone.
-
-    Attributes
-    ----------
-    depth, force, contact_cells, contact_radius :
-        As :class:`~roughcontact.bem.adhesion.AdhesivePath`: ``force`` includes the zone's tension,
-        ``contact_cells`` are the cells in contact (``g = 0``, ``q > 0``).
-    iterations : numpy.ndarray
-        Updates of ``S`` (contact solves) of each approach.
-    pull_off_force : float
-        The most tensile force of the path (force): under load control, the pull-off.
-    detach_depth : float
-        The first approach at which no cell is left in contact (``g = 0``) after some were: the
-        zone may still pull there (NaN if the contact never comes off).
-    zone_cells : numpy.ndarray
-        Cells of the cohesive zone per approach: within range, not in contact (``q = 0``).
-    zone_radius : numpy.ndarray
-        ``√((A_C + A_Z)/π)``: the radius of the area inside the zone's outer edge (length;
-        Maugis' ``c``).
-    fallback : numpy.ndarray
-        Bool per approach: the ``"energy"`` edge rule's updates cycled and the ``"metastable"``
-        rule settled the approach (module docstring, The edge).
-    cohesive_stress : float
-        ``σ₀`` (pressure).
-    interaction_range : float
-        ``δ_t = w/σ₀`` (length).
-    """
-
-    zone_cells: np.ndarray
-    zone_radius: np.ndarray
-    fallback: np.ndarray
-    cohesive_stress: float
-    interaction_range: float
 
 
 def _full_contact(d: float) -> str:
@@ -146,33 +109,6 @@ class _Lift:
 _NO_LIFT = _Lift((slice(0, 0), slice(0, 0)), np.zeros((0, 0)))
 
 
-class _PeriodicWindows(FreeSpaceOperator):
-    """The periodic half-space on windows of the grid: the windowed, zero-padded convolution of
-    :class:`~roughcontact.bem.operators.FreeSpaceOperator` with the periodic kernel as its table.
-
-    The periodic displacement under a unit cell pressure, ``k[i mod n, j mod n]``, is even in each
-    offset, so the table ``k[|i|, |j|]`` of the offsets ``|i|, |j| < n`` is all a window needs:
-    for pressures inside a window of at most ``n`` cells a side the linear convolution on the
-    padded window gives the periodic displacement on the window exactly (round-off apart), at the
-    cost of the window's FFT instead of the grid's.
-    """
-
-    periodic = True
-
-    def __init__(self, operator: PeriodicOperator):
-        self._periodic_kernel = operator._kernel
-        super().__init__(operator.n, operator.n * operator.spacing, operator.e_star)
-
-    def _coefficients(self, size: int) -> np.ndarray:
-        return self._periodic_kernel
-
-
-@functools.lru_cache(maxsize=4)
-def _periodic_windows(operator: PeriodicOperator) -> _PeriodicWindows:
-    """One :class:`_PeriodicWindows` per (cached) periodic operator, so its spectra are reused."""
-    return _PeriodicWindows(operator)
-
-
 class _CohesiveSolver:
     """The solve at one approach (module docstring) on one grid."""
 
@@ -193,7 +129,7 @@ class _CohesiveSolver:
         self.sigma = float(cohesive_stress)
         self.range = work_of_adhesion / cohesive_stress
         self.operator = operator_for(n, length, e_star, periodic)
-        self.windows = _periodic_windows(self.operator) if periodic else self.operator
+        self.windows = periodic_windows(self.operator) if periodic else self.operator
         self.periodic = periodic
         self.heights = z - z.min()
         self.tol, self.maxiter, self.max_updates = tol, maxiter, max_updates

@@ -25,7 +25,8 @@ import functools
 import numpy as np
 import scipy.fft
 
-__all__ = ["love_coefficients", "FreeSpaceOperator", "PeriodicOperator", "DenseOperator", "operator_for"]
+__all__ = ["love_coefficients", "FreeSpaceOperator", "PeriodicOperator", "DenseOperator", "operator_for",
+           "PeriodicWindows", "periodic_windows"]
 
 
 def love_coefficients(n: int) -> np.ndarray:
@@ -348,3 +349,30 @@ def operator_for(n: int, length: float, e_star: float, periodic: bool):
     """Shared, cached operator for a grid (kernel spectra are reused across solves)."""
     cls = PeriodicOperator if periodic else FreeSpaceOperator
     return cls(n, length, e_star)
+
+
+class PeriodicWindows(FreeSpaceOperator):
+    """The periodic half-space on windows of the grid: the windowed, zero-padded convolution of
+    :class:`~roughcontact.bem.operators.FreeSpaceOperator` with the periodic kernel as its table.
+
+    The periodic displacement under a unit cell pressure, ``k[i mod n, j mod n]``, is even in each
+    offset, so the table ``k[|i|, |j|]`` of the offsets ``|i|, |j| < n`` is all a window needs:
+    for pressures inside a window of at most ``n`` cells a side the linear convolution on the
+    padded window gives the periodic displacement on the window exactly (round-off apart), at the
+    cost of the window's FFT instead of the grid's.
+    """
+
+    periodic = True
+
+    def __init__(self, operator: PeriodicOperator):
+        self._periodic_kernel = operator._kernel
+        super().__init__(operator.n, operator.n * operator.spacing, operator.e_star)
+
+    def _coefficients(self, size: int) -> np.ndarray:
+        return self._periodic_kernel
+
+
+@functools.lru_cache(maxsize=4)
+def periodic_windows(operator: PeriodicOperator) -> PeriodicWindows:
+    """One :class:`PeriodicWindows` per (cached) periodic operator, so its spectra are reused."""
+    return PeriodicWindows(operator)
