@@ -1,4 +1,4 @@
-"""Tangential influence operators: surface displacement ``u_x`` from a tangential traction ``q_x``.
+"""Tangential influence operators: surface displacements ``u_x`` (and ``u_y``) from tangential tractions.
 
 Cerruti's solution (Johnson 1985, eq. 2.19; §3.8 for distributed tractions): a tangential point
 force ``Q`` in ``x`` on the surface of a half-space of shear modulus ``G`` and Poisson ratio ``ν``
@@ -8,12 +8,14 @@ displaces the surface by
     u_y = Q/(2πG) · ν x y/ρ³,
     u_z = −Q(1 − 2ν)/(4πG) · x/ρ².
 
-Simplifications, stated: the traction has one component, ``q_x`` in the loading direction
-(``q_y = 0``; the standard simplification of Cattaneo–Mindlin and of the rough-surface BEM of
-Grzemba et al. 2014), and only ``u_x`` enters the contact conditions (``u_y``, which ``q_x``
-produces only through ``ν x y/ρ³``, is left free). The normal–tangential coupling ``u_z(q_x)``
-(and ``u_x(p)``) is neglected: exact for elastically similar bodies and for ``ν = 1/2``, the
-assumption of Mindlin, Cattaneo, Ciavarella–Jäger and the MDR.
+Components: :class:`FreeTangentialOperator` and :class:`PeriodicTangentialOperator` give ``u_x``
+from ``q_x`` alone (``q_y = 0`` and ``u_y`` left free: the one-component simplification of
+Cattaneo–Mindlin and of the rough-surface BEM of Grzemba et al. 2014); :class:`FreeCerrutiPair`
+and :class:`PeriodicCerrutiPair` give ``(u_x, u_y)`` from ``(q_x, q_y)``, the full tangential block
+with the cross kernel ``ν/(1 − ν) · xy/ρ³`` (:func:`cerruti_cross_coefficients`). Stated
+simplification: the normal–tangential coupling ``u_z(q)`` (and ``u_x(p)``) is neglected: exact for
+elastically similar bodies and for ``ν = 1/2``, the assumption of Mindlin, Cattaneo,
+Ciavarella–Jäger and the MDR.
 
 Moduli: the package works in ``E*``. For a rigid indenter on an elastic half-space
 ``E* = E/(1 − ν²)`` and ``G = E/(2(1 + ν))``, so ``G = E*(1 − ν)/2`` and
@@ -28,7 +30,11 @@ the normal operators of :mod:`roughcontact.bem.operators`:
 * :class:`PeriodicTangentialOperator` — periodic over ``length``:
   ``ũ_x(q) = 2 (1 − ν q_x²/|q|²) q̃_x(q) / (E* (1 − ν) |q|)``, ``ũ_x(0) = 0`` (the Fourier
   transform of Cerruti's ``u_x``; Johnson 1985, §2.2; e.g. Campañá, Persson & Müser,
-  J. Phys.: Condens. Matter 23, 085001 (2011), doi:10.1088/0953-8984/23/8/085001).
+  J. Phys.: Condens. Matter 23, 085001 (2011), doi:10.1088/0953-8984/23/8/085001); its pair
+  ``ũ_i = 2 (δ_ij − ν q_i q_j/|q|²) q̃_j / (E* (1 − ν) |q|)``. As the normal periodic operator (and
+  tamaas), this samples the continuum spectrum: its near field differs from the cell integral of
+  the free operators, most for the odd cross kernel (at offset (1, 1) by half), while smooth
+  tractions give the same displacements (tests/test_tangential_kernel.py).
 
 At ``ν = 0`` both equal the normal operators of the same ``E*``.
 """

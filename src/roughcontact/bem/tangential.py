@@ -2,20 +2,26 @@
 
 A normal state (:class:`~roughcontact.bem.ContactState`, pressure ``p`` on the contact set ``C``)
 is loaded by a tangential force ``Q`` along ``x`` (the grid's first axis) at fixed normal pressure.
-Stated simplifications (:mod:`roughcontact.bem.cerruti`): one traction component ``q_x``; the
-normal–tangential coupling neglected (the pressure does not change under ``Q``, ``u_x`` does not
-depend on ``p``): exact for elastically similar bodies and ``ν = 1/2``, the assumption of
-Mindlin (1949), Cattaneo (1938), Ciavarella (1998), Jäger (1998) and the MDR. The option of
-including the coupling is not offered (not built; see the guide page on tangential contact).
+Traction components (``components``): two, ``(q_x, q_y)`` with Cerruti's full ``2 × 2`` kernel,
+the isotropic Coulomb cone and ``Σ q_y = 0`` (the default of :func:`partial_slip`); or one,
+``q_x`` with ``u_y`` left free, Cattaneo–Mindlin's approximation (the default of
+:func:`tangential_stiffness`, whose two values differ by ≲ 0.1 % at ν = 0.3). Equal at ``ν = 0``.
+Stated simplification (:mod:`roughcontact.bem.cerruti`): the normal–tangential coupling neglected
+(the pressure does not change under ``Q``, ``u`` does not depend on ``p``): exact for elastically
+similar bodies and ``ν = 1/2``, the assumption of Mindlin (1949), Cattaneo (1938), Ciavarella
+(1998), Jäger (1998) and the MDR. The option of including the coupling is not offered (not built;
+see the guide page on tangential contact).
 
 * :func:`tangential_stiffness` — full stick: a uniform tangential displacement ``δ`` of ``C``,
   ``K_t q = δ`` solved exactly on ``C`` (as :func:`roughcontact.bem.stiffness` solves the
   flat punch with the normal kernel), ``k_t = Σ q Δ²/δ``; Mindlin's ``8Ga/(2 − ν)`` for a circle.
 * :func:`partial_slip` — Coulomb friction ``|q| ≤ μ p`` along a tangential load path
-  ``Q = f μP`` (``0 ≤ f < 1``), warm-started (:mod:`roughcontact.bem.slip`), with the stick and
-  slip zones, the tangential displacement ``δ_x(Q)`` and the tangent stiffness
-  ``k_t(Q) = dQ/dδ_x``: the full-stick stiffness of the stick zone (the slip zone's tractions
-  stay at ``μp`` under a small increment), Cattaneo–Mindlin's ``k_t(0)(1 − Q/μP)^(1/3)``.
+  ``Q = f μP`` (``0 ≤ f < 1``), warm-started (:mod:`roughcontact.bem.slip_loads`; kernels
+  :mod:`roughcontact.bem.slip_vector`, two components, and :mod:`roughcontact.bem.slip`, one), with
+  the stick and slip zones, the tangential displacement ``δ_x(Q)`` and the tangent stiffness
+  ``k_t(Q) = dQ/dδ_x`` (one component: the full-stick stiffness of the stick zone, the slip zone's
+  tractions staying at ``μp`` under a small increment; two: the slipping tractions may also turn),
+  Cattaneo–Mindlin's ``k_t(0)(1 − Q/μP)^(1/3)``.
 
 The Ciavarella–Jäger construction from a normal load path is
 :func:`roughcontact.bem.cj_superposition.ciavarella_jager`.
