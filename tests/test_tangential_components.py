@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from roughcontact import bem, surfaces
+from roughcontact.bem import slip_loads
 
 FRICTION = 0.4
 FRACTIONS = [0.1, 0.3, 0.5, 0.7, 0.9]
@@ -88,6 +89,20 @@ def test_cattaneo_mindlin_is_one_component():
     excess = two.displacements / one.displacements - 1
     assert np.all(np.diff(excess) < 0) and excess[0] < 0
     assert 0.0004 <= -excess[-1] <= 0.0017
+
+
+def test_fft_products_equal_dense(rough, monkeypatch):
+    """The same path with FFT products instead of the dense matrix (ν = 0.3): equal to the solvers'
+    tolerance (1e-8 on the conditions; bounds 1e-6 of μ max p and 1e-6 relative)."""
+    dense = bem.partial_slip(rough, FRACTIONS, friction=FRICTION, poisson=0.3)
+    monkeypatch.setattr(slip_loads, "_pair_dense_limit", lambda pair: 0)
+    fft = bem.partial_slip(rough, FRACTIONS, friction=FRICTION, poisson=0.3)
+    scale = FRICTION * rough.pressure.max()
+    for a, b in zip(dense.states, fft.states):
+        assert np.abs(a.traction - b.traction).max() <= 1e-6 * scale
+        assert np.abs(a.traction_y - b.traction_y).max() <= 1e-6 * scale
+        assert b.displacement == pytest.approx(a.displacement, rel=1e-6)
+        assert b.stiffness == pytest.approx(a.stiffness, rel=1e-6)
 
 
 @pytest.mark.parametrize("bad", [0, 3, 1.5, True])

@@ -63,7 +63,8 @@ def projected_cg(apply, b, x, constraints, tol, maxiter, scale=None, diagonal=No
     Conjugate gradients (Hestenes & Stiefel 1952) on the null space of ``A``, preconditioned by the
     positive *diagonal* ``D`` (default 1) with the constraint projection in its metric (Gould,
     Hribar & Nocedal, SIAM J. Sci. Comput. 23, 1376 (2001)): ``z = D⁻¹(g − Aᵀλ)``,
-    ``λ = (AD⁻¹Aᵀ)⁻¹AD⁻¹g``. Stops at ``max |g − Aᵀλ| ≤ tol · scale`` (default ``|λ|``), ``g = Hx + b``.
+    ``λ = (AD⁻¹Aᵀ)⁻¹AD⁻¹g``. Stops at ``max |g − Aᵀλ| ≤ tol · scale`` (default ``|λ|``),
+    ``g = Hx + b``.
     Returns ``(x, λ, iterations)``.
     """
     inverse = np.ones(x.size) if diagonal is None else 1.0 / diagonal

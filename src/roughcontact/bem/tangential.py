@@ -42,8 +42,8 @@ from .contact import DEFAULT_MAXITER, ContactState
 from .punch import punch_stiffness
 from .slip_loads import one_component_loads, two_component_full_stick, two_component_loads
 
-__all__ = ["SlipState", "SlipPath", "check_poisson", "check_friction", "check_components", "contact_tangential_stiffness",
-           "tangential_stiffness", "partial_slip"]
+__all__ = ["SlipState", "SlipPath", "check_poisson", "check_friction", "check_components",
+           "contact_tangential_stiffness", "tangential_stiffness", "partial_slip"]
 
 
 def check_poisson(poisson) -> float:
