@@ -19,12 +19,17 @@ isotropic cone:
 and of a tangential force along ``x``; for a body symmetric about ``y = 0`` it is ``δ_y = 0``.
 
 :func:`vector_slip_kernel` extends the active set of :mod:`roughcontact.bem.slip` (Kalker 1990,
-ch. 2; Polonsky & Keer 1999) to the cone: the slipping cells carry ``μp e`` with a fixed unit
-direction ``e``; conjugate gradients solve ``u = δ`` on the stick cells under both force
-constraints (the gradient projected on ``Σ Δq_x = Σ Δq_y = 0``); stick cells past ``|q| = μp`` go to
-the cone with ``e = q/|q|``, slipping cells whose slip ``s = u − δ`` points along ``e`` come back,
-and the others turn to ``e = −s/|s|`` (a fixed point, whose contraction is the coupling of ``x``
-and ``y`` through ``ν``: at ``ν = 0`` no cell turns) until the conditions hold to ``tol``.
+ch. 2; Polonsky & Keer 1999) to the cone by Newton steps: the unknowns are both components on the
+stick cells and, on the slipping cells (``|q| = μp``), the turn of the traction along the cone
+(``q = μp e``, ``e`` turned within the tangent ``e⊥``), with the cone's curvature ``−(s·e)/(μp)``
+on the diagonal (``s = u − δ``). Each step solves this linear system by conjugate gradients on the
+null space of the two force constraints, preconditioned by its diagonal, to a residual
+``min(0.1, e)·e`` of the current violation ``e`` (an inexact Newton step), and puts the slipping
+tractions back on the cone; stick cells past ``|q| = μp`` join the cone with ``e = q/|q|`` and
+slipping cells whose slip points along ``e`` come back (released as in :mod:`roughcontact.bem.slip`),
+until the conditions hold to ``tol``. A slipping cell's direction cannot be fixed-point iterated
+(``e ← −s/|s|``): its own traction dominates its own slip, and the iteration oscillates (tried).
+At ``ν = 0`` nothing turns and the steps are the one-component problem's.
 """
 
 from __future__ import annotations
@@ -142,7 +147,8 @@ def vector_slip_kernel(apply, bound, total, start, *, tol, maxiter) -> VectorSli
     ----------
     apply : callable
         ``v ↦ K v`` on flat stacked vectors ``(v_x, v_y)`` of length ``2m`` (displacement in length
-        units from tractions in force/length²).
+        units from tractions in force/length²); its attribute ``self_coefficient``, if any (a cell's
+        displacement under its own unit traction), preconditions the steps.
     bound : numpy.ndarray
         ``μ p`` per cell, > 0 (force/length²).
     total : float
