@@ -58,17 +58,19 @@ def test_zero_poisson_stiffness_equal(normal_path):
 def test_poisson_displacement_difference(normal_path):
     """At ν = 0.3 the tangential kernel is not a multiple of the normal one: Ciavarella–Jäger with
     Mindlin's compliance ratio is an approximation. Measured 2026-11-27 on this sphere: δ_x of
-    the BEM differs from it by −0.2 … −0.9% (128²) and +0.3 … +1.4% (129²) along the path, by
-    1.0–1.3% on a smoother, single-patch sphere. Bound loosely: 5%."""
+    the BEM (two components) differs from it by −0.3 … −1.0% (128²) and +0.2 … +1.3% (129²) along
+    the path (one component: −0.2 … −0.9%, +0.3 … +1.4%), by 1.0–1.3% on a smoother, single-patch
+    sphere (one component). Bound loosely: 5%."""
     cj, slip = _both(normal_path, 0.3)
     difference = slip.displacements[1:] / cj.displacements[1:] - 1
     assert np.all(np.abs(difference) <= 0.05), difference
 
 
 def test_poisson_tractions_difference(normal_path):
-    """At ν = 0.3 the tractions differ by up to 10% (128²) and 14% (129²) of μ max p (measured
-    2026-11-27; at the stick–slip boundaries, where cells change sides: the stick areas differ
-    by up to 5% and 15%); bound loosely 30%."""
+    """At ν = 0.3 the tractions q_x differ by up to 9.4% (128²) and 14% (129²) of μ max p (measured
+    2026-11-27 with two components; 9.6% and 14% with one; at the stick–slip boundaries, where
+    cells change sides: the stick areas differ by up to 3.8% and 7.5%, 5% and 15% with one
+    component); bound loosely 30%."""
     cj, slip = _both(normal_path, 0.3)
     scale = FRICTION * normal_path[-1].pressure.max()
     worst = max(np.abs(s.traction - cj.traction(j)).max() for j, s in enumerate(slip.states))

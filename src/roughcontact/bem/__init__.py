@@ -8,7 +8,8 @@ operators (:mod:`.operators`), the constrained conjugate-gradient kernels
 flat-punch stiffness (:mod:`.punch`) and penetration-hardness plasticity (:mod:`.plastic`).
 Tangential contact, elastic only (the normal–tangential coupling neglected): the Cerruti kernel
 (:mod:`.cerruti`), the full-stick stiffness :func:`tangential_stiffness` and Cattaneo–Mindlin
-partial slip :func:`partial_slip` (:mod:`.tangential`, kernel :mod:`.slip`), and the
+partial slip :func:`partial_slip` (:mod:`.tangential`, loads :mod:`.slip_loads`, kernels
+:mod:`.slip_vector` for two traction components and :mod:`.slip` for one), and the
 Ciavarella–Jäger construction :func:`ciavarella_jager` (:mod:`.cj_superposition`).
 Adhesive paths, elastic only: the detachment criterion (:mod:`.adhesion`) and the Maugis–Dugdale
 cohesive zone (:mod:`.cohesive`). The patches of a contact set: :func:`contact_patches`

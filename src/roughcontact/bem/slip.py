@@ -1,4 +1,5 @@
-"""The partial-slip kernel: tangential tractions on a contact set under Coulomb friction.
+"""The one-component partial-slip kernel: tangential tractions ``q_x`` on a contact set under Coulomb
+friction (two components: :mod:`roughcontact.bem.slip_vector`).
 
 On the contact set ``C`` of a normal state (pressure ``p``) the tangential traction ``q`` (one
 component, along ``x``) at a tangential force ``Q = Σ q Δ²`` solves the convex quadratic
