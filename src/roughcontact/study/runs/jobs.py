@@ -138,8 +138,11 @@ class JobSettings(ForcePathRecord):
         if self.field_loads:
             out["field_loads"] = list(self.field_loads)
         if self.slip_loads:   # friction > 0: the partial-slip path
+            from .tangential import SLIP_COMPONENTS
+
             out["slip_loads"] = list(self.slip_loads)
             out["slip_steps"] = self.slip_steps
+            out["slip_components"] = SLIP_COMPONENTS
         return {**out, **self.axes(), "kind": self.kind, "periodic": self.periodic}
 
     def file_spec(self) -> runfile.RunFileSpec:

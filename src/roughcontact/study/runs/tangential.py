@@ -8,7 +8,7 @@ path is the one without them):
   (:func:`roughcontact.bem.tangential_stiffness`; Mindlin: ``k_t/k_n = 2(1 − ν)/(2 − ν)``);
 * with ``friction > 0`` (``μ``), at the loads ``slip_loads``: the Cattaneo–Mindlin partial-slip
   path ``Q/(μP) = 1/(steps+1) … steps/(steps+1)`` at fixed normal load
-  (:func:`roughcontact.bem.partial_slip`, warm-started): ``Q``, ``δ_x``, ``k_t(Q)`` and the
+  (:func:`roughcontact.bem.partial_slip`, two traction components, warm-started): ``Q``, ``δ_x``, ``k_t(Q)`` and the
   stick cells of every tangential load, and the largest micro-slip ``δ_max`` at ``Q → μP``
   (:func:`roughcontact.bem.micro_slip.gross_slip_displacement`).
 
@@ -24,7 +24,12 @@ from ...bem.micro_slip import gross_slip_displacement
 from ...errors import ConvergenceError, IndentError
 from ..files import runfile
 
-__all__ = ["allocate", "record"]
+__all__ = ["SLIP_COMPONENTS", "allocate", "record"]
+
+#: traction components of the partial-slip path (:func:`roughcontact.bem.partial_slip`): two, ``(q_x, q_y)``
+#: on the isotropic Coulomb cone (the one-component path's ``q_x`` differs by 6-11 % of ``μ max p`` on a
+#: rough sphere, docs/guide/tangential.md); part of a friction run's record, so a change reruns it
+SLIP_COMPONENTS = 2
 
 
 def fractions(steps: int) -> np.ndarray:
@@ -60,7 +65,8 @@ def record(p, out: dict, i: int, state, where: str) -> None:
         return
     j = p.slip_loads.index(i)
     try:
-        path = bem.partial_slip(state, out["slip_step"], friction=p.friction, poisson=p.poisson, maxiter=p.maxiter)
+        path = bem.partial_slip(state, out["slip_step"], friction=p.friction, poisson=p.poisson, maxiter=p.maxiter,
+                                components=SLIP_COMPONENTS)
     except (ConvergenceError, ValueError) as exc:
         raise IndentError(f"indent {p.name}: the partial-slip path failed at {where}): {exc}; raise solver.maxiter, "
                           "lower tangential.steps or leave this load out of tangential.at") from exc
