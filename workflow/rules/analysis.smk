@@ -80,6 +80,7 @@ rule fit_zeta:
         nc="results/zeta.nc",
     log:
         "logs/fit_zeta.log",
+    priority: 1  # on the analysis' critical path: before exponents, grid_error, claims
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -103,6 +104,7 @@ rule crossover:
         nc="results/crossover.nc",
     log:
         "logs/crossover.log",
+    priority: 1  # on the analysis' critical path: before exponents, grid_error, claims
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -192,6 +194,7 @@ rule models:
         ],
     log:
         "logs/models.log",
+    priority: 1  # on the analysis' critical path: before exponents, grid_error, claims
     conda:
         "../../envs/roughcontact.yaml"
     params:

@@ -191,6 +191,12 @@ def batch_runtime(runs):
     )
 
 
+def indent_priority(study, runs):
+    """The priority of an indent job of *runs* runs of *study*: its expected cost, so that two
+    cores start the longest jobs first (study.runs.naming.indent_priority)."""
+    return lambda wildcards: study_runs.indent_priority(study, wildcards.combo, runs)
+
+
 def batch_settings(study, seeds):
     """The params of an indent job of *seeds*: the JobSettings of each of its runs, in order."""
     return lambda wildcards: tuple(

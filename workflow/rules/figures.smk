@@ -23,6 +23,7 @@ rule figures:
         ],
     log:
         "logs/figures.log",
+    priority: 1  # the longest job of the analysis, with models: started before claims
     conda:
         "../../envs/roughcontact.yaml"
     params:

@@ -1,7 +1,8 @@
 # The runs: surface, warm-started load path, stiffness, one run file and log per run. One job per
 # run with jobs.batch = 1 (rule indent); else one job per combination and block of jobs.batch
 # seeds (rules indent_seeds0_5, indent_seeds6_11, ...), its runs one after another in one
-# Python. A job's params are its runs' own settings: a new seed reruns only its block.
+# Python. A job's params are its runs' own settings: a new seed reruns only its block. The
+# longest jobs start first (priority: the job's expected cost), the short ones fill the end.
 if INDENT_BATCH == 1:
 
     rule indent:
@@ -14,6 +15,7 @@ if INDENT_BATCH == 1:
         wildcard_constraints:
             combo=r"H[^/]+",
             seed=r"\d+",
+        priority: indent_priority(STUDY, 1)
         conda:
             "../../envs/roughcontact.yaml"
         threads: 1
@@ -37,6 +39,7 @@ if INDENT_BATCH == 1:
         wildcard_constraints:
             combo=r"H[^/]+",
             seed=r"\d+",
+        priority: indent_priority(COARSE, 1)
         conda:
             "../../envs/roughcontact.yaml"
         threads: 1
@@ -63,6 +66,7 @@ else:
                 BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
             wildcard_constraints:
                 combo=r"H[^/]+",
+            priority: indent_priority(STUDY, len(block.seeds))
             conda:
                 "../../envs/roughcontact.yaml"
             threads: 1
@@ -93,6 +97,7 @@ else:
                 COARSE_BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
             wildcard_constraints:
                 combo=r"H[^/]+",
+            priority: indent_priority(COARSE, len(block.seeds))
             conda:
                 "../../envs/roughcontact.yaml"
             threads: 1
