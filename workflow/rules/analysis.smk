@@ -80,7 +80,7 @@ rule fit_zeta:
         nc="results/zeta.nc",
     log:
         "logs/fit_zeta.log",
-    priority: 1  # on the analysis' critical path: before exponents, grid_error, claims
+    priority: 2  # the analysis' critical path: zeta, crossover, then figures (before exponents, grid_error)
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -104,7 +104,7 @@ rule crossover:
         nc="results/crossover.nc",
     log:
         "logs/crossover.log",
-    priority: 1  # on the analysis' critical path: before exponents, grid_error, claims
+    priority: 2  # the analysis' critical path: zeta, crossover, then figures (before models)
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -194,7 +194,7 @@ rule models:
         ],
     log:
         "logs/models.log",
-    priority: 1  # on the analysis' critical path: before exponents, grid_error, claims
+    priority: 1  # one of the two longest analysis jobs, with figures: before claims
     conda:
         "../../envs/roughcontact.yaml"
     params:
