@@ -80,7 +80,7 @@ rule fit_zeta:
         nc="results/zeta.nc",
     log:
         "logs/fit_zeta.log",
-    priority: 2  # the analysis' critical path: zeta, crossover, then figures (before exponents, grid_error)
+    priority: 2  # the analysis' critical path: zeta, crossover, then figures (before grid_error)
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -130,6 +130,7 @@ rule exponents:
             category="zeta(H) and collapse",
             labels={"figure": "local exponents"},
         ),
+    priority: 1  # claims waits for it: on the core beside zeta and crossover, not after models
     log:
         "logs/exponents.log",
     conda:
