@@ -17,6 +17,7 @@ rule merge:
         ensemble="results/ensemble.nc",
     log:
         "logs/merge.log",
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -35,6 +36,7 @@ rule merge_coarse:
         ensemble="results/merge_coarse/ensemble.nc",
     log:
         "logs/merge_coarse.log",
+    priority: ANALYSIS_PRIORITY  # as soon as the companion runs are done
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -57,6 +59,7 @@ rule grid_error:
         ),
     log:
         "logs/grid_error.log",
+    priority: ANALYSIS_PRIORITY  # as soon as the companion runs are done
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -80,7 +83,7 @@ rule fit_zeta:
         nc="results/zeta.nc",
     log:
         "logs/fit_zeta.log",
-    priority: 2  # the analysis' critical path: zeta, crossover, then figures (before grid_error)
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -104,7 +107,7 @@ rule crossover:
         nc="results/crossover.nc",
     log:
         "logs/crossover.log",
-    priority: 2  # the analysis' critical path: zeta, crossover, then figures (before models)
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -130,9 +133,9 @@ rule exponents:
             category="zeta(H) and collapse",
             labels={"figure": "local exponents"},
         ),
-    priority: 1  # claims waits for it: on the core beside zeta and crossover, not after models
     log:
         "logs/exponents.log",
+    priority: ANALYSIS_PRIORITY + 1  # claims waits for it: beside zeta and crossover
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -195,7 +198,7 @@ rule models:
         ],
     log:
         "logs/models.log",
-    priority: 1  # one of the two longest analysis jobs, with figures: before claims
+    priority: 1  # beside figures, before claims
     conda:
         "../../envs/roughcontact.yaml"
     params:

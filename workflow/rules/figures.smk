@@ -23,7 +23,7 @@ rule figures:
         ],
     log:
         "logs/figures.log",
-    priority: 1  # the longest job of the analysis, with models: started before claims
+    priority: ANALYSIS_PRIORITY + 1  # the longest analysis job
     conda:
         "../../envs/roughcontact.yaml"
     params:

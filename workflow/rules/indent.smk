@@ -2,7 +2,9 @@
 # run with jobs.batch = 1 (rule indent); else one job per combination and block of jobs.batch
 # seeds (rules indent_seeds0_5, indent_seeds6_11, ...), its runs one after another in one
 # Python. A job's params are its runs' own settings: a new seed reruns only its block. The
-# longest jobs start first (priority: the job's expected cost), the short ones fill the end.
+# longest jobs start first (priority: the job's expected cost), the short ones fill the end; the
+# grid error's companion runs on grid.coarse go with the sphere runs they accompany (the same
+# priority), so that grid_error is done before the last flat runs are.
 if INDENT_BATCH == 1:
 
     rule indent:
@@ -39,7 +41,7 @@ if INDENT_BATCH == 1:
         wildcard_constraints:
             combo=r"H[^/]+",
             seed=r"\d+",
-        priority: indent_priority(COARSE, 1)
+        priority: indent_priority(STUDY, 1)  # as the runs it accompanies
         conda:
             "../../envs/roughcontact.yaml"
         threads: 1
@@ -97,7 +99,7 @@ else:
                 COARSE_BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
             wildcard_constraints:
                 combo=r"H[^/]+",
-            priority: indent_priority(COARSE, len(block.seeds))
+            priority: indent_priority(STUDY, len(block.seeds))  # as the runs it accompanies
             conda:
                 "../../envs/roughcontact.yaml"
             threads: 1
