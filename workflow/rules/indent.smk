@@ -4,7 +4,7 @@
 # Python. A job's params are its runs' own settings: a new seed reruns only its block. The
 # longest jobs start first (priority: the job's expected cost), the short ones fill the end; the
 # grid error's companion runs on grid.coarse go with the sphere runs they accompany (the same
-# priority), so that grid_error is done before the last flat runs are.
+# priority), so that merge_coarse is done while the last flat runs are.
 if INDENT_BATCH == 1:
 
     rule indent:
