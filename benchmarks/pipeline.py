@@ -17,7 +17,7 @@ larger share of the cores than the one serial process, so its wall-time ratio fl
 
 Usage::
 
-    python benchmarks/pipeline.py [--configfile config.yaml] [--cores 2] [--keep DIR] [--no-serial]
+    python benchmarks/pipeline.py [--configfile config.yaml] [--cores 2] [--keep DIR] [--no-serial] [--timeline]
 """
 
 from __future__ import annotations
@@ -41,15 +41,21 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from run import machine_lines  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
+#: the folder of the per-process tracer of ``--timeline``
+TIMELINE = Path(__file__).resolve().parent / "timeline"
 
 
-def snakemake(workdir: Path, configfile: Path, *args: str) -> tuple[float, float]:
+def snakemake(workdir: Path, configfile: Path, *args: str, timeline: Path | None = None) -> tuple[float, float]:
     """Run snakemake on the checkout's Snakefile in ``workdir``; return its wall time and the CPU
-    time (user + system) of it and all its jobs (s)."""
+    time (user + system) of it and all its jobs (s). *timeline*: a file to which every Python
+    process of the run appends its line (``benchmarks/timeline/sitecustomize.py``)."""
     command = [sys.executable, "-m", "snakemake", "-s", str(REPO / "Snakefile"), "-d", str(workdir),
                "--configfile", str(configfile), *args]
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in (str(REPO / "src"), os.environ.get("PYTHONPATH"))
-                                                       if p)}
+    tracer = () if timeline is None else (str(TIMELINE),)
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in (*tracer, str(REPO / "src"),
+                                                                   os.environ.get("PYTHONPATH")) if p)}
+    if timeline is not None:
+        env["RC_TIMELINE"] = str(timeline)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     tick = time.perf_counter()
     result = subprocess.run(command, cwd=workdir, capture_output=True, text=True, env=env)
@@ -117,6 +123,40 @@ def job_table(workdir: Path) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+def timeline_table(path: Path, start: float, cores: int) -> list[str]:
+    """The lines of ``--timeline``: when Snakemake started its first job, every job (its script,
+    start and end after the workflow's start, CPU s), how long the cores idled during the runs,
+    and Snakemake's own start-up, CPU and end."""
+    rows = []
+    for line in path.read_text().splitlines():
+        pid, began, _site, ended, cpu, name = line.split("\t")
+        script = name.split()[0] if name else ""
+        rows.append({"script": script.rsplit(".", 2)[-2] if script.count(".") >= 2 else script.removesuffix(".py"),
+                     "start": float(began) - start, "end": float(ended) - start, "cpu": float(cpu)})
+    jobs = sorted((r for r in rows if r["script"] != "__main__"), key=lambda r: r["start"])
+    main_rows = [r for r in rows if r["script"] == "__main__"]
+    if not jobs or not main_rows:
+        return [f"timeline: no jobs recorded in {path}"]
+    smk = main_rows[0]
+    indent = [r for r in jobs if r["script"] == "indent"]
+    runs_end = max(r["end"] for r in indent)
+    first = jobs[0]["start"]
+    busy = sum(min(r["end"], runs_end) - max(r["start"], first) for r in jobs if r["start"] < runs_end)
+    out = [f"timeline (s after snakemake started; {path}):",
+           f"  snakemake start-up (parse, DAG) until its first job: {first:.2f}",
+           f"  runs: {len(indent)} indent jobs, the last one ends at {runs_end:.2f}; the {cores} cores idle "
+           f"{cores * (runs_end - first) - busy:.2f} core-s between the first job's start and then",
+           f"  after the last job (snakemake ends): {smk['end'] - max(r['end'] for r in jobs):.2f}; "
+           f"snakemake's own CPU {smk['cpu']:.2f}",
+           f"  CPU of the jobs: indent {sum(r['cpu'] for r in indent):.1f} "
+           f"(median job {sorted(r['cpu'] for r in indent)[len(indent) // 2]:.2f}), "
+           f"the others {sum(r['cpu'] for r in jobs if r['script'] != 'indent'):.1f}",
+           f"  {'job':>12} {'start':>7} {'end':>7} {'wall':>6} {'CPU':>6}"]
+    out += [f"  {r['script']:>12} {r['start']:7.2f} {r['end']:7.2f} {r['end'] - r['start']:6.2f} {r['cpu']:6.2f}"
+            for r in jobs]
+    return out
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--configfile", type=Path, default=REPO / "config.yaml",
@@ -127,6 +167,9 @@ def main(argv=None) -> int:
     parser.add_argument("--no-serial", action="store_true", help="skip the serial in-process solve")
     parser.add_argument("--batch", type=int, default=None,
                         help="run the workflow with this jobs.batch (default: the config's; 1 = a job per run)")
+    parser.add_argument("--timeline", action="store_true",
+                        help="print every job's start, end and CPU time, Snakemake's start-up and the cores' idle "
+                             "time (a tracer on PYTHONPATH: benchmarks/timeline/sitecustomize.py)")
     parser.add_argument("--serial-only", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     configfile = args.configfile.resolve()
@@ -146,7 +189,9 @@ def main(argv=None) -> int:
     try:
         tick = time.time()
         batch = () if args.batch is None else ("--config", f"jobs={{batch: {args.batch}}}")
-        run_seconds, run_cpu = snakemake(workdir, configfile, "--cores", str(args.cores), *batch)
+        trace = workdir / "timeline.tsv" if args.timeline else None
+        run_seconds, run_cpu = snakemake(workdir, configfile, "--cores", str(args.cores), *batch, timeline=trace)
+        timeline = [] if trace is None else timeline_table(trace, tick, args.cores)
         runs_done = max(p.stat().st_mtime for p in (workdir / "results/runs").rglob("*.nc")) - tick
         report_seconds, _ = snakemake(workdir, configfile, "--report", "results/report.html", *batch)
         jobs = job_table(workdir)
@@ -184,6 +229,8 @@ def main(argv=None) -> int:
         print(f"{kind:>7} {len(group):5d} | {group.seconds.median():12.2f} {group.seconds.max():7.2f} "
               f"{group.seconds.sum():8.1f} | {group.max_rss_mb.median():18.0f} {group.max_rss_mb.max():7.0f}")
     print("-" * len(header))
+    for line in timeline:
+        print(line)
     total = run_seconds + report_seconds
     print(f"wall time: workflow {run_seconds:.1f} s + report {report_seconds:.1f} s = {total:.1f} s "
           f"({math.floor(total / 60):.0f} min {total % 60:.0f} s); "

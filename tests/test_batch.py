@@ -119,6 +119,18 @@ def test_batch_memory_is_that_of_one_run():
     assert naming.indent_resources(study, 60)["mem_mb"] == naming.indent_resources(study)["mem_mb"]
 
 
+def test_batch_priority_is_the_jobs_expected_cost():
+    """The longest jobs first: a sphere block (19 loads) before a flat one (10) on the same grid,
+    the 193² companion's block after both, more runs before fewer; an integer (Snakemake's priority)."""
+    study = study_settings(load_config(ROOT / "config.yaml"))
+    sphere = naming.indent_priority(study, "H0.7_R0.5_h0.009", 6)
+    flat = naming.indent_priority(study, "H0.7_Rinf_h0.009", 6)
+    coarse = naming.indent_priority(study.coarse_study(), "H0.7_R0.5_h0.009", 6)
+    assert sphere > flat > coarse >= 1
+    assert naming.indent_priority(study, "H0.7_R0.5_h0.009", 1) < sphere
+    assert all(isinstance(p, int) for p in (sphere, flat, coarse))
+
+
 @pytest.mark.parametrize("value", [0, -1, 1.5, "all", None])
 def test_a_bad_batch_is_one_line_naming_the_key(value):
     raw = {**load_config(TINY), "jobs": {"batch": value}}

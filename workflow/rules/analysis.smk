@@ -17,6 +17,7 @@ rule merge:
         ensemble="results/ensemble.nc",
     log:
         "logs/merge.log",
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -35,6 +36,7 @@ rule merge_coarse:
         ensemble="results/merge_coarse/ensemble.nc",
     log:
         "logs/merge_coarse.log",
+    priority: ANALYSIS_PRIORITY  # as soon as the companion runs are done
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -57,6 +59,7 @@ rule grid_error:
         ),
     log:
         "logs/grid_error.log",
+    priority: ANALYSIS_PRIORITY  # as soon as the companion runs are done
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -122,6 +125,7 @@ rule fit_zeta:
         nc="results/zeta.nc",
     log:
         "logs/fit_zeta.log",
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -145,6 +149,7 @@ rule crossover:
         nc="results/crossover.nc",
     log:
         "logs/crossover.log",
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -172,6 +177,7 @@ rule exponents:
         ),
     log:
         "logs/exponents.log",
+    priority: ANALYSIS_PRIORITY + 1  # claims waits for it: beside zeta and crossover
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -236,6 +242,7 @@ rule models:
         ],
     log:
         "logs/models.log",
+    priority: 1  # beside figures, before claims
     conda:
         "../../envs/roughcontact.yaml"
     params:

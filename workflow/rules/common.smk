@@ -78,6 +78,16 @@ FINE_BATCH_BENCHMARK_PATTERN = "results/benchmarks/indent_fine/{combo}_{block}.t
 # The runs of a combination go to jobs in blocks of jobs.batch seeds (1: a job per run).
 INDENT_BATCH = STUDY.jobs.batch
 INDENT_BLOCKS = study_runs.seed_blocks(STUDY.seeds, INDENT_BATCH)
+# The analysis (merge, zeta, crossover, exponents, figures; merge_coarse and grid_error) goes
+# before every indent job still waiting: each of its jobs can start only once the runs it reads
+# are done, and it is on the way to the report, while the runs left are not.
+ANALYSIS_PRIORITY = 1 + max(
+    (
+        study_runs.indent_priority(STUDY, study_runs.combo_name(c), INDENT_BATCH)
+        for c in study_runs.combinations(STUDY)
+    ),
+    default=0,
+)
 FIGURE_DIR = "results/figures"
 CAPTION_DIR = "../report"  # relative to workflow/rules/
 
@@ -227,6 +237,12 @@ def batch_runtime(runs):
         lambda wildcards, attempt: study_runs.indent_resources(STUDY, runs)["runtime"]
         * attempt
     )
+
+
+def indent_priority(study, runs):
+    """The priority of an indent job of *runs* runs of *study*: its expected cost, so that two
+    cores start the longest jobs first (study.runs.naming.indent_priority)."""
+    return lambda wildcards: study_runs.indent_priority(study, wildcards.combo, runs)
 
 
 def batch_settings(study, seeds):

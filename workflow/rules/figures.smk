@@ -23,6 +23,7 @@ rule figures:
         ],
     log:
         "logs/figures.log",
+    priority: ANALYSIS_PRIORITY + 1  # the longest analysis job
     conda:
         "../../envs/roughcontact.yaml"
     params:

@@ -1,7 +1,10 @@
 # The runs: surface, warm-started load path, stiffness, one run file and log per run. One job per
 # run with jobs.batch = 1 (rule indent); else one job per combination and block of jobs.batch
 # seeds (rules indent_seeds0_5, indent_seeds6_11, ...), its runs one after another in one
-# Python. A job's params are its runs' own settings: a new seed reruns only its block.
+# Python. A job's params are its runs' own settings: a new seed reruns only its block. The
+# longest jobs start first (priority: the job's expected cost), the short ones fill the end; the
+# grid error's companion runs on grid.coarse go with the sphere runs they accompany (the same
+# priority), so that merge_coarse is done while the last flat runs are.
 if INDENT_BATCH == 1:
 
     rule indent:
@@ -14,6 +17,7 @@ if INDENT_BATCH == 1:
         wildcard_constraints:
             combo=r"H[^/]+",
             seed=r"\d+",
+        priority: indent_priority(STUDY, 1)
         conda:
             "../../envs/roughcontact.yaml"
         threads: 1
@@ -37,6 +41,7 @@ if INDENT_BATCH == 1:
         wildcard_constraints:
             combo=r"H[^/]+",
             seed=r"\d+",
+        priority: indent_priority(STUDY, 1)  # as the runs it accompanies
         conda:
             "../../envs/roughcontact.yaml"
         threads: 1
@@ -86,6 +91,7 @@ else:
                 BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
             wildcard_constraints:
                 combo=r"H[^/]+",
+            priority: indent_priority(STUDY, len(block.seeds))
             conda:
                 "../../envs/roughcontact.yaml"
             threads: 1
@@ -116,6 +122,7 @@ else:
                 COARSE_BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
             wildcard_constraints:
                 combo=r"H[^/]+",
+            priority: indent_priority(STUDY, len(block.seeds))  # as the runs it accompanies
             conda:
                 "../../envs/roughcontact.yaml"
             threads: 1

@@ -81,11 +81,14 @@ def _erf_squared_tail():
 
 def _g(log_s, gamma):
     """``G(s) = ∫_s^∞ (dt/t)[γ + 3(1−γ) erf²(t)] e^{−t²}`` from ``ln s`` (no underflow)."""
-    small = log_s < _LOG_S_SMALL
-    s = np.exp(np.where(small, 0.0, np.minimum(log_s, math.log(40.0))))
-    half_e1 = np.where(small, -log_s - 0.5 * _EULER, 0.5 * exp1(s * s))
+    log_s = np.asarray(log_s, dtype=float)
+    large = ~(log_s < _LOG_S_SMALL)     # E1 and the table only where needed (about half the bins)
     tail = _erf_squared_tail()
-    j = np.where(small, tail(0.0), np.where(s < _S_TABLE, tail(np.minimum(s, _S_TABLE)), 0.0))
+    half_e1 = np.asarray(-log_s - 0.5 * _EULER)
+    j = np.full(log_s.shape, tail(0.0))
+    s = np.exp(np.minimum(log_s[large], math.log(40.0)))
+    half_e1[large] = 0.5 * exp1(s * s)
+    j[large] = np.where(s < _S_TABLE, tail(np.minimum(s, _S_TABLE)), 0.0)
     return gamma * half_e1 + 3.0 * (1.0 - gamma) * j
 
 

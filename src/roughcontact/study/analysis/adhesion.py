@@ -33,8 +33,6 @@ import math
 import numpy as np
 
 from ...errors import MergeError
-from ...models.adhesion import jkr_pull_off
-from ...models.rough_adhesion import johnson_rough_sphere_parameter
 from ..files import provenance, runfile
 from ..config.axes import coordinate_attrs
 from ..runs import naming as runs
@@ -120,6 +118,10 @@ def merge_adhesion(study, paths) -> dict:
 def pull_off_table(groups: dict, study):
     """``pull_off.csv`` (module docstring) of the merged adhesive groups."""
     import pandas as pd
+
+    # here, not at the top: the workflow imports this module for adhesive_runs (scipy.optimize, .integrate)
+    from ...models.adhesion import jkr_pull_off
+    from ...models.rough_adhesion import johnson_rough_sphere_parameter
 
     study = StudySettings.of(study)
     E, L, n = study.e_star, study.grid.length, study.grid.n

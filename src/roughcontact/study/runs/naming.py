@@ -29,6 +29,7 @@ __all__ = [
     "combinations",
     "axis_value",
     "indent_resources",
+    "indent_priority",
     "seed_blocks",
     "SeedBlock",
     "force_grid",
@@ -210,6 +211,20 @@ def indent_resources(study, runs: int = 1) -> dict:
     scale = (n * n * math.log(n)) / (513 * 513 * math.log(513)) * count / 13
     return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100),
             "runtime": int(max(5, math.ceil(10 * scale * 10 / 60 * runs)))}
+
+
+def indent_priority(study, combo: str, runs: int = 1) -> int:
+    """Snakemake ``priority`` of an ``indent`` job of *runs* runs of the combination *combo*
+    (:func:`combo_name`) on *study*'s grid: its expected cost, ``n² ln n`` times the load count of
+    its surface kind times *runs*, in units of one 65² run of one load (an integer >= 1).
+
+    Two cores run the longest jobs first (the 385² spheres, then the flat surfaces, then the
+    grid error's companion on ``grid.coarse``), so that the last jobs to finish are short and
+    no core idles long at the end of the run phase; no result depends on it."""
+    study = StudySettings.of(study)
+    n = study.grid.n
+    count = study.forces[kind_of(parse_combo(combo)["radius"])].count
+    return max(1, round(n * n * math.log(n) / (65 * 65 * math.log(65)) * count * runs))
 
 
 @dataclasses.dataclass(frozen=True)
