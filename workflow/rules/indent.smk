@@ -65,6 +65,7 @@ if INDENT_BATCH == 1:
         wildcard_constraints:
             combo=r"H[^/]+",
             seed=r"\d+",
+        priority: indent_priority(FINE, 1)  # called for a fine run only
         conda:
             "../../envs/roughcontact.yaml"
         threads: 1
@@ -150,6 +151,7 @@ else:
                 FINE_BATCH_BENCHMARK_PATTERN.format(combo="{combo}", block=block.name)
             wildcard_constraints:
                 combo=r"H[^/]+",
+            priority: indent_priority(FINE, len(block.seeds))  # called for a fine run only
             conda:
                 "../../envs/roughcontact.yaml"
             threads: 1
