@@ -16,7 +16,8 @@ from roughcontact import bem
 from roughcontact.surfaces import rough_sphere, self_affine
 
 COLUMNS = ["case", "hurst", "radius", "h_rms", "period", "rolloff", "seed", "n", "N", "force", "depth", "k", "cells",
-           "patches", "largest", "share", "clusters", "cluster_share", "r2", "rmax", "offset", "wall_s"]
+           "patches", "largest", "share", "clusters", "cluster_share", "r2", "rmax", "offset", "wall_s", "summit",
+           "touch_offset"]
 #: patches closer than this (L) form one cluster (two cells of a 512² grid): an asperity split by
 #: the finer grids' roughness counts once
 CLUSTER_GAP = 0.004
@@ -55,6 +56,7 @@ def measure(case: str, *, hurst: float, radius: float, h_rms: float, forces, gri
         z = _heights(n, finest, hurst=hurst, radius=radius, h_rms=h_rms, seed=seed, period=period,
                      rolloff=rolloff)
         gap = int(np.ceil(CLUSTER_GAP * n / 2.0))
+        touch = _touch(z, n, radius) if n == finest else dict(summit=np.nan, touch_offset=np.nan)
         dx = 1.0 / n
         idx = (np.arange(n) - n // 2) * dx
         start = time.perf_counter()
@@ -78,9 +80,20 @@ def measure(case: str, *, hurst: float, radius: float, h_rms: float, forces, gri
                              cluster_share=cluster_loads.max() / p.sum(),
                              r2=float(np.sqrt(2.0 * np.mean(spread))), rmax=float(np.sqrt(spread.max())),
                              offset=float(np.hypot(cx, cy)),
-                             wall_s=time.perf_counter() - start))
+                             wall_s=time.perf_counter() - start, **touch))
             start = time.perf_counter()
     return rows
+
+
+def _touch(z, n, radius) -> dict:
+    """The first touch of the heights z (rough body) on the n-grid: :func:`summit`'s numbers."""
+    x = (np.arange(n) - n // 2) / n
+    body = 0.0 if np.isinf(radius) else (x[:, None] ** 2 + x[None, :] ** 2) / (2.0 * radius)
+    i, j = np.unravel_index(np.argmin(z), z.shape)
+    rough = z - body
+    rough = rough - rough.mean()
+    return dict(summit=float(-rough[i, j] / np.sqrt(np.mean(rough**2))),
+                touch_offset=float(np.hypot(x[i], x[j])) if np.isfinite(radius) else np.nan)
 
 
 def summit(*, hurst: float, radius: float, h_rms: float, seed: int, n: int, period: float = 1.0,
@@ -93,9 +106,4 @@ def summit(*, hurst: float, radius: float, h_rms: float, seed: int, n: int, peri
     the apex (L).
     """
     z = _heights(n, n, hurst=hurst, radius=radius, h_rms=h_rms, seed=seed, period=period, rolloff=rolloff)
-    x = (np.arange(n) - n // 2) / n
-    body = 0.0 if np.isinf(radius) else (x[:, None] ** 2 + x[None, :] ** 2) / (2.0 * radius)
-    i, j = np.unravel_index(np.argmin(z), z.shape)
-    rough = z - body
-    return dict(seed=seed, summit=float(-rough[i, j] / np.sqrt(np.mean(rough**2))),
-                touch_offset=float(np.hypot(x[i], x[j])) if np.isfinite(radius) else np.nan)
+    return dict(seed=seed, **_touch(z, n, radius))
