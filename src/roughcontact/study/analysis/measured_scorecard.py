@@ -118,7 +118,7 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
         for radius in radii:
             pick = {"radius": radius} if kind == "sphere" else {}
             sub, pred = runs.sel(pick), models.sel(pick)
-            setting = {a.name: float(sub[a.name]) for a in axes.optional_axes()     # none in today's runs
+            setting = {a.name: float(sub[a.name]) for a in axes.optional_axes(normal=True)  # none in today's runs
                        if a.name in sub.coords and sub[a.name].size == 1}
             use = resolved(sub["contact_cells"].mean(ensemble).values, min_cells)
             k_mean, low, high = (sub[v].values for v in ("k_mean", "k_ci_low", "k_ci_high"))

@@ -27,7 +27,7 @@ def scorecard_lead(table=None) -> str:
     :data:`roughcontact.study.analysis.decision.RULE` and, given the *table*, whether its grid error is measured)."""
     summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
                           for model in registry.models().values())
-    optional = ", ".join(a.name for a in axes.optional_axes())
+    optional = ", ".join(a.name for a in axes.optional_axes(normal=True))
     grid = "" if table is None else decision.grid_note(table) + " "
     return (f"{decision.RULE} {grid}"
             "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "

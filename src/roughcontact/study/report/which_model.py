@@ -92,7 +92,7 @@ def _unscored(model: str, combination: str) -> str:
     from ..analysis.not_modelled import not_modelled
 
     run = runs.parse_combo(combination)
-    coords = {a.name: runs.coordinate(a.name, run[a.name], LENGTH) for a in axes.optional_axes()}
+    coords = {a.name: runs.coordinate(a.name, run[a.name], LENGTH) for a in axes.optional_axes(normal=True)}
     known = registry.models().get(model)
     return "; ".join(text for text in (not_modelled(model, coords, LENGTH),
                                         known.outside({**run, **coords}) if known else "") if text)
