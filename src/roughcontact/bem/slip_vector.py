@@ -1,7 +1,7 @@
 """The two-component partial-slip kernel: tangential traction vectors under isotropic Coulomb friction.
 
 On the contact set ``C`` of a normal state (pressure ``p``) the tangential traction
-``q = (q_x, q_y)`` at a tangential force ``(Q, 0) = Σ q Δ²`` solves the convex programme
+``q = (q_x, q_y)`` at a tangential force ``(Q, 0) = Σ q Δ²`` solves the convex programme::
 
     minimise ½ qᵀK q   subject to   |q| ≤ μp on C,  Σ q_x = Q/Δ²,  Σ q_y = 0,
 
