@@ -123,6 +123,25 @@ def job_table(workdir: Path) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+def companion_costs(workdir: Path) -> list[str]:
+    """One line per companion of the study (``indent_coarse``: grid.coarse; ``indent_fine``: the fine
+    reference of grid.fine): its jobs' summed wall and CPU seconds (Snakemake's benchmark files)
+    against the study's own indent jobs', the same run."""
+    def summed(rule):
+        files = sorted((workdir / "results/benchmarks" / rule).glob("*.tsv"))
+        records = [pd.read_csv(path, sep="\t").iloc[0] for path in files]
+        return len(files), sum(float(r["s"]) for r in records), sum(float(r["cpu_time"]) for r in records)
+
+    _, study_s, study_cpu = summed("indent")
+    out = []
+    for rule in ("indent_coarse", "indent_fine"):
+        jobs, seconds, cpu = summed(rule)
+        if jobs and study_s > 0 and study_cpu > 0:
+            out.append(f"{rule}: {jobs} jobs, summed wall {seconds:.1f} s = {seconds / study_s:.2f} of the study's "
+                       f"indent jobs ({study_s:.1f} s), CPU {cpu:.1f} s = {cpu / study_cpu:.2f} ({study_cpu:.1f} s)")
+    return out
+
+
 def timeline_table(path: Path, start: float, cores: int) -> list[str]:
     """The lines of ``--timeline``: when Snakemake started its first job, every job (its script,
     start and end after the workflow's start, CPU s), how long the cores idled during the runs,
@@ -196,6 +215,7 @@ def main(argv=None) -> int:
         report_seconds, _ = snakemake(workdir, configfile, "--report", "results/report.html", *batch)
         jobs = job_table(workdir)
         coarse_jobs = len(list((workdir / "results/benchmarks/indent_coarse").glob("*.tsv")))
+        companions = companion_costs(workdir)
     finally:
         if args.keep is None:
             shutil.rmtree(workdir, ignore_errors=True)
@@ -229,6 +249,8 @@ def main(argv=None) -> int:
         print(f"{kind:>7} {len(group):5d} | {group.seconds.median():12.2f} {group.seconds.max():7.2f} "
               f"{group.seconds.sum():8.1f} | {group.max_rss_mb.median():18.0f} {group.max_rss_mb.max():7.0f}")
     print("-" * len(header))
+    for line in companions:
+        print(line)
     for line in timeline:
         print(line)
     total = run_seconds + report_seconds
