@@ -154,8 +154,12 @@ def which_model_table(pages: Path = PAGES) -> str:
         Markdown: the explanation, then one row per preset and H with the combinations, the
         recommended models and the tied ones (counts of combinations).
     """
-    decided = decide_pages(read_pages(pages))
+    rows = read_pages(pages)
+    decided = decide_pages(rows)
     decided = decided.assign(hurst=[_hurst_of(c) for c in decided["combination"]])
+    own = sorted(set(rows.loc[rows["decision"].fillna("").astype(bool), "preset"])) if "decision" in rows else []
+    measured = (sorted(set(rows.loc[rows["grid_error_measured"].astype(str) == "True", "preset"]))
+                if "grid_error_measured" in rows else [])
     lines = ["| preset | H | combinations | recommended (combinations) | tied with it (combinations) "
              "| no scored model |", "|---|---|---|---|---|---|"]
     for (preset, hurst), group in decided.groupby(["preset", "hurst"], sort=True):
@@ -169,14 +173,18 @@ def which_model_table(pages: Path = PAGES) -> str:
         "Generated from the committed results pages (`docs/results/presets/*.md`, their \"Model scorecard\" "
         "tables) by `python -m roughcontact.study.report.which_model`. Per preset and H: in how many sphere "
         "combinations each model is the recommended one, and in how many another model is statistically "
-        "tied with it. Those pages carry only `max_rel_dev` with its 95 % interval, so the rule is applied to "
-        "what they have: the recommended model has the smallest `max_rel_dev`, a tied model's interval "
-        "overlaps the recommended one's, and **no grid error is measured in any of these pages**. A row is "
+        "tied with it. "
+        + (f"The pages of {', '.join(own)} keep the decision of their own `models.csv` (the rms deviation per "
+           "branch with a paired bootstrap and, where `grid_error_measured` says so"
+           + (f" ({', '.join(measured)})" if measured else "") + ", the grid error; below, \"The decision\"). "
+           if own else "")
+        + ("The other pages" if own else "Those pages") + " carry only `max_rel_dev` with its 95 % interval, so the "
+        "rule is applied to what they have: the recommended model has the smallest `max_rel_dev`, a tied model's "
+        "interval overlaps the recommended one's, and **no grid error is measured in them**. A row is "
         "not scored (never recommended) when its model does not model an optional axis the combination sets "
         "or the combination lies outside the model's stated range (e.g. H > 1 for the self-affine models); "
         "\"no scored model\" counts combinations where no model is scored (e.g. a hardness, which no model "
-        "models). A fresh `models.csv` decides on the rms deviation per branch with a paired bootstrap and "
-        "the grid error (below, \"The decision\"); a page written from such a file keeps its own decision.", "",
+        "models).", "",
         *lines])
 
 
