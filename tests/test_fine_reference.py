@@ -19,7 +19,8 @@ import yaml
 from roughcontact import errors
 from roughcontact.study.analysis.fine_reference import SINGLE_ASPERITY_SHARE, combined_grid_error, fine_reference
 from roughcontact.study.config import resolve as config
-from roughcontact.study.config.settings import StudySettings, fine_config
+from roughcontact.study.config.companions import fine_config
+from roughcontact.study.config.settings import StudySettings
 from roughcontact.study.runs import jobs, naming
 
 REPO = Path(__file__).resolve().parents[1]

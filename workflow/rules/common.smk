@@ -22,8 +22,8 @@ from roughcontact.study.runs import (
     naming as study_runs,
     jobs as study_settings,
 )  # noqa: E402
-from roughcontact.study.config.settings import (
-    StudySettings,
+from roughcontact.study.config.settings import StudySettings  # noqa: E402
+from roughcontact.study.config.companions import (
     coarse_config,
     fine_config,
 )  # noqa: E402

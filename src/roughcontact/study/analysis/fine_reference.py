@@ -2,7 +2,7 @@
 ``grid.fine``, where the fractal branch lives.
 
 With ``grid.fine: N`` the study presses the surfaces of the ``N`` grid seen on its own ``n``
-(``grid.realization_of``), and its companion (:func:`roughcontact.study.config.settings.fine_config`)
+(``grid.realization_of``), and its companion (:func:`roughcontact.study.config.companions.fine_config`)
 presses them on ``N`` at the loads up to ``grid.fine_to`` (the windowed solver's cost follows the
 contact, small there). Per sphere combination and load of the companion (``fine_reference.csv``):
 
