@@ -48,6 +48,7 @@ import numpy as np
 import scipy.fft
 
 from .operators import FreeSpaceOperator, PeriodicOperator, _gather, love_coefficients
+from .padding import PaddedWindow, padded_size
 
 __all__ = ["shear_modulus", "cerruti_coefficients", "cerruti_cross_coefficients", "FreeTangentialOperator",
            "PeriodicTangentialOperator", "tangential_operator_for", "FreeCerrutiPair", "PeriodicCerrutiPair",
@@ -199,20 +200,13 @@ class FreeCerrutiPair:
         return self._xx, self._xy
 
     def _spectrum(self, shape):
-        padded = tuple(scipy.fft.next_fast_len(2 * m - 1, real=True) for m in shape)
+        padded = padded_size(shape)
         spectra = self._spectra.get(padded)
         if spectra is None:
-            largest = [min((size + 1) // 2, self.n) for size in padded]
-            index = [np.arange(size) for size in padded]
-            used = [(idx < m) | (idx > size - m) for idx, m, size in zip(index, largest, padded)]
-            offsets = [np.where(idx < m, idx, np.where(use, size - idx, 0))
-                       for idx, m, size, use in zip(index, largest, padded, used)]
-            signs = [np.where(idx < m, 1.0, -1.0) * use for idx, m, use in zip(index, largest, used)]
-            xx, xy = self._tables(max(largest))
-            rows, cols = offsets[0][:, None], offsets[1][None, :]
-            mask = used[0][:, None] & used[1][None, :]
-            kernels = (xx[rows, cols] * mask, xx[cols, rows] * mask,
-                       xy[rows, cols] * (signs[0][:, None] * signs[1][None, :]))
+            w = PaddedWindow.of(padded, self.n)
+            xx, xy = self._tables(w.side)
+            kernels = (xx[w.rows, w.cols] * w.mask, xx[w.cols, w.rows] * w.mask,
+                       xy[w.rows, w.cols] * (w.signs[0][:, None] * w.signs[1][None, :]))
             spectra = self._spectra[padded] = tuple(scipy.fft.rfft2(k) for k in kernels)
             if len(self._spectra) > self.cached_spectra:
                 self._spectra.popitem(last=False)

@@ -25,6 +25,8 @@ import functools
 import numpy as np
 import scipy.fft
 
+from .padding import PaddedWindow, padded_size
+
 __all__ = ["love_coefficients", "FreeSpaceOperator", "PeriodicOperator", "DenseOperator", "operator_for",
            "PeriodicWindows", "periodic_windows"]
 
@@ -143,16 +145,11 @@ class FreeSpaceOperator:
         serves every window that maps to its padded size (one built for a smaller window would
         miss the far offsets of a larger one).
         """
-        padded = tuple(scipy.fft.next_fast_len(2 * m - 1, real=True) for m in shape)
+        padded = padded_size(shape)
         spectrum = self._spectra.get(padded)
         if spectrum is None:
-            largest = [min((size + 1) // 2, self.n) for size in padded]
-            index = [np.arange(size) for size in padded]
-            used = [(idx < m) | (idx > size - m) for idx, m, size in zip(index, largest, padded)]
-            offsets = [np.where(idx < m, idx, np.where(use, size - idx, 0))
-                       for idx, m, size, use in zip(index, largest, padded, used)]
-            kernel = self._coefficients(max(largest))[offsets[0][:, None], offsets[1][None, :]]
-            kernel = kernel * (used[0][:, None] & used[1][None, :])
+            window = PaddedWindow.of(padded, self.n)
+            kernel = self._coefficients(window.side)[window.rows, window.cols] * window.mask
             spectrum = scipy.fft.rfft2(kernel)
             self._spectra[padded] = spectrum
             if len(self._spectra) > self.cached_spectra:
@@ -175,7 +172,7 @@ class FreeSpaceOperator:
 
     def column_limit(self, shape: tuple[int, int]) -> int:
         """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
-        padded = [scipy.fft.next_fast_len(2 * m - 1, real=True) for m in shape]
+        padded = padded_size(shape)
         return max(4, int(2 * padded[0] * padded[1] * np.log2(padded[0] * padded[1])
                           / (shape[0] * shape[1]) / 3))
 
