@@ -23,7 +23,7 @@ from ..files.io import read_run, write_groups
 from ..runs.jobs import job_settings
 from ..config.settings import StudySettings
 
-__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "merge_runs", "run_merge"]
+__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "layout_of", "force_coords", "merge_runs", "run_merge"]
 
 
 log = logging.getLogger(__name__)
@@ -32,7 +32,9 @@ log = logging.getLogger(__name__)
 # --------------------------------------------------------------------------
 # merge and ensemble: one group per surface kind
 # --------------------------------------------------------------------------
-def _force_coords(study: StudySettings, kind: str) -> dict:
+def force_coords(study: StudySettings, kind: str) -> dict:
+    """The ``force`` (force units) and ``force_normalized`` (``F/(E* L²)``) coordinates of a kind's
+    load path."""
     scale = study.force_scale()
     force = study.forces[kind].normalized() * scale
     return {
@@ -77,19 +79,23 @@ def kind_layouts(study: StudySettings, table: list, paths) -> list[KindLayout]:
     :func:`runs.runs`, one path of *paths* each, in order) have, sphere first: the runs of the
     normal problem (:func:`runs.normal_representative`; the tangential axes' other values repeat
     the same normal path and are merged by :mod:`roughcontact.study.analysis.tangential`)."""
-    L = study.grid.length
     out = []
     for kind in ("sphere", "flat"):
         rows = [(row, path) for row, path in zip(table, paths)
                 if row["kind"] == kind and runs.normal_representative(study, row)]
-        if not rows:
-            continue
-        axes = runs.AXES[kind]
-        at = {id(row): {axis: runs.coordinate(axis, row[axis], L) for axis in axes} for row, _ in rows}
-        coords = {axis: sorted({at[id(row)][axis] for row, _ in rows}) for axis in axes}
-        coords["seed"] = list(study.seeds)
-        out.append(KindLayout(kind=kind, rows=rows, axes=axes, coords=coords, at=at))
+        if rows:
+            out.append(layout_of(study, kind, rows, runs.AXES[kind]))
     return out
+
+
+def layout_of(study: StudySettings, kind: str, rows: list, axes: tuple) -> KindLayout:
+    """The :class:`KindLayout` of *rows* (``(run, path)`` of one surface *kind*) over the sweep
+    *axes* (merged-file coordinates of each run, :func:`runs.coordinate`) and the study's seeds."""
+    length = study.grid.length
+    at = {id(row): {axis: runs.coordinate(axis, row[axis], length) for axis in axes} for row, _ in rows}
+    coords = {axis: sorted({at[id(row)][axis] for row, _ in rows}) for axis in axes}
+    coords["seed"] = list(study.seeds)
+    return KindLayout(kind=kind, rows=rows, axes=tuple(axes), coords=coords, at=at)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -178,7 +184,7 @@ def merge_runs(study, paths) -> dict:
         groups[kind] = xr.Dataset(
             {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names},
             coords={**{axis: (axis, coords[axis], coordinate_attrs(axis)) for axis in (*axes, "seed")},
-                    **_force_coords(study, kind)},
+                    **force_coords(study, kind)},
             attrs={"surface_kind": kind, "half_space": layout.half_space,
                    "run_git_commits": provenance.canonical_json(runs_of.commits)},
         )

@@ -35,33 +35,14 @@ from ..files import provenance, runfile
 from ..runs import naming as runs
 from ..runs.jobs import job_settings
 from .ensemble import resolved
-from .merge import KindLayout, gather
+from ...errors import MergeError
+from .merge import KindLayout, force_coords, gather, layout_of
 from .statistics import bootstrap_indices, interval
 
-__all__ = ["tangential_runs", "merge_tangential", "Branches", "branches", "Estimate", "stiffness_ratio",
+__all__ = ["merge_tangential", "Branches", "branches", "Estimate", "stiffness_ratio",
            "ciavarella_jaeger", "crossover_row", "slip_shape", "micro_slip", "per_load_table"]
 
 log = logging.getLogger(__name__)
-
-#: the variables of the ``full_stick`` group, per load
-FULL_STICK_VARIABLES = ("stiffness", "depth", "contact_cells", "tangential_stiffness")
-
-
-def tangential_runs(study) -> list[dict]:
-    """The sphere runs of the study with a Poisson ratio (:func:`roughcontact.study.runs.naming.runs`
-    order); empty without the axis ``poisson``."""
-    return [r for r in runs.runs(study) if r["kind"] == "sphere" and r.get("poisson") is not None]
-
-
-def _layout(study: StudySettings, rows: list, tangential: tuple) -> KindLayout:
-    """The :class:`~roughcontact.study.analysis.merge.KindLayout` of *rows* (``(run, path)``) over the
-    normal sphere axes and the *tangential* ones."""
-    length = study.grid.length
-    names = (*runs.AXES["sphere"], *tangential)
-    at = {id(row): {a: runs.coordinate(a, row[a], length) for a in names} for row, _ in rows}
-    coords = {a: sorted({at[id(row)][a] for row, _ in rows}) for a in names}
-    coords["seed"] = list(study.seeds)
-    return KindLayout(kind="sphere", rows=rows, axes=names, coords=coords, at=at)
 
 
 def _dataset(layout: KindLayout, gathered, variables: dict, inner: dict, attrs: dict):
@@ -82,42 +63,34 @@ def merge_tangential(study, paths) -> dict:
     study = StudySettings.of(study)
     table = runs.runs(study)
     if len(paths) != len(table):
-        from ...errors import MergeError
-
         raise MergeError(f"the tangential merge got {len(paths)} run files for {len(table)} runs of the config")
     pairs = [(row, path) for row, path in zip(table, paths) if row["kind"] == "sphere" and row.get("poisson") is not None]
     if not pairs:
         return {}
-    rng = study.forces["sphere"]
-    scale = study.force_scale()
-    force = rng.normalized() * scale
-    first_friction = study.friction[0]
-    stick_rows = [(r, p) for r, p in pairs if r.get("friction", 0.0) == first_friction]
-    layout = _layout(study, stick_rows, ("poisson",))
-    meta = {**{n: runfile.VARIABLES[n] for n in FULL_STICK_VARIABLES[:3]}, **runfile.TANGENTIAL_VARIABLES}
-    got = gather(layout, lambda row: job_settings(study, row), {n: m.dtype for n, m in meta.items()})
-    groups = {"full_stick": _dataset(
-        layout, got, meta,
-        {"force": ("force", force, runfile.FORCE_ATTRS),
-         "force_normalized": ("force", force / scale, {"long_name": "F/(E* L^2)", "units": "1"})},
-        {"surface_kind": "sphere", "half_space": layout.half_space,
-         "run_git_commits": provenance.canonical_json(got.commits)})}
-    slip_rows = [(r, p) for r, p in pairs if r.get("friction", 0.0) > 0]
-    if slip_rows:
-        layout = _layout(study, slip_rows, ("poisson", "friction"))
-        got = gather(layout, lambda row: job_settings(study, row),
-                     {n: m.dtype for n, m in runfile.SLIP_VARIABLES.items()})
-        first = job_settings(study, slip_rows[0][0])
+    def expected(row):
+        return job_settings(study, row)
+
+    def group(layout, variables, inner):
+        got = gather(layout, expected, {n: m.dtype for n, m in variables.items()})
+        return _dataset(layout, got, variables, inner, {"surface_kind": "sphere", "half_space": layout.half_space,
+                                                        "run_git_commits": provenance.canonical_json(got.commits)})
+
+    normal = runs.AXES["sphere"]
+    stick = [(r, p) for r, p in pairs if r.get("friction", 0.0) == study.friction[0]]
+    groups = {"full_stick": group(
+        layout_of(study, "sphere", stick, (*normal, "poisson")),
+        {**{n: runfile.VARIABLES[n] for n in ("stiffness", "depth", "contact_cells")}, **runfile.TANGENTIAL_VARIABLES},
+        force_coords(study, "sphere"))}
+    slip = [(r, p) for r, p in pairs if r.get("friction", 0.0) > 0]
+    if slip:
+        first = expected(slip[0][0])
         loads = np.asarray(first.slip_loads)
-        groups["partial_slip"] = _dataset(
-            layout, got, runfile.SLIP_VARIABLES,
-            {"slip_load": ("slip_load", rng.normalized()[loads],
+        groups["partial_slip"] = group(
+            layout_of(study, "sphere", slip, (*normal, "poisson", "friction")), runfile.SLIP_VARIABLES,
+            {"slip_load": ("slip_load", study.forces["sphere"].normalized()[loads],
                            {"long_name": "normal force F/(E* L^2) of the partial-slip path", "units": "1"}),
              "slip_load_index": ("slip_load", loads, runfile.SLIP_COORDS["slip_load"][1]),
-             "slip_step": ("slip_step", np.arange(1, first.slip_steps + 1) / (first.slip_steps + 1),
-                           runfile.SLIP_COORDS["slip_step"][1])},
-            {"surface_kind": "sphere", "half_space": layout.half_space,
-             "run_git_commits": provenance.canonical_json(got.commits)})
+             "slip_step": ("slip_step", runfile.slip_fractions(first.slip_steps), runfile.SLIP_COORDS["slip_step"][1])})
     return groups
 
 

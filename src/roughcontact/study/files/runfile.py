@@ -13,7 +13,7 @@ import numpy as np
 
 
 __all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "PATCH_VARIABLES", "FIELD_VARIABLES",
-           "TANGENTIAL_VARIABLES", "SLIP_VARIABLES", "SLIP_COORDS", "FIELD_GROUP", "RETRACT_VARIABLES",
+           "TANGENTIAL_VARIABLES", "SLIP_VARIABLES", "SLIP_COORDS", "slip_fractions", "FIELD_GROUP", "RETRACT_VARIABLES",
            "PULL_OFF_VARIABLES", "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
            "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
 
@@ -76,6 +76,12 @@ SLIP_VARIABLES = {
     "slip_iterations": Variable("i8", "influence products of the partial-slip solve (warm-started)", "1",
                                 ("slip_load", "slip_step")),
 }
+def slip_fractions(steps: int) -> np.ndarray:
+    """The ``slip_step`` coordinate of a partial-slip path of *steps* loads:
+    ``Q/(μP) = 1/(steps+1) … steps/(steps+1)``."""
+    return np.arange(1, int(steps) + 1) / (int(steps) + 1)
+
+
 #: the coordinates of the partial-slip paths
 SLIP_COORDS = {"slip_load": ("i8", {"long_name": "index of the normal load of the partial-slip path", "units": "1"}),
                "slip_step": ("f8", {"long_name": "tangential load Q/(mu P)", "units": "1"})}

@@ -20,7 +20,14 @@ from ..config.defaults import solver_maxiter
 from ..config.records import ForcePathRecord
 from ..config.settings import StudySettings
 
-__all__ = ["JobSettings", "job_settings", "nearest_loads", "options_of", "settings_from_wildcards"]
+__all__ = ["SLIP_COMPONENTS", "JobSettings", "job_settings", "nearest_loads", "options_of", "settings_from_wildcards"]
+
+
+#: traction components of a run's partial-slip path (:func:`roughcontact.bem.partial_slip`,
+#: :mod:`roughcontact.study.runs.tangential`): two, ``(q_x, q_y)`` on the isotropic Coulomb cone (the
+#: one-component path's ``q_x`` differs by 6-11 % of ``μ max p`` on a rough sphere,
+#: docs/guide/tangential.md); in a friction run's record, so a change reruns it
+SLIP_COMPONENTS = 2
 
 
 @dataclasses.dataclass(frozen=True, kw_only=True)
@@ -138,8 +145,6 @@ class JobSettings(ForcePathRecord):
         if self.field_loads:
             out["field_loads"] = list(self.field_loads)
         if self.slip_loads:   # friction > 0: the partial-slip path
-            from .tangential import SLIP_COMPONENTS
-
             out["slip_loads"] = list(self.slip_loads)
             out["slip_steps"] = self.slip_steps
             out["slip_components"] = SLIP_COMPONENTS

@@ -23,18 +23,9 @@ from ... import bem
 from ...bem.micro_slip import gross_slip_displacement
 from ...errors import ConvergenceError, IndentError
 from ..files import runfile
+from .jobs import SLIP_COMPONENTS
 
-__all__ = ["SLIP_COMPONENTS", "allocate", "record"]
-
-#: traction components of the partial-slip path (:func:`roughcontact.bem.partial_slip`): two, ``(q_x, q_y)``
-#: on the isotropic Coulomb cone (the one-component path's ``q_x`` differs by 6-11 % of ``μ max p`` on a
-#: rough sphere, docs/guide/tangential.md); part of a friction run's record, so a change reruns it
-SLIP_COMPONENTS = 2
-
-
-def fractions(steps: int) -> np.ndarray:
-    """``Q/(μP)`` of a partial-slip path of *steps* loads."""
-    return np.arange(1, int(steps) + 1) / (int(steps) + 1)
+__all__ = ["allocate", "record"]
 
 
 def allocate(out: dict, p, total: int) -> None:
@@ -48,7 +39,7 @@ def allocate(out: dict, p, total: int) -> None:
         for name, meta in runfile.SLIP_VARIABLES.items():
             out[name] = np.zeros(shape[meta.dims[1:]], dtype=meta.dtype)
         out["slip_load"] = np.asarray(p.slip_loads, dtype="i8")
-        out["slip_step"] = fractions(p.slip_steps)
+        out["slip_step"] = runfile.slip_fractions(p.slip_steps)
 
 
 def record(p, out: dict, i: int, state, where: str) -> None:
