@@ -34,13 +34,13 @@ from ..config.settings import StudySettings
 from ..files import provenance, runfile
 from ..runs import naming as runs
 from ..runs.jobs import job_settings
-from .ensemble import resolved
+from .ensemble import combinations, resolved
 from ...errors import MergeError
 from .merge import KindLayout, force_coords, gather, layout_of
 from .statistics import bootstrap_indices, interval
 
 __all__ = ["merge_tangential", "Branches", "branches", "Estimate", "stiffness_ratio",
-           "ciavarella_jaeger", "crossover_row", "slip_shape", "micro_slip", "per_load_table"]
+           "ciavarella_jaeger", "crossover_row", "combination_branches", "slip_combinations", "slip_shape", "micro_slip", "per_load_table"]
 
 log = logging.getLogger(__name__)
 
@@ -146,6 +146,22 @@ def branches(force, contact_cells_mean, crossover_row, min_cells: int) -> Branch
         none = np.zeros(force.shape, dtype=bool)
         return Branches(math.nan, "", none, none)
     return Branches(f_tr, source, ok & (force < f_tr), ok & (force >= f_tr))
+
+
+def combination_branches(stick, cross, where: dict, study) -> Branches:
+    """:func:`branches` of one combination of the ``full_stick`` group (*stick*, dims ``(seed, force)``)
+    with its row of ``crossover.csv`` (*cross*, :func:`crossover_row`)."""
+    return branches(stick["force_normalized"].values, stick["contact_cells"].mean("seed").values,
+                    crossover_row(cross, where), StudySettings.of(study).fit.zeta.min_cells)
+
+
+def slip_combinations(groups: dict):
+    """``(where, stick, slip)`` of every combination of the ``partial_slip`` group: its axes, its
+    ``full_stick`` combination (the same normal axes and ``poisson``; dims ``(seed, force)``) and
+    its slice (dims ``(seed, slip_load, slip_step)``)."""
+    stick = groups["full_stick"]
+    for where, slip in combinations(groups["partial_slip"], "slip_stiffness", ("seed", "slip_load", "slip_step")):
+        yield where, stick.sel({k: v for k, v in where.items() if k != "friction"}).transpose("seed", "force"), slip
 
 
 @dataclasses.dataclass(frozen=True)
@@ -267,16 +283,13 @@ def per_load_table(groups: dict, cross, study):
     ``k_t/k_n`` with its interval against Mindlin's ratio, and the load's branch."""
     import pandas as pd
 
-    from .ensemble import combinations
-
     study = StudySettings.of(study)
     ds = groups.get("full_stick")
     if ds is None:
         return pd.DataFrame()
     rows = []
     for where, sub in combinations(ds, "tangential_stiffness"):
-        split = branches(sub["force_normalized"].values, sub["contact_cells"].mean("seed").values,
-                         crossover_row(cross, where), study.fit.zeta.min_cells)
+        split = combination_branches(sub, cross, where, study)
         mindlin = theory.stiffness_ratio(where["poisson"])
         for i, force in enumerate(sub["force_normalized"].values):
             mask = np.zeros(sub.sizes["force"], dtype=bool)

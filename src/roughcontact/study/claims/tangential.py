@@ -35,9 +35,7 @@ NUMERICAL_TOLERANCE = 1e-3
 
 
 def _sweep(study, where: dict) -> str:
-    text = describe(where, study.grid.length, study.grid.n, len(study.seeds))
-    extra = f", nu = {where['poisson']:g}" + (f", mu = {where['friction']:g}" if "friction" in where else "")
-    return text.replace(f", {len(study.seeds)} seeds", extra + f", {len(study.seeds)} seeds", 1)
+    return describe(where, study.grid.length, study.grid.n, len(study.seeds))
 
 
 def _verdict(value: float, est, loads: int, branch: str, split) -> str:
@@ -56,8 +54,7 @@ def _r(inputs):
     """Claim (r) per combination of the ``full_stick`` group and branch."""
     study, out = inputs.study, []
     for where, stick in combinations(inputs.tangential["full_stick"], "tangential_stiffness"):
-        split = estimate.branches(stick["force_normalized"].values, stick["contact_cells"].mean("seed").values,
-                                  estimate.crossover_row(inputs.cross, where), study.fit.zeta.min_cells)
+        split = estimate.combination_branches(stick, inputs.cross, where, study)
         mindlin = theory.stiffness_ratio(where["poisson"])
         for branch in ("fractal", "hertz"):
             mask = getattr(split, branch)
@@ -76,13 +73,8 @@ def _r(inputs):
 
 def _slip_combinations(inputs):
     """``(where, stick, slip, split, branch loads)`` of every combination of the ``partial_slip`` group."""
-    study = inputs.study
-    stick_ds = inputs.tangential["full_stick"]
-    for where, slip in combinations(inputs.tangential["partial_slip"], "slip_stiffness",
-                                    ("seed", "slip_load", "slip_step")):
-        stick = stick_ds.sel({k: v for k, v in where.items() if k != "friction"}).transpose("seed", "force")
-        split = estimate.branches(stick["force_normalized"].values, stick["contact_cells"].mean("seed").values,
-                                  estimate.crossover_row(inputs.cross, where), study.fit.zeta.min_cells)
+    for where, stick, slip in estimate.slip_combinations(inputs.tangential):
+        split = estimate.combination_branches(stick, inputs.cross, where, inputs.study)
         index = slip["slip_load_index"].values
         loads = {branch: [j for j, i in enumerate(index) if getattr(split, branch)[int(i)]]
                  for branch in ("fractal", "hertz")}

@@ -21,7 +21,6 @@ import numpy as np
 
 from ...models import tangential as theory
 from ..analysis import tangential as estimate
-from ..analysis.ensemble import combinations
 from ..config.settings import StudySettings
 from ..files import provenance
 from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
@@ -93,17 +92,9 @@ def _ratio_figure(plt, table, path) -> None:
     save_png(fig, path)
 
 
-def _slip_panels(groups: dict):
-    slip = groups["partial_slip"]
-    stick = groups["full_stick"]
-    for where, sub in combinations(slip, "slip_stiffness", ("seed", "slip_load", "slip_step")):
-        st = stick.sel({k: v for k, v in where.items() if k != "friction"}).transpose("seed", "force")
-        yield where, st, sub
-
-
 def _slip_figure(plt, groups: dict, path) -> None:
     panels_data = []
-    for where, stick, slip in _slip_panels(groups):
+    for where, stick, slip in estimate.slip_combinations(groups):
         loads = list(range(slip.sizes["slip_load"]))
         for part in chunks(loads, MAX_CURVES):
             panels_data.append((where, stick, slip, part))
@@ -133,7 +124,7 @@ def _slip_figure(plt, groups: dict, path) -> None:
 def _micro_slip_figure(plt, groups: dict, path) -> None:
     fig, ax = plt.subplots(figsize=(4.8, 4.0))
     lows, highs = [], []
-    for c, (where, _, slip) in enumerate(list(_slip_panels(groups))[:MAX_CURVES]):
+    for c, (where, _, slip) in enumerate(list(estimate.slip_combinations(groups))[:MAX_CURVES]):
         depth = slip["slip_depth"].values.mean(0)
         law = theory.largest_micro_slip(depth, friction=where["friction"], poisson=where["poisson"])
         delta = slip["gross_slip_displacement"].values.mean(0)
