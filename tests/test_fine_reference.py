@@ -119,13 +119,23 @@ def test_single_asperity_is_the_leading_run_of_loads_only():
     assert table["single_asperity"].tolist() == [True, True, False, False]
 
 
-def test_the_fine_reference_replaces_the_coarse_grid_error_at_its_loads():
+def _companion_tables():
+    """A coarse companion's and a fine reference's rows at one shared load, with the columns both
+    tables have whose values differ between them (contact cells on the finer grid, the grid ratio)."""
     coarse = pd.DataFrame({"hurst": [0.7, 0.7], "force_normalized": [1e-5, 1e-3], "grid_error_estimate": [0.5, 0.02],
-                           "grid_error": [0.4, 0.01]})
+                           "grid_error": [0.4, 0.01], "contact_cells_fine": [12.0, 900.0], "grid_ratio": [2.0, 2.0]})
     fine = pd.DataFrame({"hurst": [0.7], "force_normalized": [1e-5], "grid_error_estimate": [0.03],
-                         "study_grid_error": [0.02], "band": [0.1]})
-    combined = combined_grid_error(coarse, fine).sort_values("force_normalized")
+                         "study_grid_error": [0.02], "band": [0.1], "contact_cells_fine": [48.0], "grid_ratio": [2.0]})
+    return coarse, fine
+
+
+def test_the_fine_reference_replaces_the_coarse_grid_error_at_its_loads():
+    combined = combined_grid_error(*_companion_tables()).sort_values("force_normalized")
     assert combined["grid_error_estimate"].tolist() == [0.03, 0.02]
+
+
+def test_the_combined_grid_error_has_one_row_per_load():
+    assert len(combined_grid_error(*_companion_tables())) == 2
 
 
 def test_pipeline_writes_the_fine_reference(tmp_path):

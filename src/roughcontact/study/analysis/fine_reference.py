@@ -33,6 +33,7 @@ import logging
 import numpy as np
 
 from ..config.settings import StudySettings
+from ..runs import naming as runs
 from .grid_error import grid_error, richardson
 
 __all__ = ["SINGLE_ASPERITY_SHARE", "fine_reference", "combined_grid_error", "run_fine_reference"]
@@ -59,16 +60,17 @@ def fine_reference(study_ds, fine_ds, coarse_ds=None, *, n: int, n_fine: int, n_
     table = table.rename(columns={
         "grid_error": "study_grid_error", "grid_error_ci_low": "study_grid_error_ci_low",
         "grid_error_ci_high": "study_grid_error_ci_high", "grid_error_estimate": "fine_error_estimate",
-        "contact_cells_coarse": "contact_cells", "cell_resolved": "cell_resolved", "grid_resolved": "fine_resolved"})
+        "contact_cells_coarse": "contact_cells", "grid_resolved": "fine_resolved"})
     table["grid_error_estimate"] = (np.maximum(table["study_grid_error_ci_low"].abs(),
                                                table["study_grid_error_ci_high"].abs())
                                     + table["fine_error_estimate"])
     axes = [c for c in table.columns if c in study_ds.dims and c not in ("seed", "force")]
+    seeds = sorted(set(study_ds["seed"].values.tolist()) & set(fine_ds["seed"].values.tolist()))
+    fine_forces = fine_ds["force_normalized"].values
     k_study, k_fine, k_coarse, share = [], [], [], []
     for _, r in table.iterrows():
         pick = {a: r[a] for a in axes}
-        at = {"force": int(np.argmin(np.abs(fine_ds["force_normalized"].values - r["force_normalized"])))}
-        seeds = sorted(set(study_ds["seed"].values.tolist()) & set(fine_ds["seed"].values.tolist()))
+        at = {"force": int(np.argmin(np.abs(fine_forces - r["force_normalized"])))}
         k_study.append(float(head["stiffness"].sel(pick).sel(seed=seeds).isel(at).mean()))
         fine = fine_ds.sel(pick).sel(seed=seeds).isel(at)
         k_fine.append(float(fine["stiffness"].mean()))
@@ -112,13 +114,10 @@ def combined_grid_error(coarse, fine):
 
     if fine is None or not len(fine):
         return coarse
-    keep = ["force_normalized", "grid_error_estimate", "band", "study_grid_error"]
-    axes = [c for c in fine.columns if c not in set(keep) and c in (coarse.columns if coarse is not None else fine.columns)
-            and fine[c].dtype.kind == "f" and c not in ("fine_error_estimate",)]
     rows = fine.rename(columns={"study_grid_error": "grid_error"})
     if coarse is None or not len(coarse):
         return rows
-    key = [c for c in coarse.columns if c in rows.columns and c in axes + ["force_normalized"]]
+    key = [c for c in (*runs.AXES["sphere"], "force_normalized") if c in coarse and c in rows]
     merged = coarse.merge(rows[key + ["grid_error_estimate", "grid_error"]], on=key, how="outer",
                           suffixes=("", "_fine"))
     for column in ("grid_error_estimate", "grid_error"):
