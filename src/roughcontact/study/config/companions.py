@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from . import axes
+from .records import force_grid
 
 __all__ = ["coarse_config", "fine_config"]
 
@@ -47,7 +48,7 @@ def fine_config(cfg) -> dict:
     if fine is None:
         raise ValueError("the study has no grid.fine: there is no fine reference")
     rng = dict(cfg["forces"]["sphere"])
-    path = np.geomspace(rng["from"], rng["to"], int(rng["count"]))
+    path = force_grid(rng["from"], rng["to"], rng["count"])
     last = max(1, int(np.searchsorted(path, to * (1 + 1e-12), side="right")) - 1)
     source = grid.get("realization_of")
     tangential = {a.name: [a.paper] for a in axes.optional_axes(normal=False) if a.name in cfg}

@@ -40,6 +40,7 @@ from ...models.elasticity import effective_modulus
 from .axes import AXES, kind_of
 from .limits import full_contact_slope
 from .measured import resolve_inputs
+from .records import force_grid
 from .settings import StudySettings
 from .coerce import coerce
 from .schema import check_finite, fill_defaults, key_text, load_schema, printable, schema_error
@@ -235,7 +236,7 @@ def _check_fine_grid(cfg: dict) -> None:
                         for m in cfg["exponent"])
         grid["fine_to"] = float(min(rng["to"], crossover))
     grid["fine_to"] = float(grid["fine_to"])
-    second = float(np.geomspace(rng["from"], rng["to"], int(rng["count"]))[1])
+    second = float(force_grid(rng["from"], rng["to"], rng["count"])[1])
     if not second <= grid["fine_to"] <= rng["to"]:
         raise ConfigError(f"config key 'grid.fine_to' = {grid['fine_to']:g} is outside the spheres' load path; allowed: "
                           f"{second:.4g} (its second load) ... {rng['to']:g} (forces.sphere.to)", key="grid.fine_to")
