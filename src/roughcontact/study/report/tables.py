@@ -123,6 +123,11 @@ TABLE_PAGES = {
                                          "(Richardson's where the three grids are monotone) and the loads where "
                                          "one asperity carries the load (single_asperity). Every digit: "
                                          "results/fine_reference.csv."),
+    "tangential": ("Tangential stiffness per load",
+                   "Per sphere combination, Poisson ratio and load: the ensemble's full-stick k_t/k_n with its 95 % "
+                   "bootstrap-over-seeds interval against Mindlin's 2(1-nu)/(2-nu), and the load's branch (fractal: "
+                   "resolved and below the crossover force F_tr; Hertz: above). Every digit: "
+                   "results/tangential/tangential.csv."),
     "pull_off": ("Pull-off", "The pull-off force of the adhesive runs over JKR's with the interval over seeds. "
                              "Every digit: results/adhesion/pull_off.csv."),
     "stickiness": ("Stickiness", "Pastewka & Robbins' stickiness: the loading slope dF/dA per (H, N) with its "

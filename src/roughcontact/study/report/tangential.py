@@ -24,7 +24,7 @@ from ..analysis import tangential as estimate
 from ..config.settings import StudySettings
 from ..files import provenance
 from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
-from .tables import write_html_table
+from .tables import csv_to_html
 
 __all__ = ["run_tangential", "make_tangential_figures"]
 
@@ -53,11 +53,7 @@ def run_tangential(study, run_files, crossover_csv, out_nc, out_csv, out_html) -
     write_groups(out_nc, groups, attrs)
     table = estimate.per_load_table(groups, _crossover(crossover_csv), study)
     write_csv(table, out_csv)
-    write_html_table(table, out_html, title="Tangential stiffness per load",
-                     lead=("Per sphere combination, Poisson ratio and load: the ensemble's full-stick k_t/k_n with "
-                           "its 95 % bootstrap-over-seeds interval against Mindlin's 2(1-nu)/(2-nu), and the "
-                           "load's branch (fractal: resolved and below the crossover force F_tr; Hertz: above). "
-                           "Every digit: results/tangential/tangential.csv."))
+    csv_to_html(out_csv, out_html, "tangential")
     log.info("merged the tangential runs (%s) into %s; %d rows in %s", ", ".join(groups), out_nc, len(table), out_csv)
 
 
