@@ -82,3 +82,30 @@ def test_pull_off_figure_is_faceted(tmp_path, monkeypatch):
         assert {f"H = {h:g}" for h in hursts} <= {t for e in entries for t in e}
     finally:
         pyplot().close(fig)
+
+
+def test_scorecard_figure_is_faceted(tmp_path, monkeypatch):
+    """Every registered model (eight): every panel of a combination's scorecard figure holds at most
+    MAX_CURVES lines (the zero line included) and every model is drawn once."""
+    import pandas as pd
+
+    from roughcontact.models import scorecard as registry
+    from roughcontact.study.report import scorecard
+
+    figures = []
+    monkeypatch.setattr(scorecard, "save_png", lambda fig, path, **_: figures.append(fig))
+    force = np.geomspace(1e-5, 1e-2, 8)
+    names = list(registry.models())
+    curve = xr.Dataset({**{name: ("force", np.full(8, 0.01 * i)) for i, name in enumerate(names)},
+                        "band_low": ("force", np.full(8, -0.05)), "band_high": ("force", np.full(8, 0.05)),
+                        "resolved": ("force", np.ones(8, dtype=int))}, coords={"force_normalized": ("force", force)})
+    table = pd.DataFrame([{"combination": "H0.7_R0.5_h0.01", "model": m, "max_rel_dev": 0.1, "not_modelled": "",
+                           "decision": "worse"} for m in names])
+    scorecard.scorecard_figure(tmp_path / "f.png", "H0.7_R0.5_h0.01", curve, table)
+    try:
+        drawn = [ax for ax in figures[0].axes if ax.lines]
+        assert max(len(ax.lines) for ax in drawn) <= MAX_CURVES, [len(ax.lines) for ax in drawn]
+        labels = [line.get_label().split(" ")[0] for ax in drawn for line in ax.lines[1:]]
+        assert sorted(labels) == sorted(names), labels
+    finally:
+        pyplot().close(figures[0])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+import math
 
 import numpy as np
 
@@ -14,7 +15,7 @@ from ..config import axes
 from ..config.settings import StudySettings
 from ..files import provenance
 from ..runs import naming as runs
-from .plotting import pyplot, save_png
+from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
 from .tables import write_html_table
 
 __all__ = ["scorecard_lead", "scorecard_figure", "run_models"]
@@ -55,20 +56,25 @@ def scorecard_lead(table=None) -> str:
 
 def scorecard_figure(path, label: str, curve, table) -> None:
     """The figure of one sphere combination: every model's ``k_model/k_BEM − 1`` against the load,
-    in the ensemble's band (widened by the grid error where measured)."""
+    in the ensemble's band (widened by the grid error where measured); the models split evenly
+    over as few panels as hold at most :data:`~roughcontact.study.report.plotting.MAX_CURVES` lines
+    each (the zero line included)."""
     plt = pyplot()
     force = curve["force_normalized"].values
     shown = curve["resolved"].values.astype(bool)
-    fig, ax = plt.subplots(figsize=(6, 4))
-    if "grid_error" in curve:
-        g = np.abs(curve["grid_error"].values)
-        ax.fill_between(force, -np.sqrt(curve["band_low"].values ** 2 + g ** 2),
-                        np.sqrt(curve["band_high"].values ** 2 + g ** 2), color="0.93",
-                        label="band and grid error (grid.coarse)")
-    ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
-    ax.axhline(0, color="0.4", lw=0.8)
-    for name in registry.models():
-        if name in curve:
+    names = [name for name in registry.models() if name in curve]
+    panels = max(1, math.ceil(len(names) / (MAX_CURVES - 1)))
+    groups = chunks(names, math.ceil(len(names) / panels) if names else 1)
+    fig, axes = panel_grid(plt, len(groups), width=6, height=4, max_columns=2, sharey=True)
+    for ax, group in zip(axes, groups):
+        if "grid_error" in curve:
+            g = np.abs(curve["grid_error"].values)
+            ax.fill_between(force, -np.sqrt(curve["band_low"].values ** 2 + g ** 2),
+                            np.sqrt(curve["band_high"].values ** 2 + g ** 2), color="0.93",
+                            label="band and grid error")
+        ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
+        ax.axhline(0, color="0.4", lw=0.8)
+        for name in group:
             mark = table[(table["combination"] == label) & (table["model"] == name)]
             text = f" (max {float(mark['max_rel_dev'].iloc[0]):.1%})" if len(mark) else ""
             missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
@@ -78,9 +84,9 @@ def scorecard_figure(path, label: str, curve, table) -> None:
                 text += " ★" if mark["decision"].iloc[0] == "recommended" else " ≈"
             ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
                         label=name + text)
-    ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1",
-           title=label + ("" if "grid_error" in curve else " (grid error not measured)"))
-    ax.legend(fontsize=7)
+        ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1")
+        ax.legend(fontsize=7)
+    fig.suptitle(label + ("" if "grid_error" in curve else " (grid error not measured)"), fontsize=10)
     fig.tight_layout()
     save_png(fig, path)
 
