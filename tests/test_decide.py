@@ -313,3 +313,50 @@ def test_the_recommended_row_lists_the_tied_models():
 def test_a_grid_table_without_this_combination_is_not_measured():
     rows = _decide(("exact", 1.0, {"g": math.nan}), ("off", 1.1, {"g": math.nan}))
     assert not rows["exact"]["grid_error_measured"], rows["exact"]
+
+
+def _branch_row(systematic, verdict="consistent", inside=0.9, measured=True):
+    """A row with one resolved branch (high) of the given systematic deviation and verdict."""
+    row = {"n_loads_low": 0, "systematic_low": math.nan, "n_loads_high": 5, "systematic_high": systematic,
+           "systematic_high_verdict": verdict, "inside_band": inside}
+    if measured:
+        row.update({"systematic_high_total_verdict": verdict, "inside_band_total": inside})
+    return row
+
+
+def test_within_three_percent_holds():
+    assert decision.holds(_branch_row(0.029, verdict="differs")), "2.9 %, significant but within 3 %"
+
+
+def test_within_five_percent_and_consistent_holds():
+    assert decision.holds(_branch_row(0.045)), "4.5 %, consistent with 0 with the grid error"
+
+
+def test_within_five_percent_but_significant_does_not_hold():
+    assert not decision.holds(_branch_row(0.045, verdict="differs")), "4.5 %, significant"
+
+
+def test_outside_the_band_at_a_quarter_of_the_loads_does_not_hold():
+    assert not decision.holds(_branch_row(0.01, inside=0.75)), "inside at 75 % < 80 %"
+
+
+def test_without_a_grid_error_the_sampling_verdict_decides():
+    assert not decision.holds(_branch_row(0.045, verdict="differs", measured=False)), "no total verdict"
+
+
+def test_no_resolved_branch_does_not_hold():
+    assert not decision.holds({"n_loads_low": 0, "n_loads_high": 0, "inside_band": 1.0}), "no branch"
+
+
+def test_a_model_that_holds_is_recommended_over_a_lower_score():
+    """'low_s' has the smaller S but does not hold (outside the band at half the loads); 'holds' is
+    recommended."""
+    rows = _decide(("low_s", 1.01, {**_branch_row(0.01, inside=0.5)}),
+                   ("holds", 1.02, {**_branch_row(0.02, inside=0.9)}))
+    assert rows["holds"]["decision"] == "recommended", (rows["holds"]["decision"], rows["low_s"]["decision"])
+
+
+def test_without_a_holding_model_the_lowest_score_is_recommended():
+    rows = _decide(("low_s", 1.01, {**_branch_row(0.01, inside=0.5)}),
+                   ("high_s", 1.02, {**_branch_row(0.02, inside=0.5)}))
+    assert rows["low_s"]["decision"] == "recommended", rows["low_s"]

@@ -12,9 +12,16 @@ load's deviation enlarged by the grid error there::
 
 the largest rms error on either branch that the grid could hide. Every resolved load counts
 alike (an inverse-variance weight, as in ``systematic_*``, would let the Hertz end, where every
-model agrees, decide). Among the *scored* rows of the combination (``not_modelled`` and
-``outside_range`` empty, ``S_m`` finite) the recommended model ``r`` minimises ``S_m`` (the
-registry's order breaks an exact tie). Another scored model ``m`` is *tied* with ``r`` when its
+model agrees, decide). A row *holds* (``holds``, :func:`holds`) when on each branch with resolved
+loads its systematic deviation is within :data:`HOLDS_SYSTEMATIC` (3 %), or within
+:data:`HOLDS_SYSTEMATIC_CONSISTENT` (5 %) and consistent with 0 once the grid error is added
+(``systematic_*_total_verdict``; the sampling verdict ``systematic_*_verdict`` where no grid error
+is measured), and it lies inside the ensemble's band widened by the grid error at a fraction
+:data:`HOLDS_INSIDE` (80 %) of the resolved loads or more (``inside_band_total``; ``inside_band``
+without a grid error). Among the *scored* rows of the combination (``not_modelled`` and
+``outside_range`` empty, ``S_m`` finite) the recommended model ``r`` minimises ``S_m`` over the
+rows that hold, or over every scored row when none holds (the registry's order breaks an exact
+tie). Another scored model ``m`` is *tied* with ``r`` when its
 disadvantage is not significant: with ``D_j = S_m^(j) − S_r^(j)``, ``S^(j)`` the score against the
 ensemble mean of the bootstrap's resample ``j`` of the seeds (the *same* resamples for both
 models: a paired bootstrap), and ``[D_low, D_high]`` its percentile interval at the study's
@@ -31,7 +38,7 @@ never recommended.
 Columns added to ``models.csv``: ``outside_range`` (why the combination lies outside the model's
 stated range; empty inside), ``decision_score`` (``S_m``), ``difference_ci_low`` /
 ``difference_ci_high`` (the paired interval of ``S_m − S_r``; 0 for ``r``), ``grid_error_measured``
-(bool: a finite grid error at a resolved load), ``recommended`` (bool, exactly one row per
+(bool: a finite grid error at a resolved load), ``holds`` (bool, :func:`holds`), ``recommended`` (bool, exactly one row per
 combination with a scored model), ``tied_with_recommended`` (bool), ``tied_models`` (on the
 recommended row: the tied models, comma-separated) and ``decision`` (``recommended``, ``tied``,
 ``worse``, ``not scored``); ``rank`` (by ``max_rel_dev``) is kept. :func:`sort` orders the table
@@ -47,17 +54,26 @@ import numpy as np
 
 from .statistics import interval
 
-__all__ = ["RULE", "DECISIONS", "OUTSIDE", "inputs", "score", "decide", "sort", "matrix", "matrix_html",
-           "grid_note"]
+__all__ = ["RULE", "DECISIONS", "OUTSIDE", "HOLDS_SYSTEMATIC", "HOLDS_SYSTEMATIC_CONSISTENT", "HOLDS_INSIDE",
+           "inputs", "score", "holds", "decide", "sort", "matrix", "matrix_html", "grid_note"]
 
 #: the column naming why a row lies outside its model's stated range
 OUTSIDE = "outside_range"
 #: the values of the ``decision`` column, in the order of the sorted table
 DECISIONS = ("recommended", "tied", "worse", "not scored")
+#: a row holds when each branch's systematic deviation is at most this (relative) ...
+HOLDS_SYSTEMATIC = 0.03
+#: ... or at most this and consistent with 0 once the grid error is added ...
+HOLDS_SYSTEMATIC_CONSISTENT = 0.05
+#: ... and it lies inside the band widened by the grid error at this fraction of the resolved loads
+HOLDS_INSIDE = 0.8
 #: the rule in one sentence, for the page's lead and the guide
 RULE = ("Decision rule: per combination, the recommended model (★) minimises S = max over the two branches "
         "(below/above the crossover) of the rms over the resolved loads of (|k_model/k_BEM - 1| + grid error "
-        "at the load) among the scored rows (not not_modelled, not outside_range); a model is tied (≈) with it "
+        "at the load) among the scored rows (not not_modelled, not outside_range) that hold (each branch's "
+        "systematic deviation within 3 %, or within 5 % and consistent with 0 with the grid error, and inside "
+        "the band widened by the grid error at >= 80 % of the resolved loads), or among every scored row when "
+        "none holds; a model is tied (≈) with it "
         "when the lower end of the paired bootstrap-over-seeds interval of S_model − S_recommended is at most "
         "twice the larger rms grid error, else worse.")
 _MARK = {"recommended": "★", "tied": "≈", "worse": "", "not scored": "n.s."}
@@ -119,6 +135,39 @@ def score(inp: dict):
     return max(values), np.max(boots, axis=0), g_hat
 
 
+def holds(row: dict) -> bool:
+    """Whether a scorecard row holds (module docstring): each branch with resolved loads within
+    :data:`HOLDS_SYSTEMATIC`, or within :data:`HOLDS_SYSTEMATIC_CONSISTENT` and consistent with 0
+    with the grid error, and inside the widened band at :data:`HOLDS_INSIDE` of the loads or more.
+
+    Parameters
+    ----------
+    row : dict
+        A row of ``models.csv`` before the decision (``systematic_low``/``_high`` with their
+        verdicts, ``n_loads_low``/``_high``, ``inside_band`` and ``inside_band_total``).
+
+    Returns
+    -------
+    bool
+        False without a resolved load on either branch.
+    """
+    def finite(key):
+        value = row.get(key, math.nan)
+        return isinstance(value, (int, float)) and math.isfinite(value)
+
+    measured = finite("inside_band_total")
+    inside = row["inside_band_total"] if measured else row.get("inside_band", math.nan)
+    if not (isinstance(inside, (int, float)) and inside >= HOLDS_INSIDE):
+        return False
+    branches = [b for b in ("low", "high") if row.get(f"n_loads_{b}", 0) and finite(f"systematic_{b}")]
+    for b in branches:
+        value = abs(row[f"systematic_{b}"])
+        verdict = row.get(f"systematic_{b}_total_verdict" if measured else f"systematic_{b}_verdict", "")
+        if not (value <= HOLDS_SYSTEMATIC or (value <= HOLDS_SYSTEMATIC_CONSISTENT and verdict == "consistent")):
+            return False
+    return bool(branches)
+
+
 def _scored(row: dict) -> bool:
     return not row.get("not_modelled", "") and not row.get(OUTSIDE, "")
 
@@ -142,7 +191,8 @@ def decide(rows: list, inputs_of: list, level: float = 0.95) -> list:
     """
     scores = [score(inp) if inp is not None else (math.nan, None, 0.0) for inp in inputs_of]
     eligible = [i for i, row in enumerate(rows) if _scored(row) and math.isfinite(scores[i][0])]
-    best = min(eligible, key=lambda i: scores[i][0]) if eligible else None
+    holding = [i for i in eligible if holds(rows[i])]
+    best = min(holding or eligible, key=lambda i: scores[i][0]) if eligible else None
     out = []
     for i, row in enumerate(rows):
         s, boot, g = scores[i]
@@ -157,7 +207,7 @@ def decide(rows: list, inputs_of: list, level: float = 0.95) -> list:
             decision = "not scored"
         measured = bool(inputs_of[i] is not None and inputs_of[i]["measured"])
         out.append({**row, "decision_score": s, "difference_ci_low": low, "difference_ci_high": high,
-                    "grid_error_measured": measured, "recommended": decision == "recommended",
+                    "grid_error_measured": measured, "holds": holds(row), "recommended": decision == "recommended",
                     "tied_with_recommended": decision == "tied", "decision": decision})
     tied = ", ".join(r["model"] for r in out if r["decision"] == "tied")
     for r in out:

@@ -42,7 +42,9 @@ model and combination, over the same resolved loads:
 
 Decision (:mod:`roughcontact.study.analysis.decision`): per combination, the recommended model minimises
 ``S = max_b sqrt(mean_{F ∈ b}(|k_model/k_BEM − 1| + |g_F|)²)`` (``g`` 0 where not measured, and
-the page says so) among the scored rows; the others are ``tied`` (paired bootstrap over the seeds) or
+the page says so) among the scored rows that hold (:func:`~roughcontact.study.analysis.decision.holds`:
+each branch within 3 %, or 5 % and consistent, and inside the widened band at 80 % of the loads;
+among every scored row when none holds); the others are ``tied`` (paired bootstrap over the seeds) or
 ``worse``; a row outside its model's stated range (``outside_range``,
 :attr:`roughcontact.models.scorecard.Model.ranges`) is flagged and never recommended. The table
 is sorted by combination, then decision.

@@ -153,23 +153,31 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
     parts.append("<h2>Recommended model per sphere combination</h2>")
     basis = ("the scorecard's decision (its recommended column; the model scorecard gives the rule)"
              if "recommended" in models.columns else "rank 1: the smallest largest deviation max_rel_dev")
-    parts.append(f"<p>Chosen by {html.escape(basis)}; the systematic deviation of k from the ensemble "
-                 "below and above the crossover force (mean relative deviation, 95 % interval, verdict).</p>")
+    parts.append(f"<p>Chosen by {html.escape(basis)}; whether it holds (each branch within 3 %, or 5 % and "
+                 "consistent with the grid error, and inside the widened band at 80 % of the loads); the systematic "
+                 "deviation of k from the ensemble below and above the crossover force (mean relative deviation, "
+                 "95 % interval, verdict).</p>")
     if len(models):
         parts.append(f"<p>{html.escape(decision.grid_note(models))}</p>")
     rows = []
     for r in recommended_models(models):
         rows.append([_combination(r), f'<td class="model" style="{_CELL}"><b>{html.escape(str(r["model"]))}</b></td>',
-                     fmt(r.get("max_rel_dev")),
+                     _holds(r.get("holds")), fmt(r.get("max_rel_dev")),
                      _value_interval(r.get("systematic_low"), r.get("systematic_low_ci_low"), r.get("systematic_low_ci_high")),
                      _verdict_cell(r.get("systematic_low_verdict")),
                      _value_interval(r.get("systematic_high"), r.get("systematic_high_ci_low"), r.get("systematic_high_ci_high")),
                      _verdict_cell(r.get("systematic_high_verdict"))])
-    parts.append(_table(["combination", "model", "max_rel_dev", "systematic, F < F_tr", "verdict",
+    parts.append(_table(["combination", "model", "holds", "max_rel_dev", "systematic, F < F_tr", "verdict",
                          "systematic, F > F_tr", "verdict"], rows))
     parts.append(f'<p style="color:#555; font-size: 11px;">{stamp()}</p>')
     parts.append("</div>")
     return "\n".join(parts) + "\n"
+
+
+def _holds(value) -> str:
+    """The ``holds`` cell: yes, no, or a dash for a table without the column."""
+    text = str(value).strip().lower()
+    return {"true": "yes", "false": "no"}.get(text, "—")
 
 
 def _read(path):
