@@ -19,23 +19,41 @@ def _eq13(hurst):
     return 1.7 / (np.asarray(hurst) + 1)
 
 
-@pytest.fixture
-def study(tmp_path, monkeypatch):
-    """A study whose ensemble means are the model with c_zeta = 0.9 and p = 1.4 exactly (three seeds
+def _made_up(tmp_path, hurst, constants):
+    """A study whose ensemble means are the model with (c_zeta, p) = constants(H) exactly (three seeds
     scattered by factors 0.9, 1, 1.1 around it)."""
-    monkeypatch.setattr(superposition, "zeta_law", _eq13)
     k = np.array([[superposition.stiffness_from_force(FORCES, radius=0.5, hurst=h, h_rms=1e-2, length=1.0,
-                                                      e_star=1.0, zeta=0.9 * _eq13(h), power=1.4)] for h in HURST])
+                                                      e_star=1.0, zeta=constants(h)[0] * _eq13(h),
+                                                      power=constants(h)[1])] for h in hurst])
     k = k[:, :, None, None, :] * np.array([0.9, 1.0, 1.1])[None, None, None, :, None]   # (hurst, radius, h, seed, F)
+    hurst = list(hurst)
     dims = ("hurst", "radius", "h_rms", "seed", "force")
     ds = xr.Dataset({"stiffness": (dims, k), "contact_cells": (dims, np.full(k.shape, 100))},
-                    coords={"hurst": HURST, "radius": [0.5], "h_rms": [1e-2], "seed": [0, 1, 2], "force": FORCES})
-    cfg = resolve_config({"grid": {"n": 129}, "hurst": HURST, "radius": [0.5], "h_rms": [1e-2], "seeds": 3,
+                    coords={"hurst": hurst, "radius": [0.5], "h_rms": [1e-2], "seed": [0, 1, 2], "force": FORCES})
+    cfg = resolve_config({"grid": {"n": 129}, "hurst": hurst, "radius": [0.5], "h_rms": [1e-2], "seeds": 3,
                           "forces": {"sphere": {"from": float(FORCES[0]), "to": float(FORCES[-1]),
                                                 "count": len(FORCES)}}, "fit": {"zeta": {"min_cells": 20}}})
     (tmp_path / "results").mkdir()
     write_groups(tmp_path / "results" / "stiffness.nc", {"sphere": ds}, {"config": canonical_json(cfg)})
     return tmp_path
+
+
+@pytest.fixture
+def study(tmp_path, monkeypatch):
+    """The model with c_zeta = 0.9 and p = 1.4 at H 0.5 and 0.8."""
+    monkeypatch.setattr(superposition, "zeta_law", _eq13)
+    return _made_up(tmp_path, HURST, lambda h: (0.9, 1.4))
+
+
+#: the form ``hurst``'s made-up coefficients: c = 0.8 + 0.15 H, p = 0.9 + 0.8 H
+LINEAR = {"zeta_factor": (0.8, 0.15), "power": (0.9, 0.8)}
+
+
+@pytest.fixture
+def hurst_study(tmp_path, monkeypatch):
+    """The model with c_zeta and p linear in H (:data:`LINEAR`) at H 0.4, 0.6, 0.8."""
+    monkeypatch.setattr(superposition, "zeta_law", _eq13)
+    return _made_up(tmp_path, [0.4, 0.6, 0.8], lambda h: superposition.hurst_constants(h, LINEAR))
 
 
 def test_recovers_the_zeta_factor(study):
@@ -49,6 +67,21 @@ def test_recovers_the_power(study):
 def test_deviation_of_the_exact_model_is_zero(study):
     worst = max(calibration.calibrate([study]).max_rel_dev.values())
     assert worst == pytest.approx(0.0, abs=1e-6), "the model the study was made with"
+
+
+def test_hurst_form_recovers_the_zeta_factor(hurst_study):
+    assert calibration.calibrate([hurst_study], "hurst").zeta_factor == pytest.approx(LINEAR["zeta_factor"], abs=1e-4), \
+        "(c0, c1) of the made-up study"
+
+
+def test_hurst_form_recovers_the_power(hurst_study):
+    assert calibration.calibrate([hurst_study], "hurst").power == pytest.approx(LINEAR["power"], abs=1e-3), \
+        "(p0, p1) of the made-up study"
+
+
+def test_unknown_form_rejected(study):
+    with pytest.raises(ValueError, match="form must be one of"):
+        calibration.calibrate([study], "quadratic")
 
 
 def test_no_sphere_runs_rejected(tmp_path):

@@ -44,9 +44,30 @@ def test_flat_is_eq11():
                                                       zeta=1.0), rel=1e-12), "R = inf against eq. 11"
 
 
-def test_power_below_one_rejected():
-    with pytest.raises(ValueError, match="power must be >= 1"):
-        superposition.force_from_stiffness(1e-2, power=0.5, **SPHERE)
+def test_power_half_is_the_squared_sum_of_roots():
+    """p = 1/2 (broader than eq. 16): F = (√F_body + √F_rough)² at every stiffness."""
+    k = np.logspace(-3, -1, 7)
+    body = k**3 / (6 * SPHERE["radius"])                                           # eq. 10, E* = 1
+    rough = SPHERE["h_rms"] * (k / SPHERE["zeta"]) ** (SPHERE["hurst"] + 1)        # eq. 12, E* = L = 1
+    assert superposition.force_from_stiffness(k, power=0.5, **SPHERE) == pytest.approx(
+        (np.sqrt(body) + np.sqrt(rough)) ** 2, rel=1e-12), "p = 1/2 against its closed form"
+
+
+def test_power_half_inverts():
+    k = superposition.stiffness_from_force(FORCES, power=0.5, **SPHERE)
+    assert superposition.force_from_stiffness(k, power=0.5, **SPHERE) == pytest.approx(FORCES, rel=1e-9), \
+        "F(k(F)) = F at p = 1/2"
+
+
+def test_hurst_constants_are_linear():
+    constants = {"zeta_factor": (0.8, 0.1), "power": (1.0, 0.5)}
+    assert superposition.hurst_constants(0.6, constants) == pytest.approx((0.86, 1.3), rel=1e-12), \
+        "c = 0.8 + 0.1 H, p = 1 + 0.5 H at H = 0.6"
+
+
+def test_power_not_positive_rejected():
+    with pytest.raises(ValueError, match="power must be > 0"):
+        superposition.force_from_stiffness(1e-2, power=0.0, **SPHERE)
 
 
 def test_rough_force_with_its_own_reference_is_eq12():
@@ -74,3 +95,16 @@ def test_spectrum_without_reference_rejected():
     reference = self_affine_spectrum(hurst=0.7, h_rms=9e-3, length=1.0, n=33)
     with pytest.raises(ValueError, match="both spectrum and reference"):
         superposition.rough_force(0.1, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0, spectrum=reference)
+
+
+def test_contact_scale_h_is_eq16_where_its_power_is_one():
+    """At H₁ = (1 − p₀)/p₁ the order of contact_scale_h's p-norm is 1: the model is eq. 16 with
+    ζ = c(H₁)·ζ_law(H₁)."""
+    from roughcontact.models.zeta_law import zeta_law
+
+    (c0, c1), (p0, p1) = superposition.CALIBRATED_HURST["zeta_factor"], superposition.CALIBRATED_HURST["power"]
+    hurst = (1.0 - p0) / p1
+    sphere = dict(radius=0.5, hurst=hurst, h_rms=9e-3, length=1.0, e_star=1.0)
+    k = superposition.hurst_calibrated_stiffness(FORCES, **sphere)
+    eq16 = paper.stiffness_from_force(FORCES, zeta=(c0 + c1 * hurst) * float(zeta_law(hurst)), **sphere)
+    assert k == pytest.approx(eq16, rel=1e-10), f"contact_scale_h at H = {hurst:.4f} against eq. 16"

@@ -14,7 +14,7 @@ surfaces. This module joins the two forces by their p-norm
 which keeps both asymptotes (eqs. 9 and 11), is eq. 16 for ``p = 1`` and tends to
 ``max(F_body, F_rough)`` (``k = min(k_9, k_11)``) as ``p → ∞``. At the crossover stiffness
 (``F_body = F_rough``) the force is ``2^(1/p)`` times either term instead of twice it: a
-``p > 1`` makes the transition sharper.
+``p > 1`` makes the transition sharper, a ``0 < p < 1`` broader than eq. 16's.
 
 **The roughness seen at the scale of the contact.** Eq. 12 holds for the paper's spectrum,
 self-affine from L down to the grid, where it depends on h and L only through the amplitude
@@ -34,8 +34,9 @@ profile that is flat beyond λ_r; below a cutoff the surface is smooth and ``SF 
 ``w`` (the window, 2 by default: the contact's diameter) is a modelling choice.
 
 :data:`CALIBRATED` holds p and a factor on ζ calibrated on the BEM ensembles of named presets
-(:mod:`roughcontact.study.analysis.calibration`); the derivation and the calibration are in the
-documentation (guide, "Models").
+(:mod:`roughcontact.study.analysis.calibration`); :data:`CALIBRATED_HURST` makes both linear in
+H (the model ``contact_scale_h``, :func:`hurst_calibrated_stiffness`). The derivation and the
+calibrations are in the documentation (guide, "Models"; results, "The fractal branch's model").
 
 Units are the caller's, consistent as in :mod:`roughcontact.models.paper`.
 """
@@ -48,7 +49,8 @@ import numpy as np
 from .paper import _body_coefficient, body_stiffness, fractal_stiffness
 from .zeta_law import zeta_law
 
-__all__ = ["CALIBRATED", "rough_force", "force_from_stiffness", "stiffness_from_force", "calibrated_stiffness"]
+__all__ = ["CALIBRATED", "CALIBRATED_HURST", "rough_force", "force_from_stiffness", "stiffness_from_force",
+           "calibrated_stiffness", "hurst_constants", "hurst_calibrated_stiffness"]
 
 #: c_ζ (the factor on :func:`roughcontact.models.zeta_law.zeta_law`) and p, calibrated by
 #: ``python -m roughcontact.study.analysis.calibration`` on the sphere ensembles of presets/calibration.yaml
@@ -57,6 +59,14 @@ __all__ = ["CALIBRATED", "rough_force", "force_from_stiffness", "stiffness_from_
 #: (eq. 16 with the same ζ law: 3.46; with ζ = 1.7/(H+1): 4.60)
 CALIBRATED = {"zeta_factor": 0.8866, "power": 1.4215,
               "source": "presets calibration, convergence-513, convergence-1025 (python -m roughcontact.study.analysis.calibration)"}
+#: ``contact_scale_h``: c_ζ and p polynomials in H (:func:`hurst_constants`), here of degree 1,
+#: calibrated by ``python -m roughcontact.study.analysis.calibration --form hurst`` on the sphere
+#: ensembles of presets/calibration-branches.yaml alone (H 0.3, 0.6, 0.9; R 0.15, 0.6 L; h_rms 8e-3,
+#: 3e-2 L; 449², 256 seeds), 132 resolved loads, 2026-11-27: χ²/point 0.96 (the form ``constant`` on
+#: the same loads: 6.02; 64 of the seeds gave (0.929, −0.088) and (0.749, 0.848)); ``hurst``: the H
+#: range it rests on
+CALIBRATED_HURST = {"zeta_factor": (0.9266, -0.0863), "power": (0.7800, 0.8420), "hurst": (0.3, 0.9),
+                    "source": "presets calibration-branches (python -m roughcontact.study.analysis.calibration --form hurst)"}
 
 
 def rough_force(stiffness, *, hurst, h_rms, length, e_star, zeta, spectrum=None, reference=None, window=2.0):
@@ -106,7 +116,7 @@ def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zet
     hurst, h_rms, length, e_star, zeta : float
         H, h (length), L (length), E* (force/length²) and ζ of eq. 12.
     power : float
-        p ≥ 1; 1 is eq. 16.
+        p > 0; 1 is eq. 16.
     exponent : float
         m of the body of revolution z = (R/m)(r/R)^m; 2 is the paraboloid.
     spectrum, reference, window
@@ -117,8 +127,8 @@ def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zet
     numpy.ndarray
         F (force).
     """
-    if not power >= 1.0:
-        raise ValueError(f"power must be >= 1, got {power!r}")
+    if not power > 0.0:
+        raise ValueError(f"power must be > 0, got {power!r}")
     k = np.asarray(stiffness, dtype=float)
     rough = rough_force(k, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta,
                         spectrum=spectrum, reference=reference, window=window)
@@ -135,7 +145,7 @@ def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, p
     """Invert :func:`force_from_stiffness` for k at given force(s) (bisection in ln k).
 
     F(k) increases with k. With a finite radius the body's term alone bounds k from above by
-    the body's stiffness at F (eq. 9); with ``radius = inf`` and a spectrum, ``k_top`` is eq. 11's
+    the body's stiffness at F (eq. 9; the p-norm is at least its larger term for every p > 0); with ``radius = inf`` and a spectrum, ``k_top`` is eq. 11's
     stiffness times e³⁰. 200 halvings of ``[ln k_top − 60, ln k_top]`` reach machine precision.
     """
     force = np.asarray(force, dtype=float)
@@ -167,3 +177,22 @@ def calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, exponen
     return stiffness_from_force(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
                                 zeta=zeta_factor * float(zeta_law(hurst)), power=power, exponent=exponent,
                                 spectrum=spectrum, reference=reference)
+
+
+def hurst_constants(hurst, constants=None) -> tuple[float, float]:
+    """``(c_ζ, p)`` at the Hurst exponent H: polynomials in H, ``c_ζ = c₀ + c₁ H (+ c₂ H²)`` and
+    ``p = p₀ + p₁ H (+ p₂ H²)``, the coefficients ``constants["zeta_factor"] = (c₀, c₁, ...)`` and
+    ``constants["power"] = (p₀, p₁, ...)`` in rising order (default :data:`CALIBRATED_HURST`)."""
+    constants = CALIBRATED_HURST if constants is None else constants
+    c, p = (np.polynomial.polynomial.polyval(hurst, constants[key]) for key in ("zeta_factor", "power"))
+    return float(c), float(p)
+
+
+def hurst_calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, exponent=2.0, spectrum=None,
+                               reference=None, constants=None):
+    """The scorecard's ``contact_scale_h``: :func:`calibrated_stiffness` with ``c_ζ`` and ``p``
+    linear in H (:func:`hurst_constants`, :data:`CALIBRATED_HURST`)."""
+    zeta_factor, power = hurst_constants(hurst, constants)
+    return calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
+                                exponent=exponent, spectrum=spectrum, reference=reference,
+                                zeta_factor=zeta_factor, power=power)
