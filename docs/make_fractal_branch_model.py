@@ -163,7 +163,11 @@ def make_page(calibration: Path, heldout, validation: Path) -> Path:
         "",
         _table(_rows(_scores(tested))),
         "",
-        f"![every held-out combination](fractal_branch_model.png)",
+        "![every held-out combination](fractal_branch_model.png)",
+        "",
+        "Each held-out combination: the deviation of `contact_scale_h`, `contact_scale` and eq. 16 from the "
+        "ensemble mean at the resolved loads, in the ensemble's 95 % band (dark) and that band widened by "
+        "the grid error (light).",
         "",
         "## Calibration set",
         "",
