@@ -25,6 +25,7 @@ import pandas as pd
 from roughcontact.study.files.directory import StudyDirectory
 from roughcontact.study.report.plotting import panel_grid, pyplot, save_png
 
+from make_calibration import _commit, _scores
 from make_results import _machine, _table
 
 DOCS = Path(__file__).resolve().parent
@@ -36,15 +37,6 @@ MODEL = "contact_scale_h"
 COMPARED = ("contact_scale", "eq16_paper")
 #: the seeds of issue 31's first sweep, for the sampling spread
 ISSUE_SEEDS = 16
-
-
-def _scores(dirs) -> pd.DataFrame:
-    tables = []
-    for workdir in map(Path, dirs):
-        table = StudyDirectory(workdir).table("models")
-        table.insert(0, "study", workdir.name)
-        tables.append(table)
-    return pd.concat(tables, ignore_index=True)
 
 
 def _branch(row, branch: str) -> str:
@@ -132,11 +124,6 @@ def _figure(dirs) -> None:
         ax.legend(fontsize=6)
     fig.tight_layout()
     save_png(fig, FIGURE)
-
-
-def _commit(workdir: Path) -> str:
-    attrs = StudyDirectory(workdir).attrs("models_fit")
-    return f"{workdir.name}: `{attrs.get('git_commit', 'unknown')}`, {attrs.get('created_utc', '')}"
 
 
 def make_page(calibration, heldout, validation: Path) -> Path:
