@@ -191,7 +191,8 @@ def decide(rows: list, inputs_of: list, level: float = 0.95) -> list:
     """
     scores = [score(inp) if inp is not None else (math.nan, None, 0.0) for inp in inputs_of]
     eligible = [i for i, row in enumerate(rows) if _scored(row) and math.isfinite(scores[i][0])]
-    holding = [i for i in eligible if holds(rows[i])]
+    held = [holds(row) for row in rows]
+    holding = [i for i in eligible if held[i]]
     best = min(holding or eligible, key=lambda i: scores[i][0]) if eligible else None
     out = []
     for i, row in enumerate(rows):
@@ -207,7 +208,7 @@ def decide(rows: list, inputs_of: list, level: float = 0.95) -> list:
             decision = "not scored"
         measured = bool(inputs_of[i] is not None and inputs_of[i]["measured"])
         out.append({**row, "decision_score": s, "difference_ci_low": low, "difference_ci_high": high,
-                    "grid_error_measured": measured, "holds": holds(row), "recommended": decision == "recommended",
+                    "grid_error_measured": measured, "holds": held[i], "recommended": decision == "recommended",
                     "tied_with_recommended": decision == "tied", "decision": decision})
     tied = ", ".join(r["model"] for r in out if r["decision"] == "tied")
     for r in out:
