@@ -19,13 +19,13 @@ def _eq13(hurst):
     return 1.7 / (np.asarray(hurst) + 1)
 
 
-def _made_up(tmp_path, hurst, constants):
+def _made_up(tmp_path, hurst, constants, scatter=(0.9, 1.0, 1.1)):
     """A study whose ensemble means are the model with (c_zeta, p) = constants(H) exactly (three seeds
-    scattered by factors 0.9, 1, 1.1 around it)."""
+    scattered by the factors *scatter*, of mean 1, around it)."""
     k = np.array([[superposition.stiffness_from_force(FORCES, radius=0.5, hurst=h, h_rms=1e-2, length=1.0,
                                                       e_star=1.0, zeta=constants(h)[0] * _eq13(h),
                                                       power=constants(h)[1])] for h in hurst])
-    k = k[:, :, None, None, :] * np.array([0.9, 1.0, 1.1])[None, None, None, :, None]   # (hurst, radius, h, seed, F)
+    k = k[:, :, None, None, :] * np.array(scatter)[None, None, None, :, None]   # (hurst, radius, h, seed, F)
     hurst = list(hurst)
     dims = ("hurst", "radius", "h_rms", "seed", "force")
     ds = xr.Dataset({"stiffness": (dims, k), "contact_cells": (dims, np.full(k.shape, 100))},
@@ -91,3 +91,35 @@ def test_no_sphere_runs_rejected(tmp_path):
                                                            "h_rms": [1e-2], "seeds": 2}))})
     with pytest.raises(ValueError, match="no resolved sphere loads"):
         calibration.calibrate([tmp_path])
+
+
+def test_bootstrap_interval_collapses_without_scatter(tmp_path, monkeypatch):
+    """Seeds that are all the exact model: every resample is the same ensemble, so the interval of
+    c_zeta is the point 0.9 (to the optimiser's 1e-6)."""
+    monkeypatch.setattr(superposition, "zeta_law", _eq13)
+    study = _made_up(tmp_path, HURST, lambda h: (0.9, 1.4), scatter=(1.0, 1.0, 1.0))
+    low, high = calibration.calibrate([study], resamples=20).zeta_factor_ci
+    assert high - low == pytest.approx(0.0, abs=1e-6), "width of the interval of c_zeta without scatter"
+
+
+def test_bootstrap_interval_brackets_the_estimate(study):
+    result = calibration.calibrate([study], resamples=40)
+    low, high = result.zeta_factor_ci
+    assert low <= result.zeta_factor <= high, "the interval of c_zeta holds its estimate"
+
+
+def test_bootstrap_interval_is_wider_than_zero_with_scatter(study):
+    """Three seeds scattered by ±10 % at every load: a resample's mean moves by up to 10 %, and
+    c_zeta with it, so the interval is at least 1 % wide."""
+    low, high = calibration.calibrate([study], resamples=40).zeta_factor_ci
+    assert high - low > 0.01, "width of the interval of c_zeta with ±10 % scatter"
+
+
+def test_hurst_form_has_an_interval_per_coefficient(hurst_study):
+    result = calibration.calibrate([hurst_study], "hurst", resamples=10)
+    assert len(result.power_ci) == 2, "an interval for p0 and one for p1"
+
+
+def test_negative_resamples_rejected(study):
+    with pytest.raises(ValueError, match="resamples must be >= 0"):
+        calibration.calibrate([study], resamples=-1)

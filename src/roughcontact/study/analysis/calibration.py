@@ -14,10 +14,14 @@ over the sphere combinations at the paper's setting (paraboloid, no roll-off or 
 elastic) of every study given, loads resolved as in the scorecard (mean contact cells ≥
 ``fit.zeta.min_cells``). Run it as
 
-    python -m roughcontact.study.analysis.calibration [--form hurst] STUDY_DIR [STUDY_DIR ...]
+    python -m roughcontact.study.analysis.calibration [--form hurst] [--bootstrap N] STUDY_DIR [STUDY_DIR ...]
 
 (each a directory a preset ran in); it prints the constants and every combination's largest
-deviation. The constants in :data:`roughcontact.models.superposition.CALIBRATED` (form
+deviation. With ``--bootstrap N`` each constant carries a 95 % percentile interval over seeds
+(Efron & Tibshirani, *An Introduction to the Bootstrap*, 1993, ch. 13): each study's seeds are
+resampled with replacement, the *same* indices for all its combinations (equal seeds give the
+same roughness pattern, so a study's combinations share one sampling offset), the means and
+their errors formed again and the constants refitted. The constants in :data:`roughcontact.models.superposition.CALIBRATED` (form
 ``constant``) and :data:`~roughcontact.models.superposition.CALIBRATED_HURST` (form ``hurst``)
 were made so.
 """
@@ -34,6 +38,7 @@ from scipy.optimize import least_squares
 from ...models import superposition
 from ..config import axes
 from .ensemble import combinations, resolved
+from .statistics import BOOTSTRAP_SEED, interval
 from ..config.settings import StudySettings
 from ..files.directory import StudyDirectory
 
@@ -53,8 +58,11 @@ FORMS = {
 
 def ensemble_points(study) -> list[dict]:
     """Per sphere combination at the paper's setting of *study* (a directory a preset ran
-    in; :func:`roughcontact.study.config.axes.paper_setting`, none where the sweep lacks it): ``hurst``, ``radius``, ``h_rms``, ``length``, ``e_star``, the resolved forces, the
-    ensemble-mean stiffness and its relative standard error."""
+    in; :func:`roughcontact.study.config.axes.paper_setting`, none where the sweep lacks it): the
+    directory's name and resolved path (``study``, ``source``), ``hurst``, ``radius``, ``h_rms``,
+    ``length``, ``e_star``, ``n``, the resolved forces, the ensemble-mean stiffness and its relative
+    standard error, and ``samples`` (each seed's stiffness at the resolved loads, ``(seed, load)``)
+    for the bootstrap."""
     results = StudyDirectory(study)
     study_of_file = StudySettings.of(results.configuration())
     groups = results.groups("stiffness")
@@ -68,13 +76,19 @@ def ensemble_points(study) -> list[dict]:
             continue
         k = sub["stiffness"].values
         use = resolved(sub["contact_cells"].values.mean(0), study_of_file.fit.zeta.min_cells)
-        mean = k.mean(0)
-        error = k.std(0, ddof=1) / math.sqrt(k.shape[0]) / mean
-        out.append({"study": Path(study).name, "hurst": combo["hurst"], "radius": combo["radius"],
-                    "h_rms": combo["h_rms"], "length": length, "e_star": e_star, "n": study_of_file.grid.n,
-                    "force": sub["force"].values[use], "stiffness": mean[use],
-                    "relative_error": np.maximum(error[use], MIN_RELATIVE_ERROR)})
+        mean, error = _mean_and_error(k[:, use])
+        out.append({"study": Path(study).name, "source": str(Path(study).resolve()), "hurst": combo["hurst"],
+                    "radius": combo["radius"], "h_rms": combo["h_rms"], "length": length, "e_star": e_star, "n": study_of_file.grid.n,
+                    "force": sub["force"].values[use], "stiffness": mean, "relative_error": error,
+                    "samples": k[:, use]})
     return out
+
+
+def _mean_and_error(samples):
+    """Ensemble mean over seeds and its relative standard error (at least :data:`MIN_RELATIVE_ERROR`)."""
+    mean = samples.mean(0)
+    error = samples.std(0, ddof=1) / math.sqrt(samples.shape[0]) / mean
+    return mean, np.maximum(error, MIN_RELATIVE_ERROR)
 
 
 def _model(point, zeta_factor, power):
@@ -98,6 +112,16 @@ class Calibration:
         Resolved loads used.
     max_rel_dev : dict[str, float]
         ``max_F |k_model/k̄_BEM − 1|`` per combination (``study:H..._R..._h...``).
+    form : str
+        The form of the constants (:data:`FORMS`).
+    zeta_factor_ci, power_ci : tuple
+        The ``(low, high)`` percentile interval over the seeds' bootstrap at ``level`` (module
+        docstring) of ``c`` and ``p`` (form ``constant``), or one such pair per coefficient (form
+        ``hurst``); empty without a bootstrap.
+    resamples : int
+        Bootstrap resamples (0: none).
+    level : float
+        Confidence level of the intervals.
     """
 
     zeta_factor: float
@@ -106,13 +130,35 @@ class Calibration:
     points: int
     max_rel_dev: dict
     form: str = "constant"
+    zeta_factor_ci: tuple = ()
+    power_ci: tuple = ()
+    resamples: int = 0
+    level: float = 0.95
 
 
-def calibrate(studies, form: str = "constant") -> Calibration:
+def calibrate(studies, form: str = "constant", *, resamples: int = 0, level: float = 0.95) -> Calibration:
     """Fit the constants of *form* (:data:`FORMS`) on the sphere ensembles of *studies* (module
-    docstring)."""
+    docstring).
+
+    Parameters
+    ----------
+    studies : iterable of path-like
+        Directories the calibration presets ran in.
+    form : str
+        ``constant`` or ``hurst`` (:data:`FORMS`).
+    resamples : int, keyword-only
+        Bootstrap resamples of the seeds for the constants' intervals (0: no intervals).
+    level : float, keyword-only
+        Confidence level of the percentile intervals.
+
+    Returns
+    -------
+    Calibration
+    """
     if form not in FORMS:
         raise ValueError(f"form must be one of {sorted(FORMS)}, got {form!r}")
+    if resamples < 0:
+        raise ValueError(f"resamples must be >= 0, got {resamples}")
     spec = FORMS[form]
     points = [p for study in studies for p in ensemble_points(study) if p["force"].size]
     if not points:
@@ -121,11 +167,15 @@ def calibrate(studies, form: str = "constant") -> Calibration:
     def predicted(point, theta):
         return _model(point, *spec["constants"](theta, point["hurst"]))
 
-    def residuals(theta):
-        return np.concatenate([(np.log(p["stiffness"]) - np.log(predicted(p, theta))) / p["relative_error"]
-                               for p in points])
+    def residuals(theta, means=None):
+        means = means or [(p["stiffness"], p["relative_error"]) for p in points]
+        return np.concatenate([(np.log(mean) - np.log(predicted(p, theta))) / error
+                               for p, (mean, error) in zip(points, means)])
 
     fit = least_squares(residuals, spec["start"], bounds=spec["bounds"])
+    replicates = np.array([least_squares(residuals, fit.x, bounds=spec["bounds"], args=(means,)).x
+                           for means in _resampled_means(points, resamples)]).reshape(resamples, len(fit.x))
+    cis = [interval(replicates[:, i], level) for i in range(len(fit.x))]
     total = sum(p["force"].size for p in points)
     deviations = {f"{p['study']}:H{p['hurst']:g}_R{p['radius']:g}_h{p['h_rms']:g}":
                   float(np.max(np.abs(predicted(p, fit.x) / p["stiffness"] - 1))) for p in points}
@@ -134,7 +184,26 @@ def calibrate(studies, form: str = "constant") -> Calibration:
     zeta_factor, power = (theta[0], theta[1]) if form == "constant" else (tuple(theta[:half]), tuple(theta[half:]))
     return Calibration(zeta_factor=zeta_factor, power=power,
                        chi2_per_point=float(np.sum(fit.fun**2) / max(total - len(theta), 1)), points=total,
-                       max_rel_dev=deviations, form=form)
+                       max_rel_dev=deviations, form=form, zeta_factor_ci=_shaped(cis[:half], resamples),
+                       power_ci=_shaped(cis[half:], resamples), resamples=resamples, level=level)
+
+
+def _shaped(cis, resamples):
+    """The intervals of one constant: ``(low, high)`` for one coefficient, a tuple of them for
+    several, ``()`` without a bootstrap."""
+    if not resamples:
+        return ()
+    return cis[0] if len(cis) == 1 else tuple(cis)
+
+
+def _resampled_means(points, resamples):
+    """Per bootstrap resample, the ``(mean, relative error)`` of every point: each study's seeds
+    drawn with replacement, the same indices for all its combinations (module docstring)."""
+    rng = np.random.default_rng(BOOTSTRAP_SEED)
+    seeds = {p["source"]: p["samples"].shape[0] for p in points}
+    for _ in range(resamples):
+        draw = {study: rng.integers(0, n, size=n) for study, n in seeds.items()}
+        yield [_mean_and_error(p["samples"][draw[p["source"]]]) for p in points]
 
 
 def main(argv=None) -> int:
@@ -142,14 +211,23 @@ def main(argv=None) -> int:
     parser.add_argument("studies", nargs="+", type=Path, help="directories the calibration presets ran in")
     parser.add_argument("--form", choices=sorted(FORMS), default="constant",
                         help="constant: c and p (contact_scale); hurst: each linear in H (contact_scale_h)")
+    parser.add_argument("--bootstrap", type=int, default=0, metavar="N",
+                        help="resamples of the seeds for 95 %% intervals of the constants (default 0: none)")
     args = parser.parse_args(argv)
-    result = calibrate(args.studies, args.form)
+    if args.bootstrap < 0:
+        parser.error(f"--bootstrap must be >= 0, got {args.bootstrap}")
+    result = calibrate(args.studies, args.form, resamples=args.bootstrap)
 
-    def show(value):
-        return f"{value:.4f}" if isinstance(value, float) else "(" + ", ".join(f"{v:.4f}" for v in value) + ")"
+    def show(value, cis):
+        scalar = isinstance(value, float)
+        values, cis = ([value], [cis]) if scalar else (list(value), list(cis))
+        text = [f"{v:.4f}" + (f" [{c[0]:.4f}, {c[1]:.4f}]" if c else "") for v, c in zip(values, cis or [()] * len(values))]
+        return text[0] if scalar else "(" + ", ".join(text) + ")"
 
-    print(f"form {result.form}: zeta_factor = {show(result.zeta_factor)}, power = {show(result.power)}, "
-          f"chi2/point = {result.chi2_per_point:.3f}, {result.points} resolved loads")
+    print(f"form {result.form}: zeta_factor = {show(result.zeta_factor, result.zeta_factor_ci)}, "
+          f"power = {show(result.power, result.power_ci)}, "
+          f"chi2/point = {result.chi2_per_point:.3f}, {result.points} resolved loads"
+          + (f"; intervals: {result.level:.0%} over {result.resamples} resamples of the seeds" if result.resamples else ""))
     for name, value in result.max_rel_dev.items():
         print(f"  {name}: max |k_model/k_BEM - 1| = {value:.3f}")
     return 0
