@@ -61,14 +61,14 @@ CALIBRATED = {"zeta_factor": 0.8866, "power": 1.4215,
               "source": "presets calibration, convergence-513, convergence-1025 (python -m roughcontact.study.analysis.calibration)"}
 #: ``contact_scale_h``: c_ζ and p polynomials in H (:func:`hurst_constants`), here of degree 1,
 #: calibrated by ``python -m roughcontact.study.analysis.calibration --form hurst`` on the sphere
-#: ensembles of presets/calibration-branches.yaml (449², 256 seeds) and calibration-branches-451.yaml
-#: (451², 128 seeds: other surfaces) alone (H 0.3, 0.6, 0.9; R 0.15, 0.6 L; h_rms 8e-3, 3e-2 L),
-#: 264 resolved loads, 2026-11-27: χ²/point 1.94 (the form ``constant`` on the same loads: 6.26; the
-#: 449² set alone gave (0.927, −0.086) and (0.780, 0.842), the 451² set alone (0.885, −0.075) and
-#: (0.787, 0.839): the two sets' common sampling offsets differ by 4 % in c); ``hurst``: the H range
-#: it rests on
-CALIBRATED_HURST = {"zeta_factor": (0.9154, -0.0854), "power": (0.7789, 0.8378), "hurst": (0.3, 0.9),
-                    "source": "presets calibration-branches and calibration-branches-451 "
+#: ensembles of presets/calibration-branches.yaml (449², 256 seeds), calibration-branches-451.yaml
+#: (451², 128 seeds) and calibration-branches-447.yaml (447², 256 seeds) alone: the same spheres
+#: (H 0.3, 0.6, 0.9; R 0.15, 0.6 L; h_rms 8e-3, 3e-2 L) on three sets of surfaces, 396 resolved
+#: loads, 2026-11-27: χ²/point 1.95; the sets alone give c_ζ(0.6) 0.875, 0.840 and 0.885 (each set's
+#: combinations share their surfaces, so each carries one sampling offset; 95 % intervals over seeds
+#: in docs/results/fractal_branch_model.md); ``hurst``: the H range it rests on
+CALIBRATED_HURST = {"zeta_factor": (0.9214, -0.0837), "power": (0.7752, 0.7693), "hurst": (0.3, 0.9),
+                    "source": "presets calibration-branches, calibration-branches-451 and calibration-branches-447 "
                               "(python -m roughcontact.study.analysis.calibration --form hurst)"}
 
 

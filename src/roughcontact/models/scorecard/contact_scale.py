@@ -46,6 +46,7 @@ _LOW, _HIGH = superposition.CALIBRATED_HURST["hurst"]
 register(Model(
     "contact_scale_h",
     "contact_scale_h: as contact_scale, with the zeta factor and the p-norm's order linear in H, calibrated on "
-    "presets/calibration-branches.yaml and calibration-branches-451.yaml", contact_scale_h, "roughcontact.models.superposition",
+    "presets/calibration-branches.yaml, calibration-branches-451.yaml and calibration-branches-447.yaml",
+    contact_scale_h, "roughcontact.models.superposition",
     axes=("exponent", "rolloff", "cutoff"),
     ranges=(Range("hurst", _LOW, _HIGH, f"calibrated on H {_LOW:g}-{_HIGH:g}"),)))
