@@ -1,10 +1,12 @@
 """The model that holds on both branches (issue 31, item 3): ``docs/results/fractal_branch_model.md``.
 
-    python docs/make_fractal_branch_model.py --calibration DIR [DIR ...] --heldout DIR [DIR ...] --validation DIR
+    python docs/make_fractal_branch_model.py --calibration DIR [DIR ...] --heldout DIR [DIR ...] --validation DIR [DIR ...]
 
 Each DIR is a directory a preset ran in (``snakemake --cores 2 --configfile presets/NAME.yaml
---directory DIR``): ``calibration-branches`` and ``calibration-branches-451`` for ``--calibration``, ``heldout-branches-a`` and
-``heldout-branches-b`` for ``--heldout``, ``validation-branches`` for ``--validation``. The page
+--directory DIR``): ``calibration-branches``, ``calibration-branches-451`` and
+``calibration-branches-447`` for ``--calibration``, ``heldout-branches-a`` and
+``heldout-branches-b`` for ``--heldout``, ``validation-branches`` and ``validation-branches-2`` for
+``--validation``. The page
 gives, per combination of the held-out and validation sets, the recommended model's and
 ``contact_scale_h``'s systematic deviation on each branch (with its 95 % interval over seeds),
 the grid error added there, the fraction of resolved loads inside the band widened by the grid
@@ -37,6 +39,8 @@ MODEL = "contact_scale_h"
 COMPARED = ("contact_scale", "eq16_paper")
 #: the seeds of issue 31's first sweep, for the sampling spread
 ISSUE_SEEDS = 16
+#: the Hertz end of a combination: its resolved loads above this multiple of eq. 17's F_tr
+HERTZ_END = 10.0
 
 
 def _branch(row, branch: str) -> str:
@@ -99,6 +103,42 @@ def _sampling(workdir: Path, seeds: int = ISSUE_SEEDS, draws: int = 2000) -> pd.
     return pd.DataFrame(rows)
 
 
+def _hertz_end(dirs, above: float = HERTZ_END) -> pd.DataFrame:
+    """Per combination with three or more resolved loads above *above* · F_tr (eq. 17 with eq. 13's
+    ζ): how the rough sphere approaches Hertz (eq. 9). ``1 − k/k_Hertz`` falls as a power of F; its
+    exponent fitted (least squares in log–log) to the ensemble mean and to ``contact_scale_h``, whose
+    p-norm gives ``−(2 − H) p(H)/3`` there, and both values at the largest load with the ensemble's
+    95 % half-band."""
+    from roughcontact.models import paper, superposition
+    from roughcontact.study.analysis.ensemble import combinations
+
+    rows = []
+    for workdir in map(Path, dirs):
+        for combo, sub in combinations(StudyDirectory(workdir).groups("stiffness")["sphere"]):
+            hurst, radius, h_rms = combo["hurst"], combo["radius"], combo["h_rms"]
+            k = sub["stiffness"].values
+            force, mean = sub["force"].values, k.mean(0)
+            f_tr = paper.crossover_force(radius, hurst=hurst, h_rms=h_rms, length=1.0, e_star=1.0,
+                                         zeta=float(paper.zeta_estimate(hurst)))
+            use = (sub["contact_cells"].values.mean(0) >= 20) & (force > above * f_tr)
+            if use.sum() < 3:
+                continue
+            hertz = paper.hertz_stiffness(force, radius=radius, e_star=1.0)
+            model = superposition.hurst_calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms,
+                                                             length=1.0, e_star=1.0)
+            slope = {name: np.polyfit(np.log(force[use]), np.log(1 - value[use] / hertz[use]), 1)[0]
+                     for name, value in (("BEM", mean), (MODEL, model))}
+            last = np.flatnonzero(use)[-1]
+            half_band = 1.96 * k[:, last].std(ddof=1) / np.sqrt(k.shape[0]) / mean[last]
+            rows.append({"study": workdir.name, "combination": f"H{hurst:g}_R{radius:g}_h{h_rms:g}",
+                         "loads": int(use.sum()), "F/F_tr": f"{force[use][0] / f_tr:.0f}–{force[last] / f_tr:.0f}",
+                         "exponent, BEM": f"{slope['BEM']:.2f}", f"exponent, {MODEL}": f"{slope[MODEL]:.2f}",
+                         "1 − k/k_Hertz at the largest load, BEM": f"{100 * (1 - mean[last] / hertz[last]):.2f} %",
+                         f"… {MODEL}": f"{100 * (1 - model[last] / hertz[last]):.2f} %",
+                         "95 % half-band there": f"±{100 * half_band:.2f} %"})
+    return pd.DataFrame(rows)
+
+
 def _figure(dirs) -> None:
     curves = []
     for workdir in map(Path, dirs):
@@ -126,8 +166,8 @@ def _figure(dirs) -> None:
     save_png(fig, FIGURE)
 
 
-def make_page(calibration, heldout, validation: Path) -> Path:
-    tested = [*heldout, validation]
+def make_page(calibration, heldout, validation) -> Path:
+    tested = [*heldout, *validation]
     _figure(tested)
     lines = [
         "# The fractal branch's model: `contact_scale_h` on held-out sweeps",
@@ -138,7 +178,7 @@ def make_page(calibration, heldout, validation: Path) -> Path:
         "",
         READING.read_text(encoding="utf-8").strip() if READING.is_file() else "",
         "",
-        "## Held-out sweeps and validation preset",
+        "## Held-out sweeps and validation presets",
         "",
         "Per combination: the recommended model (first), `contact_scale_h`, `contact_scale` and `eq16_paper`. "
         "Systematic: the deviation `k_model/k_BEM − 1` averaged over the branch's resolved loads (weighted by "
@@ -156,9 +196,17 @@ def make_page(calibration, heldout, validation: Path) -> Path:
         "ensemble mean at the resolved loads, in the ensemble's 95 % band (dark) and that band widened by "
         "the grid error (light).",
         "",
-        "## Calibration set",
+        "## Calibration sets (in-sample)",
         "",
         _table(_rows(_scores(calibration))),
+        "",
+        "## The Hertz end",
+        "",
+        f"At loads above {HERTZ_END:g} F_tr the rough sphere is a little softer than Hertz, and the difference "
+        "`1 − k/k_Hertz` falls as a power of F. The exponent fitted to the ensemble mean and to "
+        f"`{MODEL}` (its p-norm gives `−(2 − H) p(H)/3`), and both differences at the largest load:",
+        "",
+        _table(_hertz_end([*calibration, *tested])),
         "",
         f"## What {ISSUE_SEEDS} seeds can tell",
         "",
@@ -176,7 +224,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--calibration", type=Path, nargs="+", required=True)
     parser.add_argument("--heldout", type=Path, nargs="+", required=True)
-    parser.add_argument("--validation", type=Path, required=True)
+    parser.add_argument("--validation", type=Path, nargs="+", required=True)
     args = parser.parse_args(argv)
     print(make_page(args.calibration, args.heldout, args.validation))
     return 0
