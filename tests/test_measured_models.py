@@ -67,7 +67,8 @@ def test_flat_surface():
     n = 129
     fit = _fit(0.8, n=n)
     out = predict(FORCES, fit, radius=math.inf, e_star=1.0, length=1.0, n=n)
-    assert set(out) == {"eq16_paper", "eq16_law", "contact_scale", "contact_scale_h", "mdr", "persson", "crossover_force"}
+    assert set(out) == {"eq16_paper", "eq16_law", "contact_scale", "contact_scale_h", "contact_scale_tail", "mdr", "persson",
+                        "crossover_force"}
     zeta = float(paper.zeta_estimate(fit.hurst))
     np.testing.assert_allclose(out["eq16_paper"], paper.fractal_stiffness(
         FORCES, hurst=fit.hurst, h_rms=fit.h_rms_for(1.0, n), length=1.0, e_star=1.0, zeta=zeta), rtol=1e-12)

@@ -35,7 +35,8 @@ def hertz(force, s: registry.Surface):
 
 def test_registry_order():
     assert list(registry.models()) == ["eq16_paper", "eq16_fitted", "eq16_law", "contact_scale", "contact_scale_h",
-                                       "greenwood_tripp", "mdr", "persson"], f"models: {list(registry.models())}"
+                                       "contact_scale_tail", "greenwood_tripp", "mdr", "persson"], \
+        f"models: {list(registry.models())}"
 
 
 def test_second_registration_of_a_name_is_an_error():

@@ -202,7 +202,8 @@ def test_built_in_models_declare_their_axes():
     declared = {name: model.axes for name, model in registry.models().items()}
     spectral = ("exponent", "rolloff", "cutoff")
     assert declared == {"eq16_paper": ("exponent",), "eq16_fitted": ("exponent",), "eq16_law": ("exponent",),
-                        "contact_scale": spectral, "contact_scale_h": spectral, "greenwood_tripp": spectral,
+                        "contact_scale": spectral, "contact_scale_h": spectral, "contact_scale_tail": spectral,
+                        "greenwood_tripp": spectral,
                         "mdr": spectral,
                         "persson": spectral}, declared
 

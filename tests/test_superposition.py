@@ -108,3 +108,60 @@ def test_contact_scale_h_is_eq16_where_its_power_is_one():
     k = superposition.hurst_calibrated_stiffness(FORCES, **sphere)
     eq16 = paper.stiffness_from_force(FORCES, zeta=(c0 + c1 * hurst) * float(zeta_law(hurst)), **sphere)
     assert k == pytest.approx(eq16, rel=1e-10), f"contact_scale_h at H = {hurst:.4f} against eq. 16"
+
+
+#: the join with a tail: β and an order p above the tail's s = 2/(2 − 0.7) = 1.54
+TAIL = dict(SPHERE, power=2.5, tail=2.0)
+
+
+def test_tail_join_at_the_crossover_stiffness():
+    """Where F_body = F_rough (x = 1): F = F_body (2 + β)^(1/p), exactly."""
+    f_tr = paper.crossover_force(0.5, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    k_tr = paper.hertz_stiffness(f_tr, radius=0.5, e_star=1.0)
+    force = superposition.force_from_stiffness(k_tr, **TAIL)
+    assert force == pytest.approx(f_tr * 4.0 ** (1 / 2.5), rel=1e-12), "F at x = 1 against F_body (2 + β)^(1/p)"
+
+
+def _tail_at(force):
+    """1 − k/k_Hertz of the tail join and its first-order closed form β x^s/(p (m + 1)), x = F_rough/F_body
+    at k_Hertz (module docstring of models.superposition)."""
+    k = superposition.stiffness_from_force(force, **TAIL)
+    k_hertz = paper.hertz_stiffness(force, radius=0.5, e_star=1.0)
+    x = superposition.rough_force(k_hertz, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0) / force
+    return 1 - k / k_hertz, 2.0 * x ** superposition.tail_exponent(0.7) / (2.5 * 3)
+
+
+def test_tail_join_approaches_hertz_as_its_closed_form():
+    """At 10⁶ F_tr, x = 2.5·10⁻³: the next orders are x^(p − s) = 3·10⁻³ and 1 − k/k_Hertz itself
+    (10⁻⁴) relative to the first, so 1 % holds them."""
+    f_tr = paper.crossover_force(0.5, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    deficit, first_order = _tail_at(np.array([1e6 * f_tr]))
+    assert deficit == pytest.approx(first_order, rel=1e-2), "1 − k/k_Hertz against β x^s/(p (m + 1))"
+
+
+def test_tail_join_falls_as_f_to_minus_two_thirds():
+    """The interfacial compliance's law: 1 − k/k_Hertz ∝ F^(−m/(m + 1)) = F^(−2/3) for the paraboloid,
+    whatever H and p (the slope between 10⁶ and 10⁷ F_tr, where the first order holds to 1 %)."""
+    f_tr = paper.crossover_force(0.5, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    deficit, _ = _tail_at(np.array([1e6, 1e7]) * f_tr)
+    slope = np.log(deficit[1] / deficit[0]) / np.log(10.0)
+    assert slope == pytest.approx(-2 / 3, abs=5e-3), "log-slope of 1 − k/k_Hertz"
+
+
+def test_tail_join_keeps_the_fractal_branch():
+    """At 10⁻⁶ F_tr (x ≈ 4·10⁴) the join is eq. 11 to β x^(s − p)/(p (H + 1)) ≈ 2·10⁻⁵."""
+    f_tr = paper.crossover_force(0.5, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    force = np.array([1e-6 * f_tr])
+    k = superposition.stiffness_from_force(force, **TAIL)
+    fractal = paper.fractal_stiffness(force, hurst=0.7, h_rms=9e-3, length=1.0, e_star=1.0, zeta=1.0)
+    assert k == pytest.approx(fractal, rel=1e-4), "the tail join far below F_tr against eq. 11"
+
+
+def test_zero_tail_is_the_p_norm():
+    k = superposition.stiffness_from_force(FORCES, power=1.0, tail=0.0, **SPHERE)
+    assert k == pytest.approx(paper.stiffness_from_force(FORCES, **SPHERE), rel=1e-12), "β = 0, p = 1 against eq. 16"
+
+
+def test_negative_tail_rejected():
+    with pytest.raises(ValueError, match="tail must be >= 0"):
+        superposition.force_from_stiffness(0.1, power=2.0, tail=-1.0, **SPHERE)

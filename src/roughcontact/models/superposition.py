@@ -33,9 +33,25 @@ more of the variance); above it the structure function saturates at ``2 h_rms²`
 profile that is flat beyond λ_r; below a cutoff the surface is smooth and ``SF ∝ λ²``.
 ``w`` (the window, 2 by default: the contact's diameter) is a modelling choice.
 
+**A tail towards the body's law.** Near the body's branch (``x = F_rough/F_body → 0``) the p-norm
+gives ``F = F_body (1 + x^p/p)``, so the order that shapes the crossover also sets how fast the
+rough sphere reaches eq. 9: ``1 − k/k_body ∝ F^(−(m − H) p/(m + 1))``. BEM ensembles approach
+Hertz faster than the p that fits the crossover allows (results, "The fractal branch's model",
+"The Hertz end": about ``F^(−0.72)`` against ``F^(−0.51…−0.57)``). A compliance of the interface
+in series with the body, an extra approach that grows as ``ln p̄`` with the mean pressure
+``p̄ ∝ F^((m − 1)/(m + 1))`` under the body (the separation of a rough interface falls as
+``−ln p``: B. N. J. Persson, Phys. Rev. Lett. 99, 125502 (2007), doi:10.1103/PhysRevLett.99.125502),
+gives ``1 − k/k_body ∝ F^(−m/(m + 1))``: ``F^(−2/3)`` for the paraboloid. The join with a tail
+
+    F = F_body (1 + β x^s + x^p)^(1/p),     s = m/(m − H),
+
+has that law near the body's branch when ``s < p``, ``1 − k/k_body → β x^s/(p (m + 1))``, and
+the roughness's branch (eq. 11) where ``x → ∞``; ``β = 0`` is the p-norm.
+
 :data:`CALIBRATED` holds p and a factor on ζ calibrated on the BEM ensembles of named presets
 (:mod:`roughcontact.study.analysis.calibration`); :data:`CALIBRATED_HURST` makes both linear in
-H (the model ``contact_scale_h``, :func:`hurst_calibrated_stiffness`). The derivation and the
+H (the model ``contact_scale_h``, :func:`hurst_calibrated_stiffness`); :data:`CALIBRATED_TAIL`
+adds the tail's β (the model ``contact_scale_tail``, :func:`tail_calibrated_stiffness`). The derivation and the
 calibrations are in the documentation (guide, "Models"; results, "The fractal branch's model").
 
 Units are the caller's, consistent as in :mod:`roughcontact.models.paper`.
@@ -49,8 +65,9 @@ import numpy as np
 from .paper import _body_coefficient, body_stiffness, fractal_stiffness
 from .zeta_law import zeta_law
 
-__all__ = ["CALIBRATED", "CALIBRATED_HURST", "rough_force", "force_from_stiffness", "stiffness_from_force",
-           "calibrated_stiffness", "hurst_constants", "hurst_calibrated_stiffness"]
+__all__ = ["CALIBRATED", "CALIBRATED_HURST", "CALIBRATED_TAIL", "rough_force", "force_from_stiffness",
+           "stiffness_from_force", "tail_exponent", "calibrated_stiffness", "hurst_constants",
+           "hurst_calibrated_stiffness", "tail_calibrated_stiffness"]
 
 #: c_ζ (the factor on :func:`roughcontact.models.zeta_law.zeta_law`) and p, calibrated by
 #: ``python -m roughcontact.study.analysis.calibration`` on the sphere ensembles of presets/calibration.yaml
@@ -70,6 +87,19 @@ CALIBRATED = {"zeta_factor": 0.8866, "power": 1.4215,
 CALIBRATED_HURST = {"zeta_factor": (0.9214, -0.0837), "power": (0.7752, 0.7693), "hurst": (0.3, 0.9),
                     "source": "presets calibration-branches, calibration-branches-451 and calibration-branches-447 "
                               "(python -m roughcontact.study.analysis.calibration --form hurst)"}
+
+#: ``contact_scale_tail``: c_ζ and p linear in H as in :data:`CALIBRATED_HURST`, and the tail's β
+#: (module docstring), calibrated by ``python -m roughcontact.study.analysis.calibration --form tail``
+#: on the same three presets; ``hurst``: the H range it rests on
+CALIBRATED_TAIL = {"zeta_factor": (0.9793, 0.0286), "power": (1.7916, 0.4938), "tail": 2.3869, "hurst": (0.3, 0.9),
+                   "source": "presets calibration-branches, calibration-branches-451 and calibration-branches-447 "
+                             "(python -m roughcontact.study.analysis.calibration --form tail)"}
+
+
+def tail_exponent(hurst, exponent=2.0):
+    """``s = m/(m − H)`` of the join's tail (module docstring): ``x^s ∝ k^(−m)``, so that
+    ``1 − k/k_body ∝ F^(−m/(m + 1))`` near the body's branch."""
+    return exponent / (exponent - hurst)
 
 
 def rough_force(stiffness, *, hurst, h_rms, length, e_star, zeta, spectrum=None, reference=None, window=2.0):
@@ -107,8 +137,9 @@ def rough_force(stiffness, *, hurst, h_rms, length, e_star, zeta, spectrum=None,
 
 
 def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zeta, power, exponent=2.0,
-                         spectrum=None, reference=None, window=2.0):
-    """Force at stiffness k: the p-norm (``p = power``) of eqs. 10 and 12 (module docstring).
+                         spectrum=None, reference=None, window=2.0, tail=0.0):
+    """Force at stiffness k: the p-norm (``p = power``) of eqs. 10 and 12, with the tail
+    ``β = tail`` when it is positive (module docstring).
 
     Parameters
     ----------
@@ -124,6 +155,8 @@ def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zet
         m of the body of revolution z = (R/m)(r/R)^m; 2 is the paraboloid.
     spectrum, reference, window
         The roughness at the contact's scale (:func:`rough_force`); ``None``: eq. 12.
+    tail : float
+        β ≥ 0 of ``F = F_body (1 + β x^s + x^p)^(1/p)``; 0 is the p-norm.
 
     Returns
     -------
@@ -132,19 +165,27 @@ def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zet
     """
     if not power > 0.0:
         raise ValueError(f"power must be > 0, got {power!r}")
+    if not tail >= 0.0:
+        raise ValueError(f"tail must be >= 0, got {tail!r}")
     k = np.asarray(stiffness, dtype=float)
     rough = rough_force(k, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta,
                         spectrum=spectrum, reference=reference, window=window)
     if math.isinf(radius):
         return rough
     body = e_star * (k / e_star) ** (exponent + 1.0) / _body_coefficient(radius, exponent)
+    if tail > 0.0:
+        # ln(1 + β x^s + x^p) by log-sum-exp (no overflow for large x or p)
+        log_x = np.log(rough / body)
+        terms = np.stack([np.zeros_like(log_x), math.log(tail) + tail_exponent(hurst, exponent) * log_x,
+                          power * log_x])
+        return body * np.exp(np.logaddexp.reduce(terms, axis=0) / power)
     top = np.maximum(body, rough)
     # the p-norm scaled by its larger term (no overflow for large p)
     return top * ((body / top) ** power + (rough / top) ** power) ** (1.0 / power)
 
 
 def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, power, exponent=2.0,
-                         spectrum=None, reference=None, window=2.0):
+                         spectrum=None, reference=None, window=2.0, tail=0.0):
     """Invert :func:`force_from_stiffness` for k at given force(s) (bisection in ln k).
 
     F(k) increases with k. With a finite radius the body's term alone bounds k from above by
@@ -153,7 +194,7 @@ def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, p
     """
     force = np.asarray(force, dtype=float)
     kwargs = dict(radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta, power=power,
-                  exponent=exponent, spectrum=spectrum, reference=reference, window=window)
+                  exponent=exponent, spectrum=spectrum, reference=reference, window=window, tail=tail)
     if spectrum is None and math.isinf(radius):
         return fractal_stiffness(force, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star, zeta=zeta)
     if math.isinf(radius):
@@ -171,15 +212,16 @@ def stiffness_from_force(force, *, radius, hurst, h_rms, length, e_star, zeta, p
 
 
 def calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, exponent=2.0, spectrum=None,
-                         reference=None, zeta_factor=None, power=None):
+                         reference=None, zeta_factor=None, power=None, tail=0.0):
     """The scorecard's ``contact_scale``: :func:`stiffness_from_force` with ζ = c_ζ · ζ_law(H)
     (:func:`roughcontact.models.zeta_law.zeta_law`) and the p-norm's p; ``zeta_factor`` and
-    ``power`` default to :data:`CALIBRATED` (the calibration passes its trial values)."""
+    ``power`` default to :data:`CALIBRATED` (the calibration passes its trial values); ``tail``
+    the join's β (0: none)."""
     zeta_factor = CALIBRATED["zeta_factor"] if zeta_factor is None else zeta_factor
     power = CALIBRATED["power"] if power is None else power
     return stiffness_from_force(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
                                 zeta=zeta_factor * float(zeta_law(hurst)), power=power, exponent=exponent,
-                                spectrum=spectrum, reference=reference)
+                                spectrum=spectrum, reference=reference, tail=tail)
 
 
 def hurst_constants(hurst, constants=None) -> tuple[float, float]:
@@ -199,3 +241,15 @@ def hurst_calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, e
     return calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
                                 exponent=exponent, spectrum=spectrum, reference=reference,
                                 zeta_factor=zeta_factor, power=power)
+
+
+def tail_calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, exponent=2.0, spectrum=None,
+                              reference=None, constants=None):
+    """The scorecard's ``contact_scale_tail``: :func:`calibrated_stiffness` with ``c_ζ`` and ``p``
+    linear in H (:func:`hurst_constants`) and the tail's β (module docstring), all from
+    :data:`CALIBRATED_TAIL` unless *constants* (the same keys) are given."""
+    constants = CALIBRATED_TAIL if constants is None else constants
+    zeta_factor, power = hurst_constants(hurst, constants)
+    return calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
+                                exponent=exponent, spectrum=spectrum, reference=reference,
+                                zeta_factor=zeta_factor, power=power, tail=constants["tail"])

@@ -1,6 +1,7 @@
 """This package's models: eqs. 10 and 12 joined by a p-norm, with the roughness seen at the
 contact's scale (:mod:`roughcontact.models.superposition`); ``contact_scale`` with two constants,
-``contact_scale_h`` with both linear in H."""
+``contact_scale_h`` with both linear in H, ``contact_scale_tail`` with a tail towards the body's
+law of its own."""
 from __future__ import annotations
 
 from .. import superposition
@@ -33,6 +34,16 @@ def contact_scale_h(force, s: Surface):
         exponent=s.exponent, **_spectra(s))
 
 
+def contact_scale_tail(force, s: Surface):
+    """:func:`roughcontact.models.superposition.tail_calibrated_stiffness`: as :func:`contact_scale_h`,
+    joined by ``F = F_body (1 + β x^s + x^p)^(1/p)``, whose approach to the body's law
+    (``1 − k/k_body ∝ F^(−m/(m+1))``) no longer follows from the crossover's order; constants in
+    :data:`~roughcontact.models.superposition.CALIBRATED_TAIL`."""
+    return superposition.tail_calibrated_stiffness(
+        force, radius=s.radius, hurst=s.hurst, h_rms=s.h_rms, length=s.length, e_star=s.e_star,
+        exponent=s.exponent, **_spectra(s))
+
+
 register(Model(
     "contact_scale",
     "contact_scale: this package's model, eqs. 10 and 12 joined by a p-norm with the roughness seen at the "
@@ -48,5 +59,14 @@ register(Model(
     "contact_scale_h: as contact_scale, with the zeta factor and the p-norm's order linear in H, calibrated on "
     "presets/calibration-branches.yaml, calibration-branches-451.yaml and calibration-branches-447.yaml",
     contact_scale_h, "roughcontact.models.superposition",
+    axes=("exponent", "rolloff", "cutoff"),
+    ranges=(Range("hurst", _LOW, _HIGH, f"calibrated on H {_LOW:g}-{_HIGH:g}"),)))
+
+_LOW, _HIGH = superposition.CALIBRATED_TAIL["hurst"]
+register(Model(
+    "contact_scale_tail",
+    "contact_scale_tail: as contact_scale_h, with a tail towards Hertz of its own (an interfacial compliance, "
+    "1 - k/k_Hertz ~ F^(-2/3)), calibrated on presets/calibration-branches.yaml, calibration-branches-451.yaml "
+    "and calibration-branches-447.yaml", contact_scale_tail, "roughcontact.models.superposition",
     axes=("exponent", "rolloff", "cutoff"),
     ranges=(Range("hurst", _LOW, _HIGH, f"calibrated on H {_LOW:g}-{_HIGH:g}"),)))
