@@ -24,7 +24,8 @@ def _made_up(tmp_path, hurst, constants, scatter=(0.9, 1.0, 1.1)):
     scattered by the factors *scatter*, of mean 1, around it)."""
     k = np.array([[superposition.stiffness_from_force(FORCES, radius=0.5, hurst=h, h_rms=1e-2, length=1.0,
                                                       e_star=1.0, zeta=constants(h)[0] * _eq13(h),
-                                                      power=constants(h)[1])] for h in hurst])
+                                                      power=constants(h)[1], tail=(*constants(h), 0.0)[2])]
+                  for h in hurst])
     k = k[:, :, None, None, :] * np.array(scatter)[None, None, None, :, None]   # (hurst, radius, h, seed, F)
     hurst = list(hurst)
     dims = ("hurst", "radius", "h_rms", "seed", "force")
@@ -54,6 +55,27 @@ def hurst_study(tmp_path, monkeypatch):
     """The model with c_zeta and p linear in H (:data:`LINEAR`) at H 0.4, 0.6, 0.8."""
     monkeypatch.setattr(superposition, "zeta_law", _eq13)
     return _made_up(tmp_path, [0.4, 0.6, 0.8], lambda h: superposition.hurst_constants(h, LINEAR))
+
+
+#: the form ``tail``'s made-up constants: c and p linear in H as :data:`LINEAR` but sharper, and β
+TAIL = {"zeta_factor": (0.95, 0.05), "power": (1.8, 0.5), "tail": 2.0}
+
+
+@pytest.fixture
+def tail_study(tmp_path, monkeypatch):
+    """The model with the tail join (:data:`TAIL`) at H 0.4, 0.6, 0.8."""
+    monkeypatch.setattr(superposition, "zeta_law", _eq13)
+    return _made_up(tmp_path, [0.4, 0.6, 0.8], lambda h: (*superposition.hurst_constants(h, TAIL), TAIL["tail"]))
+
+
+def test_tail_form_recovers_the_tail(tail_study):
+    assert calibration.calibrate([tail_study], "tail").tail == pytest.approx(TAIL["tail"], rel=1e-3), \
+        "beta of the made-up study"
+
+
+def test_tail_form_recovers_the_power(tail_study):
+    assert calibration.calibrate([tail_study], "tail").power == pytest.approx(TAIL["power"], abs=1e-3), \
+        "(p0, p1) of the made-up study"
 
 
 def test_recovers_the_zeta_factor(study):

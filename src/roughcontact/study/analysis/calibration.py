@@ -5,7 +5,8 @@ the ζ(H) law of flat surfaces (:func:`roughcontact.models.zeta_law.zeta_law`; a
 fractal branch need not carry the prefactor of a flat, periodic surface) and the order ``p``
 of the p-norm that joins the body's and the roughness's forces. In the form ``constant``
 (``contact_scale``) they are two numbers; in the form ``hurst`` (``contact_scale_h``) each is
-linear in H, ``c = c₀ + c₁ H`` and ``p = p₀ + p₁ H`` (four numbers). They minimise
+linear in H, ``c = c₀ + c₁ H`` and ``p = p₀ + p₁ H`` (four numbers); the form ``tail``
+(``contact_scale_tail``) adds the β of the join's tail towards the body's law (five). They minimise
 
     χ² = Σ_combinations Σ_resolved F ((ln k̄_BEM − ln k_model(F; c, p)) / s)²,
 
@@ -14,16 +15,17 @@ over the sphere combinations at the paper's setting (paraboloid, no roll-off or 
 elastic) of every study given, loads resolved as in the scorecard (mean contact cells ≥
 ``fit.zeta.min_cells``). Run it as
 
-    python -m roughcontact.study.analysis.calibration [--form hurst] [--bootstrap N] STUDY_DIR [STUDY_DIR ...]
+    python -m roughcontact.study.analysis.calibration [--form hurst|tail] [--bootstrap N] STUDY_DIR [STUDY_DIR ...]
 
 (each a directory a preset ran in); it prints the constants and every combination's largest
 deviation. With ``--bootstrap N`` each constant carries a 95 % percentile interval over seeds
 (Efron & Tibshirani, *An Introduction to the Bootstrap*, 1993, ch. 13): each study's seeds are
 resampled with replacement, the *same* indices for all its combinations (equal seeds give the
 same roughness pattern, so a study's combinations share one sampling offset), the means and
-their errors formed again and the constants refitted. The constants in :data:`roughcontact.models.superposition.CALIBRATED` (form
-``constant``) and :data:`~roughcontact.models.superposition.CALIBRATED_HURST` (form ``hurst``)
-were made so.
+their errors formed again and the constants refitted. The constants in
+:data:`roughcontact.models.superposition.CALIBRATED` (form ``constant``),
+:data:`~roughcontact.models.superposition.CALIBRATED_HURST` (form ``hurst``) and
+:data:`~roughcontact.models.superposition.CALIBRATED_TAIL` (form ``tail``) were made so.
 """
 from __future__ import annotations
 
@@ -46,13 +48,21 @@ __all__ = ["FORMS", "Calibration", "ensemble_points", "calibrate", "main"]
 
 #: floor of the relative standard error of an ensemble mean in the weights
 MIN_RELATIVE_ERROR = 0.01
-#: the forms of the constants: their start values and bounds, and (c, p) at H from them
+#: the forms of the constants: their start values and bounds, which of the fitted numbers each
+#: constant takes (``slots``), and the model's keywords (c, p and β) at H from them
 FORMS = {
     "constant": {"start": [1.0, 1.5], "bounds": ([0.2, 1.0], [5.0, 50.0]),
-                 "constants": lambda theta, hurst: (theta[0], theta[1])},
+                 "slots": {"zeta_factor": slice(0, 1), "power": slice(1, 2)},
+                 "constants": lambda theta, hurst: {"zeta_factor": theta[0], "power": theta[1]}},
     "hurst": {"start": [1.0, 0.0, 1.5, 0.0], "bounds": ([0.2, -5.0, 0.05, -20.0], [5.0, 5.0, 50.0, 20.0]),
-              "constants": lambda theta, hurst: superposition.hurst_constants(
-                  hurst, {"zeta_factor": theta[:2], "power": theta[2:]})},
+              "slots": {"zeta_factor": slice(0, 2), "power": slice(2, 4)},
+              "constants": lambda theta, hurst: dict(zip(("zeta_factor", "power"), superposition.hurst_constants(
+                  hurst, {"zeta_factor": theta[:2], "power": theta[2:4]})))},
+    # started at a sharp crossover (p ≈ 2), where the tail, not the order, sets the approach to Hertz
+    "tail": {"start": [1.0, 0.0, 2.0, 0.5, 1.0], "bounds": ([0.2, -5.0, 0.05, -20.0, 0.0], [5.0, 5.0, 50.0, 20.0, 100.0]),
+             "slots": {"zeta_factor": slice(0, 2), "power": slice(2, 4), "tail": slice(4, 5)},
+             "constants": lambda theta, hurst: dict(zip(("zeta_factor", "power"), superposition.hurst_constants(
+                 hurst, {"zeta_factor": theta[:2], "power": theta[2:4]})), tail=theta[4])},
 }
 
 
@@ -91,10 +101,10 @@ def _mean_and_error(samples):
     return mean, np.maximum(error, MIN_RELATIVE_ERROR)
 
 
-def _model(point, zeta_factor, power):
+def _model(point, zeta_factor, power, tail=0.0):
     return superposition.calibrated_stiffness(
         point["force"], radius=point["radius"], hurst=point["hurst"], h_rms=point["h_rms"], length=point["length"],
-        e_star=point["e_star"], zeta_factor=zeta_factor, power=max(power, 1e-3))
+        e_star=point["e_star"], zeta_factor=zeta_factor, power=max(power, 1e-3), tail=max(tail, 0.0))
 
 
 @dataclass(frozen=True)
@@ -105,7 +115,7 @@ class Calibration:
     ----------
     zeta_factor, power : float or tuple of float
         ``c`` and ``p`` (form ``constant``), or their coefficients ``(c₀, c₁)`` and ``(p₀, p₁)``
-        (form ``hurst``; module docstring).
+        (forms ``hurst`` and ``tail``; module docstring).
     chi2_per_point : float
         χ²/(points − 2) at the optimum (1 if the model is as good as the ensembles' scatter).
     points : int
@@ -114,10 +124,12 @@ class Calibration:
         ``max_F |k_model/k̄_BEM − 1|`` per combination (``study:H..._R..._h...``).
     form : str
         The form of the constants (:data:`FORMS`).
-    zeta_factor_ci, power_ci : tuple
+    tail : float
+        The join's β (form ``tail``; 0 otherwise).
+    zeta_factor_ci, power_ci, tail_ci : tuple
         The ``(low, high)`` percentile interval over the seeds' bootstrap at ``level`` (module
-        docstring) of ``c`` and ``p`` (form ``constant``), or one such pair per coefficient (form
-        ``hurst``); empty without a bootstrap.
+        docstring) of ``c``, ``p`` and β, or one such pair per coefficient (forms ``hurst`` and
+        ``tail``); empty without a bootstrap.
     resamples : int
         Bootstrap resamples (0: none).
     level : float
@@ -130,8 +142,10 @@ class Calibration:
     points: int
     max_rel_dev: dict
     form: str = "constant"
+    tail: float = 0.0
     zeta_factor_ci: tuple = ()
     power_ci: tuple = ()
+    tail_ci: tuple = ()
     resamples: int = 0
     level: float = 0.95
 
@@ -145,7 +159,7 @@ def calibrate(studies, form: str = "constant", *, resamples: int = 0, level: flo
     studies : iterable of path-like
         Directories the calibration presets ran in.
     form : str
-        ``constant`` or ``hurst`` (:data:`FORMS`).
+        ``constant``, ``hurst`` or ``tail`` (:data:`FORMS`).
     resamples : int, keyword-only
         Bootstrap resamples of the seeds for the constants' intervals (0: no intervals).
     level : float, keyword-only
@@ -165,7 +179,7 @@ def calibrate(studies, form: str = "constant", *, resamples: int = 0, level: flo
         raise ValueError("no resolved sphere loads in the studies given")
 
     def predicted(point, theta):
-        return _model(point, *spec["constants"](theta, point["hurst"]))
+        return _model(point, **spec["constants"](theta, point["hurst"]))
 
     def residuals(theta, means=None):
         means = means or [(p["stiffness"], p["relative_error"]) for p in points]
@@ -180,20 +194,15 @@ def calibrate(studies, form: str = "constant", *, resamples: int = 0, level: flo
     deviations = {f"{p['study']}:H{p['hurst']:g}_R{p['radius']:g}_h{p['h_rms']:g}":
                   float(np.max(np.abs(predicted(p, fit.x) / p["stiffness"] - 1))) for p in points}
     theta = [float(x) for x in fit.x]
-    half = len(theta) // 2
-    zeta_factor, power = (theta[0], theta[1]) if form == "constant" else (tuple(theta[:half]), tuple(theta[half:]))
-    return Calibration(zeta_factor=zeta_factor, power=power,
-                       chi2_per_point=float(np.sum(fit.fun**2) / max(total - len(theta), 1)), points=total,
-                       max_rel_dev=deviations, form=form, zeta_factor_ci=_shaped(cis[:half], resamples),
-                       power_ci=_shaped(cis[half:], resamples), resamples=resamples, level=level)
+    values = {name: _shaped(theta[where]) for name, where in spec["slots"].items()}
+    intervals = {f"{name}_ci": _shaped(cis[where]) if resamples else () for name, where in spec["slots"].items()}
+    return Calibration(**values, **intervals, chi2_per_point=float(np.sum(fit.fun**2) / max(total - len(theta), 1)),
+                       points=total, max_rel_dev=deviations, form=form, resamples=resamples, level=level)
 
 
-def _shaped(cis, resamples):
-    """The intervals of one constant: ``(low, high)`` for one coefficient, a tuple of them for
-    several, ``()`` without a bootstrap."""
-    if not resamples:
-        return ()
-    return cis[0] if len(cis) == 1 else tuple(cis)
+def _shaped(values):
+    """One constant's numbers: the number itself for one coefficient, a tuple for several."""
+    return values[0] if len(values) == 1 else tuple(values)
 
 
 def _resampled_means(points, resamples):
@@ -210,7 +219,8 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("studies", nargs="+", type=Path, help="directories the calibration presets ran in")
     parser.add_argument("--form", choices=sorted(FORMS), default="constant",
-                        help="constant: c and p (contact_scale); hurst: each linear in H (contact_scale_h)")
+                        help="constant: c and p (contact_scale); hurst: each linear in H (contact_scale_h); "
+                             "tail: as hurst, with the join's tail beta (contact_scale_tail)")
     parser.add_argument("--bootstrap", type=int, default=0, metavar="N",
                         help="resamples of the seeds for 95 %% intervals of the constants (default 0: none)")
     args = parser.parse_args(argv)
@@ -224,8 +234,9 @@ def main(argv=None) -> int:
         text = [f"{v:.4f}" + (f" [{c[0]:.4f}, {c[1]:.4f}]" if c else "") for v, c in zip(values, cis or [()] * len(values))]
         return text[0] if scalar else "(" + ", ".join(text) + ")"
 
+    tail = f"tail = {show(result.tail, result.tail_ci)}, " if "tail" in FORMS[result.form]["slots"] else ""
     print(f"form {result.form}: zeta_factor = {show(result.zeta_factor, result.zeta_factor_ci)}, "
-          f"power = {show(result.power, result.power_ci)}, "
+          f"power = {show(result.power, result.power_ci)}, {tail}"
           f"chi2/point = {result.chi2_per_point:.3f}, {result.points} resolved loads"
           + (f"; intervals: {result.level:.0%} over {result.resamples} resamples of the seeds" if result.resamples else ""))
     for name, value in result.max_rel_dev.items():
