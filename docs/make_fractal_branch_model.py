@@ -5,15 +5,15 @@
 Each DIR is a directory a preset ran in (``snakemake --cores 2 --configfile presets/NAME.yaml
 --directory DIR``): ``calibration-branches``, ``calibration-branches-451`` and
 ``calibration-branches-447`` for ``--calibration``, ``heldout-branches-a`` and
-``heldout-branches-b`` for ``--heldout``, ``validation-branches`` and ``validation-branches-2`` for
-``--validation``. The page
-gives, per combination of the held-out and validation sets, the recommended model's and
-``contact_scale_h``'s systematic deviation on each branch (with its 95 % interval over seeds),
-the grid error added there, the fraction of resolved loads inside the band widened by the grid
-error and whether the row holds (:func:`roughcontact.study.analysis.decision.holds`); the
-calibration set's table of the same columns; what a sweep of 16 seeds can tell (the spread of
-16-seed means about the 160-seed mean of held-out sweep A); and one figure of every held-out
-combination's deviations. The reading, with the wall times, is
+``heldout-branches-b`` for ``--heldout``, ``validation-branches``, ``validation-branches-2`` and
+``validation-branches-3`` for ``--validation``. The page gives, per combination of the held-out
+and validation sets, the recommended model's and those of :data:`MODEL` and :data:`COMPARED`
+systematic deviation on each branch (with its 95 % interval over seeds), the grid error added
+there, the fraction of resolved loads inside the band widened by the grid error and whether the
+row holds (:func:`roughcontact.study.analysis.decision.holds`); the calibration sets' table of the
+same columns; how the rough sphere approaches Hertz; what a sweep of 16 seeds can tell (the
+spread of 16-seed means about the 160-seed mean of held-out sweep A); and one figure of every
+held-out combination's deviations. The reading, with the wall times, is
 ``docs/results/fractal_branch_model_reading.txt``, included verbatim.
 """
 from __future__ import annotations
@@ -35,8 +35,8 @@ OUT = DOCS / "results" / "fractal_branch_model.md"
 FIGURE = OUT.with_suffix(".png")
 READING = OUT.with_name("fractal_branch_model_reading.txt")
 #: the model of the page and the ones it is compared with
-MODEL = "contact_scale_h"
-COMPARED = ("contact_scale", "eq16_paper")
+MODEL = "contact_scale_tail"
+COMPARED = ("contact_scale_h", "contact_scale", "eq16_paper")
 #: the seeds of issue 31's first sweep, for the sampling spread
 ISSUE_SEEDS = 16
 #: the Hertz end of a combination: its resolved loads above this multiple of eq. 17's F_tr
@@ -106,9 +106,9 @@ def _sampling(workdir: Path, seeds: int = ISSUE_SEEDS, draws: int = 2000) -> pd.
 def _hertz_end(dirs, above: float = HERTZ_END) -> pd.DataFrame:
     """Per combination with three or more resolved loads above *above* · F_tr (eq. 17 with eq. 13's
     ζ): how the rough sphere approaches Hertz (eq. 9). ``1 − k/k_Hertz`` falls as a power of F; its
-    exponent fitted (least squares in log–log) to the ensemble mean and to ``contact_scale_h``, whose
-    p-norm gives ``−(2 − H) p(H)/3`` there, and both values at the largest load with the ensemble's
-    95 % half-band."""
+    exponent fitted (least squares in log–log) to the ensemble mean, to ``contact_scale_h`` (whose
+    p-norm gives ``−(2 − H) p(H)/3`` there) and to ``contact_scale_tail`` (``−2/3`` far from the
+    crossover), and the values at the largest load with the ensemble's 95 % half-band."""
     from roughcontact.models import paper, superposition
     from roughcontact.study.analysis.ensemble import combinations
 
@@ -124,17 +124,20 @@ def _hertz_end(dirs, above: float = HERTZ_END) -> pd.DataFrame:
             if use.sum() < 3:
                 continue
             hertz = paper.hertz_stiffness(force, radius=radius, e_star=1.0)
-            model = superposition.hurst_calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms,
-                                                             length=1.0, e_star=1.0)
+            sphere = dict(radius=radius, hurst=hurst, h_rms=h_rms, length=1.0, e_star=1.0)
+            models = {"contact_scale_h": superposition.hurst_calibrated_stiffness(force, **sphere),
+                      "contact_scale_tail": superposition.tail_calibrated_stiffness(force, **sphere)}
             slope = {name: np.polyfit(np.log(force[use]), np.log(1 - value[use] / hertz[use]), 1)[0]
-                     for name, value in (("BEM", mean), (MODEL, model))}
+                     for name, value in (("BEM", mean), *models.items())}
             last = np.flatnonzero(use)[-1]
             half_band = 1.96 * k[:, last].std(ddof=1) / np.sqrt(k.shape[0]) / mean[last]
             rows.append({"study": workdir.name, "combination": f"H{hurst:g}_R{radius:g}_h{h_rms:g}",
                          "loads": int(use.sum()), "F/F_tr": f"{force[use][0] / f_tr:.0f}–{force[last] / f_tr:.0f}",
-                         "exponent, BEM": f"{slope['BEM']:.2f}", f"exponent, {MODEL}": f"{slope[MODEL]:.2f}",
+                         "exponent, BEM": f"{slope['BEM']:.2f}",
+                         **{f"… {name}": f"{slope[name]:.2f}" for name in models},
                          "1 − k/k_Hertz at the largest load, BEM": f"{100 * (1 - mean[last] / hertz[last]):.2f} %",
-                         f"… {MODEL}": f"{100 * (1 - model[last] / hertz[last]):.2f} %",
+                         **{f"… {name} ": f"{100 * (1 - value[last] / hertz[last]):.2f} %"
+                            for name, value in models.items()},
                          "95 % half-band there": f"±{100 * half_band:.2f} %"})
     return pd.DataFrame(rows)
 
@@ -170,7 +173,7 @@ def make_page(calibration, heldout, validation) -> Path:
     tested = [*heldout, *validation]
     _figure(tested)
     lines = [
-        "# The fractal branch's model: `contact_scale_h` on held-out sweeps",
+        "# The fractal branch's model: `contact_scale_tail` and `contact_scale_h` on held-out sweeps",
         "",
         "Generated by `python docs/make_fractal_branch_model.py` from the scorecards (`models.csv`) of the "
         f"presets; machine: {_machine()}. Scorecards: "
@@ -180,7 +183,8 @@ def make_page(calibration, heldout, validation) -> Path:
         "",
         "## Held-out sweeps and validation presets",
         "",
-        "Per combination: the recommended model (first), `contact_scale_h`, `contact_scale` and `eq16_paper`. "
+        "Per combination: the recommended model (first), `contact_scale_tail`, `contact_scale_h`, `contact_scale` "
+        "and `eq16_paper`. "
         "Systematic: the deviation `k_model/k_BEM − 1` averaged over the branch's resolved loads (weighted by "
         "the inverse variance of the ensemble mean), its 95 % interval over seeds, the loads and the mean grid "
         "error added there; inside: the fraction of resolved loads inside the ensemble's 95 % band widened "
@@ -192,7 +196,8 @@ def make_page(calibration, heldout, validation) -> Path:
         "",
         "![every held-out combination](fractal_branch_model.png)",
         "",
-        "Each held-out combination: the deviation of `contact_scale_h`, `contact_scale` and eq. 16 from the "
+        "Each held-out combination: the deviation of `contact_scale_tail`, `contact_scale_h`, `contact_scale` "
+        "and eq. 16 from the "
         "ensemble mean at the resolved loads, in the ensemble's 95 % band (dark) and that band widened by "
         "the grid error (light).",
         "",
@@ -203,8 +208,9 @@ def make_page(calibration, heldout, validation) -> Path:
         "## The Hertz end",
         "",
         f"At loads above {HERTZ_END:g} F_tr the rough sphere is a little softer than Hertz, and the difference "
-        "`1 − k/k_Hertz` falls as a power of F. The exponent fitted to the ensemble mean and to "
-        f"`{MODEL}` (its p-norm gives `−(2 − H) p(H)/3`), and both differences at the largest load:",
+        "`1 − k/k_Hertz` falls as a power of F. The exponent fitted to the ensemble mean, to "
+        "`contact_scale_h` (its p-norm gives `−(2 − H) p(H)/3`) and to `contact_scale_tail` (−2/3 far "
+        "above the crossover), and the differences at the largest load:",
         "",
         _table(_hertz_end([*calibration, *tested])),
         "",
