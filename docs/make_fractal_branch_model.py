@@ -166,7 +166,7 @@ def _figure(dirs) -> None:
         ax.title.set_fontsize(8)
         ax.legend(fontsize=6)
     fig.tight_layout()
-    save_png(fig, FIGURE)
+    save_png(fig, FIGURE, dpi=90)
 
 
 def make_page(calibration, heldout, validation) -> Path:
