@@ -165,3 +165,14 @@ def test_zero_tail_is_the_p_norm():
 def test_negative_tail_rejected():
     with pytest.raises(ValueError, match="tail must be >= 0"):
         superposition.force_from_stiffness(0.1, power=2.0, tail=-1.0, **SPHERE)
+
+
+def test_tail_join_without_roughness_force_is_the_body():
+    """x = 0 (F_rough = 0, as below a cutoff): F = F_body exactly, ln x = −inf handled without a warning."""
+    import warnings
+
+    k = np.array([0.05, 0.1])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        force = superposition.force_from_stiffness(k, **dict(TAIL, h_rms=0.0))
+    assert force == pytest.approx(k ** 3 / 3.0, rel=1e-12), "F_body = k³/(6R) E*⁻² with R = 0.5"

@@ -174,8 +174,10 @@ def force_from_stiffness(stiffness, *, radius, hurst, h_rms, length, e_star, zet
         return rough
     body = e_star * (k / e_star) ** (exponent + 1.0) / _body_coefficient(radius, exponent)
     if tail > 0.0:
-        # ln(1 + β x^s + x^p) by log-sum-exp (no overflow for large x or p)
-        log_x = np.log(rough / body)
+        # ln(1 + β x^s + x^p) by log-sum-exp (no overflow for large x or p); x = 0 (no roughness
+        # force at the contact's scale, e.g. below a cutoff) gives ln x = −inf and F = F_body
+        with np.errstate(divide="ignore"):
+            log_x = np.log(rough / body)
         terms = np.stack([np.zeros_like(log_x), math.log(tail) + tail_exponent(hurst, exponent) * log_x,
                           power * log_x])
         return body * np.exp(np.logaddexp.reduce(terms, axis=0) / power)
