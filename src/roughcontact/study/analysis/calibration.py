@@ -59,7 +59,8 @@ FORMS = {
               "constants": lambda theta, hurst: dict(zip(("zeta_factor", "power"), superposition.hurst_constants(
                   hurst, {"zeta_factor": theta[:2], "power": theta[2:4]})))},
     # started at a sharp crossover (p ≈ 2), where the tail, not the order, sets the approach to Hertz
-    "tail": {"start": [1.0, 0.0, 2.0, 0.5, 1.0], "bounds": ([0.2, -5.0, 0.05, -20.0, 0.0], [5.0, 5.0, 50.0, 20.0, 100.0]),
+    "tail": {"start": [1.0, 0.0, 2.0, 0.5, 1.0],
+             "bounds": ([0.2, -5.0, 0.05, -20.0, 0.0], [5.0, 5.0, 50.0, 20.0, 100.0]),
              "slots": {"zeta_factor": slice(0, 2), "power": slice(2, 4), "tail": slice(4, 5)},
              "constants": lambda theta, hurst: dict(zip(("zeta_factor", "power"), superposition.hurst_constants(
                  hurst, {"zeta_factor": theta[:2], "power": theta[2:4]})), tail=theta[4])},
@@ -88,7 +89,8 @@ def ensemble_points(study) -> list[dict]:
         use = resolved(sub["contact_cells"].values.mean(0), study_of_file.fit.zeta.min_cells)
         mean, error = _mean_and_error(k[:, use])
         out.append({"study": Path(study).name, "source": str(Path(study).resolve()), "hurst": combo["hurst"],
-                    "radius": combo["radius"], "h_rms": combo["h_rms"], "length": length, "e_star": e_star, "n": study_of_file.grid.n,
+                    "radius": combo["radius"], "h_rms": combo["h_rms"], "length": length, "e_star": e_star,
+                    "n": study_of_file.grid.n,
                     "force": sub["force"].values[use], "stiffness": mean, "relative_error": error,
                     "samples": k[:, use]})
     return out
@@ -117,7 +119,8 @@ class Calibration:
         ``c`` and ``p`` (form ``constant``), or their coefficients ``(c₀, c₁)`` and ``(p₀, p₁)``
         (forms ``hurst`` and ``tail``; module docstring).
     chi2_per_point : float
-        χ²/(points − 2) at the optimum (1 if the model is as good as the ensembles' scatter).
+        χ²/(points − constants fitted) at the optimum (1 if the model is as good as the ensembles'
+        scatter).
     points : int
         Resolved loads used.
     max_rel_dev : dict[str, float]
@@ -231,14 +234,16 @@ def main(argv=None) -> int:
     def show(value, cis):
         scalar = isinstance(value, float)
         values, cis = ([value], [cis]) if scalar else (list(value), list(cis))
-        text = [f"{v:.4f}" + (f" [{c[0]:.4f}, {c[1]:.4f}]" if c else "") for v, c in zip(values, cis or [()] * len(values))]
+        text = [f"{v:.4f}" + (f" [{c[0]:.4f}, {c[1]:.4f}]" if c else "")
+                for v, c in zip(values, cis or [()] * len(values))]
         return text[0] if scalar else "(" + ", ".join(text) + ")"
 
     tail = f"tail = {show(result.tail, result.tail_ci)}, " if "tail" in FORMS[result.form]["slots"] else ""
     print(f"form {result.form}: zeta_factor = {show(result.zeta_factor, result.zeta_factor_ci)}, "
           f"power = {show(result.power, result.power_ci)}, {tail}"
           f"chi2/point = {result.chi2_per_point:.3f}, {result.points} resolved loads"
-          + (f"; intervals: {result.level:.0%} over {result.resamples} resamples of the seeds" if result.resamples else ""))
+          + (f"; intervals: {result.level:.0%} over {result.resamples} resamples of the seeds"
+             if result.resamples else ""))
     for name, value in result.max_rel_dev.items():
         print(f"  {name}: max |k_model/k_BEM - 1| = {value:.3f}")
     return 0
