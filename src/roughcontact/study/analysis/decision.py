@@ -52,7 +52,7 @@ import math
 
 import numpy as np
 
-from .statistics import interval
+from .statistics import CONSISTENT, interval
 
 __all__ = ["RULE", "DECISIONS", "OUTSIDE", "HOLDS_SYSTEMATIC", "HOLDS_SYSTEMATIC_CONSISTENT", "HOLDS_INSIDE",
            "inputs", "score", "holds", "decide", "sort", "matrix", "matrix_html", "grid_note"]
@@ -163,7 +163,7 @@ def holds(row: dict) -> bool:
     for b in branches:
         value = abs(row[f"systematic_{b}"])
         verdict = row.get(f"systematic_{b}_total_verdict" if measured else f"systematic_{b}_verdict", "")
-        if not (value <= HOLDS_SYSTEMATIC or (value <= HOLDS_SYSTEMATIC_CONSISTENT and verdict == "consistent")):
+        if not (value <= HOLDS_SYSTEMATIC or (value <= HOLDS_SYSTEMATIC_CONSISTENT and verdict == CONSISTENT)):
             return False
     return bool(branches)
 

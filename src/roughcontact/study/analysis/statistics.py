@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 __all__ = ["BOOTSTRAP_SEED", "bootstrap_indices", "interval", "verdict", "verdict_bound", "judge", "untested",
-           "split_verdict", "UNTESTED_BECAUSE", "VERDICTS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
+           "split_verdict", "UNTESTED_BECAUSE", "VERDICTS", "CONSISTENT", "DIFFERS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
            "OUT_OF_RANGE", "NO_PREDICTION"]
 
 #: random state of every bootstrap (the paper's acceptance date)
@@ -27,6 +27,8 @@ BOOTSTRAP_SEED = 20130702
 
 #: the verdict words of the claims table
 VERDICTS = ("consistent", "differs", "untested", "error")
+#: the two verdicts of a tested value: inside its interval, or excluded by it
+CONSISTENT, DIFFERS = VERDICTS[:2]
 
 #: why a claim is untested (the ``untested_because`` column): the sweep lacks what the claim needs
 #: (a second radius, flat runs, a run to pair with, a preload, overlapping ranges)
@@ -89,7 +91,7 @@ def verdict(value: float, low: float, high: float) -> str:
     """``consistent`` if ``low ≤ value ≤ high``, ``differs`` otherwise (``untested`` for a NaN interval)."""
     if not (math.isfinite(low) and math.isfinite(high) and math.isfinite(value)):
         return "untested"
-    return "consistent" if low <= value <= high else "differs"
+    return CONSISTENT if low <= value <= high else DIFFERS
 
 
 def judge(value: float, low: float, high: float) -> str:
@@ -111,8 +113,8 @@ def verdict_bound(bound: float, low: float, high: float, *, side: str) -> str:
         return untested(UNRESOLVED, "no interval")
     inside, outside = (high < bound, low > bound) if side == "below" else (low > bound, high < bound)
     if inside:
-        return "consistent"
-    return "differs" if outside else untested(HOLDS_THRESHOLD, f"the interval contains {bound:g}")
+        return CONSISTENT
+    return DIFFERS if outside else untested(HOLDS_THRESHOLD, f"the interval contains {bound:g}")
 
 
 def bootstrap_indices(n_seeds: int, resamples: int, *, seed: int = BOOTSTRAP_SEED) -> np.ndarray:
