@@ -240,20 +240,20 @@ def hurst_constants(hurst, constants=None) -> tuple[float, float]:
 def hurst_calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, exponent=2.0, spectrum=None,
                                reference=None, constants=None):
     """The scorecard's ``contact_scale_h``: :func:`calibrated_stiffness` with ``c_ζ`` and ``p``
-    linear in H (:func:`hurst_constants`, :data:`CALIBRATED_HURST`)."""
+    linear in H (:func:`hurst_constants`, :data:`CALIBRATED_HURST`), and the join's tail β where
+    *constants* has one (``constants["tail"]``; :func:`tail_calibrated_stiffness`)."""
+    constants = CALIBRATED_HURST if constants is None else constants
     zeta_factor, power = hurst_constants(hurst, constants)
     return calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
                                 exponent=exponent, spectrum=spectrum, reference=reference,
-                                zeta_factor=zeta_factor, power=power)
+                                zeta_factor=zeta_factor, power=power, tail=constants.get("tail", 0.0))
 
 
 def tail_calibrated_stiffness(force, *, radius, hurst, h_rms, length, e_star, exponent=2.0, spectrum=None,
                               reference=None, constants=None):
-    """The scorecard's ``contact_scale_tail``: :func:`calibrated_stiffness` with ``c_ζ`` and ``p``
-    linear in H (:func:`hurst_constants`) and the tail's β (module docstring), all from
-    :data:`CALIBRATED_TAIL` unless *constants* (the same keys) are given."""
-    constants = CALIBRATED_TAIL if constants is None else constants
-    zeta_factor, power = hurst_constants(hurst, constants)
-    return calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
-                                exponent=exponent, spectrum=spectrum, reference=reference,
-                                zeta_factor=zeta_factor, power=power, tail=constants["tail"])
+    """The scorecard's ``contact_scale_tail``: :func:`hurst_calibrated_stiffness` with the tail's β
+    (module docstring), all constants from :data:`CALIBRATED_TAIL` unless *constants* (the same
+    keys) are given."""
+    return hurst_calibrated_stiffness(force, radius=radius, hurst=hurst, h_rms=h_rms, length=length, e_star=e_star,
+                                      exponent=exponent, spectrum=spectrum, reference=reference,
+                                      constants=CALIBRATED_TAIL if constants is None else constants)
