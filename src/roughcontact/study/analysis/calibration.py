@@ -48,23 +48,25 @@ __all__ = ["FORMS", "Calibration", "ensemble_points", "calibrate", "main"]
 
 #: floor of the relative standard error of an ensemble mean in the weights
 MIN_RELATIVE_ERROR = 0.01
-#: the forms of the constants: their start values and bounds, which of the fitted numbers each
-#: constant takes (``slots``), and the model's keywords (c, p and β) at H from them
+#: the forms of the constants: their start values and bounds, and which of the fitted numbers each
+#: constant takes (``slots``): a polynomial in H, rising order (:func:`_constants`; one number: a constant)
 FORMS = {
     "constant": {"start": [1.0, 1.5], "bounds": ([0.2, 1.0], [5.0, 50.0]),
-                 "slots": {"zeta_factor": slice(0, 1), "power": slice(1, 2)},
-                 "constants": lambda theta, hurst: {"zeta_factor": theta[0], "power": theta[1]}},
+                 "slots": {"zeta_factor": slice(0, 1), "power": slice(1, 2)}},
     "hurst": {"start": [1.0, 0.0, 1.5, 0.0], "bounds": ([0.2, -5.0, 0.05, -20.0], [5.0, 5.0, 50.0, 20.0]),
-              "slots": {"zeta_factor": slice(0, 2), "power": slice(2, 4)},
-              "constants": lambda theta, hurst: dict(zip(("zeta_factor", "power"), superposition.hurst_constants(
-                  hurst, {"zeta_factor": theta[:2], "power": theta[2:4]})))},
+              "slots": {"zeta_factor": slice(0, 2), "power": slice(2, 4)}},
     # started at a sharp crossover (p ≈ 2), where the tail, not the order, sets the approach to Hertz
     "tail": {"start": [1.0, 0.0, 2.0, 0.5, 1.0],
              "bounds": ([0.2, -5.0, 0.05, -20.0, 0.0], [5.0, 5.0, 50.0, 20.0, 100.0]),
-             "slots": {"zeta_factor": slice(0, 2), "power": slice(2, 4), "tail": slice(4, 5)},
-             "constants": lambda theta, hurst: dict(zip(("zeta_factor", "power"), superposition.hurst_constants(
-                 hurst, {"zeta_factor": theta[:2], "power": theta[2:4]})), tail=theta[4])},
+             "slots": {"zeta_factor": slice(0, 2), "power": slice(2, 4), "tail": slice(4, 5)}},
 }
+
+
+def _constants(spec: dict, theta, hurst) -> dict:
+    """The model's keywords (``zeta_factor``, ``power``, ``tail``) at H from the fitted numbers
+    *theta*: each slot's numbers are a polynomial in H (as
+    :func:`roughcontact.models.superposition.hurst_constants` reads them)."""
+    return {name: float(np.polynomial.polynomial.polyval(hurst, theta[where])) for name, where in spec["slots"].items()}
 
 
 def ensemble_points(study) -> list[dict]:
@@ -182,7 +184,7 @@ def calibrate(studies, form: str = "constant", *, resamples: int = 0, level: flo
         raise ValueError("no resolved sphere loads in the studies given")
 
     def predicted(point, theta):
-        return _model(point, **spec["constants"](theta, point["hurst"]))
+        return _model(point, **_constants(spec, theta, point["hurst"]))
 
     def residuals(theta, means=None):
         means = means or [(p["stiffness"], p["relative_error"]) for p in points]
