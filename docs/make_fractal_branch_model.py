@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from roughcontact.study.analysis import decision
 from roughcontact.study.files.directory import StudyDirectory
 from roughcontact.study.report.plotting import panel_grid, pyplot, save_png
 
@@ -188,9 +189,8 @@ def make_page(calibration, heldout, validation) -> Path:
         "Systematic: the deviation `k_model/k_BEM − 1` averaged over the branch's resolved loads (weighted by "
         "the inverse variance of the ensemble mean), its 95 % interval over seeds, the loads and the mean grid "
         "error added there; inside: the fraction of resolved loads inside the ensemble's 95 % band widened "
-        "by the grid error (without it where none is measured); holds: the decision's criterion (each branch "
-        "within 3 %, or within 5 % and consistent with the grid error, and inside at ≥ 80 % of the loads); "
-        "S: the decision's score.",
+        "by the grid error (without it where none is measured); holds: the decision's criterion "
+        f"({decision.HOLDS_CRITERION}); S: the decision's score.",
         "",
         _table(_rows(_scores(tested))),
         "",

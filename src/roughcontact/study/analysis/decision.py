@@ -55,6 +55,7 @@ import numpy as np
 from .statistics import CONSISTENT, interval
 
 __all__ = ["RULE", "DECISIONS", "OUTSIDE", "HOLDS_SYSTEMATIC", "HOLDS_SYSTEMATIC_CONSISTENT", "HOLDS_INSIDE",
+           "HOLDS_CRITERION",
            "inputs", "score", "holds", "decide", "sort", "matrix", "matrix_html", "grid_note"]
 
 #: the column naming why a row lies outside its model's stated range
@@ -67,13 +68,15 @@ HOLDS_SYSTEMATIC = 0.03
 HOLDS_SYSTEMATIC_CONSISTENT = 0.05
 #: ... and it lies inside the band widened by the grid error at this fraction of the resolved loads
 HOLDS_INSIDE = 0.8
+#: what *holds* means (:func:`holds`), in words made from the three constants above
+HOLDS_CRITERION = (f"each branch's systematic deviation within {100 * HOLDS_SYSTEMATIC:g} %, or within "
+                   f"{100 * HOLDS_SYSTEMATIC_CONSISTENT:g} % and consistent with 0 with the grid error, and inside "
+                   f"the band widened by the grid error at >= {100 * HOLDS_INSIDE:g} % of the resolved loads")
 #: the rule in one sentence, for the page's lead and the guide
 RULE = ("Decision rule: per combination, the recommended model (★) minimises S = max over the two branches "
         "(below/above the crossover) of the rms over the resolved loads of (|k_model/k_BEM - 1| + grid error "
-        "at the load) among the scored rows (not not_modelled, not outside_range) that hold (each branch's "
-        "systematic deviation within 3 %, or within 5 % and consistent with 0 with the grid error, and inside "
-        "the band widened by the grid error at >= 80 % of the resolved loads), or among every scored row when "
-        "none holds; a model is tied (≈) with it "
+        f"at the load) among the scored rows (not not_modelled, not outside_range) that hold ({HOLDS_CRITERION}), "
+        "or among every scored row when none holds; a model is tied (≈) with it "
         "when the lower end of the paired bootstrap-over-seeds interval of S_model − S_recommended is at most "
         "twice the larger rms grid error, else worse.")
 _MARK = {"recommended": "★", "tied": "≈", "worse": "", "not scored": "n.s."}
