@@ -1,13 +1,6 @@
-"""Greenwood & Tripp (1967): the elastic contact of a rough sphere.
-
-J. A. Greenwood, J. H. Tripp, "The elastic contact of rough spheres",
-J. Appl. Mech. 34, 153 (1967) (GT). A smooth elastic sphere of radius ``B``
-(GT's notation; ``B = R``, the radius of the paraboloid ``r²/(2R)`` of
-:func:`roughcontact.surfaces.paraboloid`) touches a Greenwood–Williamson rough
-surface: independent spherical summits of radius ``β``, areal density ``η`` and
-Gaussian heights of standard deviation ``σ`` (Greenwood & Williamson, Proc. R.
-Soc. A 295, 300 (1966)), whose nominal pressure deforms the half-space (modulus ``E*``)
-elastically.
+"""Greenwood & Tripp (1967): the elastic contact of a rough sphere (J. Appl. Mech. 34, 153):
+a smooth elastic sphere on a Greenwood–Williamson surface of independent summits, the model and
+its notation in :mod:`roughcontact.models.greenwood_tripp.solver`.
 
 * :mod:`~roughcontact.models.greenwood_tripp.solver` — GT's integral equation in their
   dimensionless units (the units, the kernel and the limits are in its docstring):
