@@ -98,7 +98,7 @@ def test_the_answer_names_the_comparisons_that_differ():
     text = answer.answer_html(answer.comparisons(claims), answer.StudySize(n=385, seeds=6, spheres=12, flats=6,
                                                                            coarse=193))
     assert "In part" in text
-    assert "b (F_tr of eq. 17)</b> in 1 of 1 combinations" in text
+    assert "1 differ wherever tested (claim <b>b</b>)" in text
     assert "1 more is untested here (most often: unresolved)" in text
     assert "1 needs an axis" in text
     assert "6 seeds each, on 385² (grid error measured against 193²)" in text

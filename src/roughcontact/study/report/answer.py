@@ -115,16 +115,16 @@ class StudySize:
                 f"each, on {self.n}² ({grid})")
 
 
-def _listing(items: list[Comparison], most: int = 4) -> str:
-    """The first *most* comparisons' labels (with their share of combinations), and how many more."""
-    shown = "; ".join(f"<b>{html.escape(c.label)}</b> in {c.counts.get('differs', 0)} of {c.tested} combinations"
-                      for c in items[:most])
-    return shown + (f"; and {len(items) - most} more (table below)" if len(items) > most else "")
+def _letters(items: list[Comparison]) -> str:
+    """The claim letters of *items*, each once, in table order: ``claims a, b, e``."""
+    letters = list(dict.fromkeys(c.claim for c in items))
+    return f"claim{'s' if len(letters) != 1 else ''} <b>{html.escape(', '.join(letters))}</b>"
 
 
 def answer_html(found: list[Comparison], size: StudySize | None = None) -> str:
     """The answer's paragraph: do the paper's claims hold here; which comparisons differ wherever
-    tested and which only in some combinations (differing of tested combinations); how many are
+    tested and which only in some combinations (their claim letters; the table below has each
+    comparison's counts); how many are
     untested for want of resolution and how many need an axis the sweep lacks; how large the study
     is and which presets give the README's numbers."""
     tested = [c for c in found if c.tested]
@@ -146,9 +146,9 @@ def answer_html(found: list[Comparison], size: StudySize | None = None) -> str:
         verdict = (f"<b>In part:</b> of the {len(tested)} comparisons with the paper that this study tests, "
                    f"{consistent} {'is' if consistent == 1 else 'are'} consistent wherever tested")
         if differs:
-            verdict += f"; {len(differs)} differ wherever tested ({_listing(differs)})"
+            verdict += f"; {len(differs)} differ wherever tested ({_letters(differs)})"
         if mixed:
-            verdict += f"; {len(mixed)} differ in some combinations only ({_listing(mixed)})"
+            verdict += f"; {len(mixed)} differ in some combinations only ({_letters(mixed)})"
         verdict += "."
     parts = [verdict]
     if unresolved:
