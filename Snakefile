@@ -6,7 +6,13 @@ from snakemake.utils import min_version
 min_version("9.0")
 
 
-configfile: "config.yaml"
+# One YAML, one study: a file given with --configfile is the whole sweep (every key it does not
+# name takes the schema's default, src/roughcontact/study/config/config.schema.yaml), wherever the
+# study runs (--directory or not); config.yaml is the sweep only when no --configfile is given
+# (then --config KEY=VALUE edits it).
+if not workflow.overwrite_configfiles:
+
+    configfile: "config.yaml"
 
 
 include: "workflow/rules/common.smk"

@@ -90,21 +90,20 @@ def test_good_configs_resolve():
 
 
 @pytest.mark.parametrize("preset", sorted(p.name for p in (ROOT / "presets").glob("*.yaml")))
-def test_presets_resolve_on_top_of_config_yaml(preset):
-    """`snakemake --configfile presets/NAME.yaml` in the checkout extends config.yaml key by key
-    (Snakemake's update_config): every preset resolves so, and keeps config.yaml's grid-error
-    companion (grid.coarse) only where it names its own grid.coarse."""
-    from snakemake.utils import update_config
+def test_presets_resolve_on_their_own(preset):
+    """`snakemake --configfile presets/NAME.yaml` reads the preset over the schema's defaults, not over
+    config.yaml (one YAML, one study, with or without --directory): every preset resolves so, and its
+    grid-error companion is the one it names, else (n + 1)/2."""
+    from roughcontact.study.config.companions import default_coarse
 
-    merged = config.load_config(ROOT / "config.yaml")
     raw = config.load_config(ROOT / "presets" / preset)
-    update_config(merged, raw)
     inputs = [e if isinstance(e, str) else e["file"] for e in raw.get("topography", []) + raw.get("spectrum", [])]
     if not all((ROOT / "presets" / f).is_file() for f in inputs):
         pytest.skip("a measured preset without ../shared/topographies")
-    cfg = config.resolve_config(merged, base_dir=ROOT / "presets")
-    own = (raw.get("grid") or {}).get("coarse") if "grid" in raw else cfg["grid"].get("coarse")
-    assert cfg["grid"].get("coarse") == own
+    cfg = config.resolve_config(raw, base_dir=ROOT / "presets")
+    grid = raw.get("grid") or {}
+    own = grid["coarse"] if "coarse" in grid else default_coarse(cfg["grid"]["n"])
+    assert cfg["grid"]["coarse"] == own
 
 
 def test_default_config_sweeps_every_axis():
@@ -209,7 +208,7 @@ def test_a_config_of_only_the_sweep_axes_takes_every_default_of_the_schema():
             value = value[key]
         assert value == schema.default_of(root, path), f"{'.'.join(path)} = {value!r} is not the schema's default"
     full = config.resolve_config(config.load_config(ROOT / "config.yaml"))
-    full["grid"].pop("coarse")   # config.yaml turns the grid error on; the schema leaves it off (a preset sets it)
+    assert resolved["grid"]["coarse"] == 193   # absent: (n + 1)/2, the companion config.yaml spells out
     assert {k: full[k] for k in ("grid", "e_star", "forces", "solver", "fit")} == \
         {k: resolved[k] for k in ("grid", "e_star", "forces", "solver", "fit")}, \
         "the schema's defaults differ from the values config.yaml spells out"

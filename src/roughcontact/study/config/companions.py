@@ -10,7 +10,18 @@ import math
 from . import axes
 from .records import force_grid
 
-__all__ = ["coarse_config", "fine_config"]
+__all__ = ["MIN_COARSE", "coarse_config", "default_coarse", "fine_config"]
+
+#: the smallest grid the schema accepts for ``grid.coarse`` (and every grid)
+MIN_COARSE = 17
+
+
+def default_coarse(n: int) -> int | None:
+    """``grid.coarse`` where a configuration does not name it: ``(n + 1) // 2`` (a ratio of 2 in cell
+    size, 193 for 385, 257 for 513), or ``None`` (no grid error) when that is below
+    :data:`MIN_COARSE`. An explicit ``grid.coarse: null`` turns the companion off."""
+    coarse = (int(n) + 1) // 2
+    return coarse if coarse >= MIN_COARSE else None
 
 
 def coarse_config(cfg) -> dict:
@@ -31,7 +42,8 @@ def coarse_config(cfg) -> dict:
     fine = grid["n"] if grid.get("realization_of") is None else grid["realization_of"]
     # the grid error is the normal stiffness's: the tangential axes at their paper setting
     tangential = {a.name: [a.paper] for a in axes.optional_axes(normal=False) if a.name in cfg}
-    return {**cfg, **tangential, "radius": spheres, "grid": {**grid, "n": int(coarse), "realization_of": int(fine)}}
+    return {**cfg, **tangential, "radius": spheres,
+            "grid": {**grid, "n": int(coarse), "coarse": None, "realization_of": int(fine)}}
 
 
 def fine_config(cfg) -> dict:

@@ -38,6 +38,7 @@ from ...errors import ConfigError
 from ...models import paper
 from ...models.elasticity import effective_modulus
 from .axes import AXES, kind_of
+from .companions import default_coarse
 from .limits import full_contact_slope
 from .measured import resolve_inputs
 from .records import force_grid
@@ -114,12 +115,13 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
         raise ConfigError(f"config key 'grid.realization_of' = {fine} is not allowed; allowed: null or a grid of at "
                           f"least grid.n = {cfg['grid']['n']} points (the finer grid whose surfaces are pressed)",
                           key="grid.realization_of")
-    coarse = cfg["grid"].get("coarse")   # absent: no grid error (resolved configs unchanged)
+    if "coarse" not in cfg["grid"]:   # absent: the companion of half the resolution; null: none
+        cfg["grid"]["coarse"] = default_coarse(cfg["grid"]["n"])
+    coarse = cfg["grid"]["coarse"]
     if coarse is not None and int(coarse) >= cfg["grid"]["n"]:
-        raise ConfigError(f"config key 'grid.coarse' = {coarse} is not allowed; allowed: null or a grid of fewer "
-                          f"than grid.n = {cfg['grid']['n']} points (the same surfaces on a coarser grid; config.yaml sets "
-                          "193 for its 385² grid, so a config file with another grid.n names its own grid.coarse)",
-                          key="grid.coarse")
+        raise ConfigError(f"config key 'grid.coarse' = {coarse} is not allowed; allowed: null (no grid error) or a "
+                          f"grid of fewer than grid.n = {cfg['grid']['n']} points (the same surfaces on a coarser "
+                          f"grid; absent = (n + 1)/2 = {default_coarse(cfg['grid']['n'])})", key="grid.coarse")
     cfg["grid"]["length"] = float(cfg["grid"]["length"])
     if isinstance(cfg["e_star"], dict):   # the two bodies: E* of eq. 4.22 of Johnson (1985)
         bodies = cfg["e_star"]

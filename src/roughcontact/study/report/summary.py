@@ -2,11 +2,14 @@
 
 :func:`write_summary` turns ``claims.csv``, ``crossover.csv``, ``zeta.csv``, ``models.csv`` and
 one Fig. 3 PNG into an HTML fragment (``results/summary.html``); the report's landing text
-(``workflow/report/workflow.rst``) inlines that fragment when the report holds it, so the
-verdict counts per claim, the crossover force against eq. 17, ζ(H) against eq. 13, the
+(``workflow/report/workflow.rst``) inlines that fragment when the report holds it, so one
+sentence answering whether the paper's claims hold (:mod:`roughcontact.study.report.answer`), the
+verdict counts per comparison, the crossover force against eq. 17 (each prediction next to its
+verdict), ζ(H) against eq. 13, the
 recommended model per sphere combination (with whether its grid error is measured,
 :func:`roughcontact.study.analysis.decision.grid_note`) and Fig. 3 are on the first page, without a click.
-Numbers are shown with four significant digits; the CSV files keep every digit.
+Numbers are shown with four significant digits; the CSV files keep every digit. A table without
+a row (a flat-only sweep has no crossover and no scorecard) reads "Not measured, because …".
 """
 from __future__ import annotations
 
@@ -15,9 +18,11 @@ import html
 import math
 
 from ..analysis import decision
+from ..config import axes
 from ..analysis.statistics import VERDICTS
 from ..files import provenance
-from .tables import DIGITS, VERDICT_COLOURS, stamp, verdict_cell, verdict_word
+from . import answer
+from .tables import DIGITS, VERDICT_COLOURS, stamp, verdict_cell
 
 __all__ = ["DIGITS", "NO_RECOMMENDATION", "fmt", "summary_html", "write_summary", "recommended_models"]
 
@@ -59,18 +64,20 @@ def _table(header, rows) -> str:
     return f"<table {_TABLE}><thead><tr>{head}</tr></thead><tbody>\n{body}\n</tbody></table>"
 
 
-def _combination(row) -> str:
-    parts = [f"H = {fmt(row['hurst'])}", f"R = {fmt(row['radius'])}", f"h_rms = {fmt(row['h_rms'])}"]
+def _combination(row, length: float = 1.0) -> str:
+    """The combination of a table row, named by the axis registry: H, R (``flat`` for ``inf``) and
+    h_rms, then every optional axis off the paper's setting (its name and coordinate)."""
+    radius = row.get("radius")
+    shape = "flat" if radius is not None and fmt(radius) == "inf" else f"R = {fmt(radius)}"
+    parts = [f"H = {fmt(row.get('hurst'))}", shape, f"h_rms = {fmt(row.get('h_rms'))}"]
+    parts += [f"{name} = {fmt(value)}" for name, value in axes.off_paper(row, length).items()]
     return html.escape(", ".join(parts))
 
 
 def verdict_counts(claims):
-    """Per claim: its statement (the first row's) and the count of each verdict word."""
-    out = []
-    for claim, rows in claims.groupby("claim", sort=False):
-        words = [verdict_word(v) for v in rows["verdict"]]
-        out.append((str(claim), str(rows["statement"].iloc[0]), {w: words.count(w) for w in VERDICTS}))
-    return out
+    """Per comparison (claim letter and statement): the letter, the statement and the count of each
+    verdict word (:func:`roughcontact.study.report.answer.comparisons`)."""
+    return [(c.claim, c.statement, c.counts) for c in answer.comparisons(claims)]
 
 
 #: the model column of a combination whose scorecard recommends no model (no scored row)
@@ -114,81 +121,144 @@ def _png_data_uri(path) -> str:
         return "data:image/png;base64,\n" + base64.encodebytes(fh.read()).decode("ascii").strip()
 
 
-def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str = "") -> str:
-    """The landing page's fragment (module docstring) from the four tables (pandas DataFrames)
-    and the path of one Fig. 3 PNG."""
+def _absent(text: str) -> str:
+    """A table that has no row: "Not measured, because …" in place of the table."""
+    return f'<p class="rc-absent"><i>Not measured, because {html.escape(text)}.</i></p>'
+
+
+def _branches_scored(row) -> bool:
+    """Whether both branches of a scorecard row were scored (a resolved load below and above F_tr)."""
+    counts = [row.get(c) for c in ("n_loads_low", "n_loads_high")]
+    if any(c is None for c in counts):
+        return True   # a table without the counts: its holds column decides
+    try:
+        return all(float(c) > 0 for c in counts)
+    except (TypeError, ValueError):
+        return False
+
+
+def _holds(row) -> str:
+    """The ``holds`` cell: yes or no where both branches were scored, else why not; a dash for a row
+    without a model or a table without the column."""
+    if str(row.get("model")) == NO_RECOMMENDATION:
+        return "—"
+    text = str(row.get("holds")).strip().lower()
+    if text not in ("true", "false"):
+        return "—"
+    if not _branches_scored(row):
+        return "not scored: a branch has no resolved load"
+    return {"true": "yes", "false": "no"}[text]
+
+
+def _why_empty(kind: str, size) -> str:
+    """Why the table *kind* (crossover, zeta, models) has no row, from the study's size."""
+    if kind in ("crossover", "models"):
+        if size is not None and not size.spheres:
+            return "the sweep has no sphere (every radius is .inf): no crossover and no model scorecard"
+        return "no sphere combination has a resolved load on either branch"
+    if size is not None and not size.flats:
+        return "the sweep has no nominally flat surface and no sphere's fractal branch gave a fit of ζ"
+    return "no flat combination has enough resolved loads for a fit of ζ"
+
+
+def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str = "", size=None,
+                 length: float = 1.0) -> str:
+    """The landing page's fragment (module docstring) from the four tables (pandas DataFrames, any of
+    them possibly empty), the path of one Fig. 3 PNG (or ``None``), the study's
+    :class:`~roughcontact.study.report.answer.StudySize` (or ``None``) and ``grid.length``."""
     parts = [f'<div class="rc-summary" style="{_STYLE}">']
-    # 1. the verdicts per claim
-    counts = verdict_counts(claims)
-    total = {w: sum(c[w] for _, _, c in counts) for w in VERDICTS}
-    parts.append("<h2>Answer: the paper's claims</h2>")
-    parts.append("<p>" + ", ".join(f"<b>{total[w]}</b> {w}" for w in VERDICTS if total[w] or w != "error")
-                 + " (rows of the claims table, one per claim and combination it is tested on).</p>")
-    rows = []
-    for claim, statement, c in counts:
-        short = statement if len(statement) <= 110 else statement[:107] + "..."
-        rows.append([html.escape(claim), html.escape(short)]
-                    + [(f'<td class="verdict-{w}" style="{_CELL} background:{VERDICT_COLOURS[w]}">{c[w]} {w}</td>'
-                        if c[w] else "") for w in VERDICTS if total[w] or w != "error"])
-    parts.append(_table(["claim", "statement"] + [w for w in VERDICTS if total[w] or w != "error"], rows))
+    # 1. the answer, then the tallies per comparison
+    found = answer.comparisons(claims)
+    parts.append("<h2>Answer: do the paper's claims hold?</h2>")
+    parts.append(answer.answer_html(found, size))
+    shown = [w for w in VERDICTS if w != "error" or any(c.counts.get(w) for c in found)]
+    if found:
+        rows = []
+        for c in found:
+            short = c.statement if len(c.statement) <= 110 else c.statement[:107] + "..."
+            cells = []
+            for w in shown:
+                note = f" ({c.untested_because})" if w == "untested" and c.untested_because else ""
+                cells.append(f'<td class="verdict-{w}" style="{_CELL} background:{VERDICT_COLOURS[w]}">'
+                             f"{c.counts[w]} {w}{html.escape(note)}</td>" if c.counts.get(w) else "")
+            rows.append([html.escape(c.claim), html.escape(short)] + cells)
+        parts.append("<p>One row per comparison (a claim letter may hold several), counting the combinations "
+                     "it is tested on.</p>")
+        parts.append(_table(["claim", "comparison"] + shown, rows))
+    else:
+        parts.append(_absent("the sweep tests none of the paper's claims"))
     # 2. Fig. 3
     if fig3_png is not None:
         parts.append(f"<h2>Fig. 3: stiffness against force{html.escape(fig3_title)}</h2>")
         parts.append(f'<img class="rc-fig3" alt="Fig. 3" style="max-width: 900px; width: 100%;" '
                      f'src="{_png_data_uri(fig3_png)}">')
-    # 3. the crossover force against eq. 17
+    # 3. the crossover force against eq. 17, each prediction with its own verdict
     parts.append("<h2>Crossover force F_tr / (E* L²): measured (95 % interval) against eq. 17</h2>")
-    rows = []
-    for _, r in crossover.iterrows():
-        rows.append([_combination(r), fmt(r.get("Ftr_measured")) or "—", _interval(r.get("Ftr_ci_low"), r.get("Ftr_ci_high")),
-                     fmt(r.get("Ftr_pred_fit")), fmt(r.get("Ftr_pred_estimate")), _verdict_cell(r.get("verdict_fit"))])
-    parts.append(_table(["combination", "F_tr measured", "95 % interval", "eq. 17, fitted ζ",
-                         "eq. 17, ζ = 1.7/(H+1)", "verdict"], rows))
+    if len(crossover):
+        rows = [[_combination(r, length), _value_interval(r.get("Ftr_measured"), r.get("Ftr_ci_low"), r.get("Ftr_ci_high")),
+                 fmt(r.get("Ftr_pred_estimate")), _verdict_cell(r.get("verdict_estimate")),
+                 fmt(r.get("Ftr_pred_fit")), _verdict_cell(r.get("verdict_fit"))] for _, r in crossover.iterrows()]
+        parts.append(_table(["combination", "F_tr measured [95 % interval]", "eq. 17, ζ = 1.7/(H+1)", "verdict",
+                             "eq. 17, fitted ζ", "verdict"], rows))
+    else:
+        parts.append(_absent(_why_empty("crossover", size)))
     # 4. zeta(H) against eq. 13
     parts.append("<h2>ζ(H) fitted against eq. 13, 1.7/(H+1)</h2>")
-    rows = [[fmt(r["hurst"]), fmt(r["zeta"]), _interval(r["zeta_ci_low"], r["zeta_ci_high"]), fmt(r["zeta_estimate"]),
-             html.escape(str(r.get("source", "")))] for _, r in zeta.iterrows()]
-    parts.append(_table(["H", "ζ fitted", "95 % interval", "eq. 13", "source"], rows))
+    if len(zeta):
+        rows = [[fmt(r["hurst"]), _value_interval(r.get("zeta"), r.get("zeta_ci_low"), r.get("zeta_ci_high")),
+                 fmt(r.get("zeta_estimate")), html.escape(str(r.get("source", "")))] for _, r in zeta.iterrows()]
+        parts.append(_table(["H", "ζ fitted [95 % interval]", "eq. 13", "source"], rows))
+    else:
+        parts.append(_absent(_why_empty("zeta", size)))
     # 5. the recommended model per sphere combination
     parts.append("<h2>Recommended model per sphere combination</h2>")
-    basis = ("the scorecard's decision (its recommended column; the model scorecard gives the rule)"
-             if "recommended" in models.columns else "rank 1: the smallest largest deviation max_rel_dev")
-    parts.append(f"<p>Chosen by {html.escape(basis)}; whether it holds ({html.escape(decision.HOLDS_CRITERION)}); "
-                 "the systematic deviation of k from the ensemble below and above the crossover force (mean "
-                 "relative deviation, 95 % interval, verdict).</p>")
     if len(models):
+        basis = ("the scorecard's decision (its recommended column; the model scorecard gives the rule)"
+                 if "recommended" in models.columns else "rank 1: the smallest largest deviation max_rel_dev")
+        parts.append(f"<p>Chosen by {html.escape(basis)}; whether it holds ({html.escape(decision.HOLDS_CRITERION)}; "
+                     "only where both branches have a resolved load); the systematic deviation of k from the "
+                     "ensemble below and above the crossover force (mean relative deviation, 95 % interval, "
+                     "verdict).</p>")
         parts.append(f"<p>{html.escape(decision.grid_note(models))}</p>")
-    rows = []
-    for r in recommended_models(models):
-        rows.append([_combination(r), f'<td class="model" style="{_CELL}"><b>{html.escape(str(r["model"]))}</b></td>',
-                     _holds(r.get("holds")), fmt(r.get("max_rel_dev")),
-                     _value_interval(r.get("systematic_low"), r.get("systematic_low_ci_low"), r.get("systematic_low_ci_high")),
-                     _verdict_cell(r.get("systematic_low_verdict")),
-                     _value_interval(r.get("systematic_high"), r.get("systematic_high_ci_low"), r.get("systematic_high_ci_high")),
-                     _verdict_cell(r.get("systematic_high_verdict"))])
-    parts.append(_table(["combination", "model", "holds", "max_rel_dev", "systematic, F < F_tr", "verdict",
-                         "systematic, F > F_tr", "verdict"], rows))
+        rows = []
+        for r in recommended_models(models):
+            rows.append([_combination(r, length),
+                         f'<td class="model" style="{_CELL}"><b>{html.escape(str(r["model"]))}</b></td>',
+                         html.escape(_holds(r)), fmt(r.get("max_rel_dev")),
+                         _value_interval(r.get("systematic_low"), r.get("systematic_low_ci_low"),
+                                         r.get("systematic_low_ci_high")),
+                         _verdict_cell(r.get("systematic_low_verdict")),
+                         _value_interval(r.get("systematic_high"), r.get("systematic_high_ci_low"),
+                                         r.get("systematic_high_ci_high")),
+                         _verdict_cell(r.get("systematic_high_verdict"))])
+        parts.append(_table(["combination", "model", "holds", "max_rel_dev", "systematic, F < F_tr", "verdict",
+                             "systematic, F > F_tr", "verdict"], rows))
+    else:
+        parts.append(_absent(_why_empty("models", size)))
     parts.append(f'<p style="color:#555; font-size: 11px;">{stamp()}</p>')
     parts.append("</div>")
     return "\n".join(parts) + "\n"
 
 
-def _holds(value) -> str:
-    """The ``holds`` cell: yes, no, or a dash for a table without the column."""
-    text = str(value).strip().lower()
-    return {"true": "yes", "false": "no"}.get(text, "—")
-
-
 def _read(path):
+    """The table at *path*; an empty DataFrame for an empty file (a table with no row and no header)."""
+    import os
+
     import pandas as pd
 
-    return pd.read_csv(path, keep_default_na=False, na_values=[""])
+    if os.path.getsize(path) <= 1:
+        return pd.DataFrame()
+    try:
+        return pd.read_csv(path, keep_default_na=False, na_values=[""])
+    except pd.errors.EmptyDataError:
+        return pd.DataFrame()
 
 
 def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_paths, out_html) -> None:
-    """``summary`` rule: the landing page's fragment to *out_html* (atomic). *figure_paths* are
-    the ``figures`` rule's outputs, in the order of :func:`~roughcontact.study.report.figures.figure_specs`;
-    the Fig. 3 shown is the one of the combination Figs. 1, 2 and 4 show."""
+    """``summary`` rule: the landing page's fragment to *out_html* (atomic). *cfg* is the resolved
+    configuration; *figure_paths* are the ``figures`` rule's outputs, in the order of
+    :func:`~roughcontact.study.report.figures.figure_specs`; the Fig. 3 shown is the one of the
+    combination Figs. 1, 2 and 4 show."""
     from .figures import figure_specs, shown_combination
 
     specs = figure_specs(cfg)
@@ -202,5 +272,6 @@ def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_p
         title = f" (H = {labels['H']}, R = {labels['R']}, h_rms = {labels['h_rms']}; the others: category " \
                 f"\"Fig. 3 stiffness vs force\")"
     text = summary_html(_read(claims_csv), _read(crossover_csv), _read(zeta_csv), _read(models_csv),
-                        chosen[1] if chosen else None, fig3_title=title)
+                        chosen[1] if chosen else None, fig3_title=title, size=answer.StudySize.of(cfg),
+                        length=float(cfg["grid"]["length"]))
     provenance.write_text(text, out_html)
