@@ -78,6 +78,44 @@ def run_to_report(cfg: dict, work: Path) -> str:
 
 
 # --------------------------------------------------------------------------
+# a table without a row
+# --------------------------------------------------------------------------
+def test_a_table_without_a_row_is_its_header_and_why(tmp_path):
+    """files.io.write_csv: no row -> the header (pandas reads an empty table with the columns) and
+    the reason beside it; rows again -> the reason is gone; an older one-byte table reads empty."""
+    import pandas as pd
+
+    path = tmp_path / "crossover.csv"
+    study_io.write_csv(pd.DataFrame(), path, columns=("hurst", "Ftr_measured"), reason="the sweep has no sphere")
+    table = pd.read_csv(path)
+    assert list(table.columns) == ["hurst", "Ftr_measured"] and len(table) == 0
+    assert study_io.read_csv(path).attrs[study_io.REASON] == "the sweep has no sphere"
+    assert study_io.empty_reason(path) == "the sweep has no sphere"
+    study_io.write_csv(pd.DataFrame({"hurst": [0.7], "Ftr_measured": [1e-4]}), path, reason="unused")
+    assert len(study_io.read_csv(path)) == 1 and study_io.empty_reason(path) is None
+    assert not Path(study_io.reason_path(path)).exists()
+    old = tmp_path / "models.csv"
+    old.write_text("\n")
+    assert study_io.read_csv(old).empty and study_io.read_csv(old).attrs[study_io.REASON] == study_io.NO_ROW
+
+
+def test_no_sphere_tables_have_their_columns():
+    """crossover.csv and models.csv of a sweep without a sphere: the sweep axes and the tables' columns."""
+    import pandas as pd
+
+    from roughcontact.study.analysis import scorecard, verdicts
+    from roughcontact.study.config import resolve
+    from roughcontact.study.runs import naming as runs
+
+    cfg = resolve.resolve_config(_base("flat"))
+    cross, reps = verdicts.crossover_table({}, pd.DataFrame(), cfg)
+    assert list(cross.columns) == [*runs.AXES["sphere"], *verdicts.CROSSOVER_COLUMNS] and not len(cross)
+    models, curves = scorecard.scorecard({}, pd.DataFrame(), cfg)
+    assert {"model", "combination", "max_rel_dev", *runs.AXES["sphere"]} <= set(models.columns) and not curves
+    assert "no sphere" in scorecard.empty_reason(cfg)
+
+
+# --------------------------------------------------------------------------
 # the drawn sweeps
 # --------------------------------------------------------------------------
 FIT = {"zeta": {"min_cells": 4, "bootstrap": 50}}
