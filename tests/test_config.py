@@ -212,3 +212,12 @@ def test_a_config_of_only_the_sweep_axes_takes_every_default_of_the_schema():
     assert {k: full[k] for k in ("grid", "e_star", "forces", "solver", "fit")} == \
         {k: resolved[k] for k in ("grid", "e_star", "forces", "solver", "fit")}, \
         "the schema's defaults differ from the values config.yaml spells out"
+
+
+def test_cli_check_config_names_every_swept_axis(tmp_path, capsys):
+    """check-config counts the combinations by the axis registry: an optional axis swept is named."""
+    sweep = tmp_path / "sweep.yaml"
+    sweep.write_text(yaml.safe_dump({"hurst": [0.5, 0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 2,
+                                      "grid": {"n": 129, "coarse": None}, "hardness": [None, 0.5]}))
+    assert cli.main(["check-config", str(sweep)]) == 0
+    assert "4 combinations of 2 hurst, 2 hardness x 2 seeds" in capsys.readouterr().out
