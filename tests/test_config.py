@@ -234,3 +234,12 @@ def test_a_scalar_is_a_one_element_list_for_every_list_valued_key():
     # a scalar of the wrong kind is still refused, naming the key's element
     with pytest.raises(errors.ConfigError, match=r"hurst\[0\]"):
         config.resolve_config({**TINY, "hurst": 2.5})
+
+
+def test_cli_check_config_names_every_swept_axis(tmp_path, capsys):
+    """check-config counts the combinations by the axis registry: an optional axis swept is named."""
+    sweep = tmp_path / "sweep.yaml"
+    sweep.write_text(yaml.safe_dump({"hurst": [0.5, 0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 2,
+                                      "grid": {"n": 129, "coarse": None}, "hardness": [None, 0.5]}))
+    assert cli.main(["check-config", str(sweep)]) == 0
+    assert "4 combinations of 2 hurst, 2 hardness x 2 seeds" in capsys.readouterr().out

@@ -55,3 +55,17 @@ def test_one_yaml_is_one_study_with_or_without_directory(tmp_path):
     elsewhere = _jobs(["--configfile", str(sweep), "--directory", str(tmp_path / "study")], tmp_path)
     assert from_root == elsewhere
     assert any(rule.startswith("indent_coarse") for rule in from_root), from_root
+
+
+def test_a_derived_companion_that_cannot_press_the_sweep_is_left_out():
+    """A cutoff of 0.05 L is 2 cells of 65² but 1.6 of the derived 33²: no companion, no error."""
+    cfg = resolve_config({**SWEEP, "grid": {"n": 65}, "cutoff": [0.05]})
+    assert cfg["grid"]["coarse"] is None
+
+
+def test_a_named_companion_that_cannot_press_the_sweep_is_refused_in_one_line():
+    from roughcontact.errors import ConfigError
+
+    with pytest.raises(ConfigError, match="grid.coarse") as err:
+        resolve_config({**SWEEP, "grid": {"n": 65, "coarse": 33}, "cutoff": [0.05]})
+    assert "\n" not in str(err.value)

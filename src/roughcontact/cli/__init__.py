@@ -196,8 +196,11 @@ def main(argv=None) -> int:
                   f"; stickiness: {len(sticky.jobs())} runs ({len(sticky.hurst)} H x {len(sticky.number)} N x "
                   f"{sticky.seeds} seeds on {sticky.n}²)")
         blocks = len(runs.seed_blocks(study.seeds, study.jobs.batch)) if study.seeds else 0
+        # the registered axes the sweep varies, each with its count of values
+        swept = [f"{len(values)} {name}" for name, values in study.sweep if len(values) > 1]
         print(f"{args.config}: valid; {len(runs.runs(study))} runs "
-              f"({len(runs.combinations(study))} (H, R, h_rms) x {len(study.seeds)} seeds) in "
+              f"({len(runs.combinations(study))} combinations of {', '.join(swept) or 'the axes'} x "
+              f"{len(study.seeds)} seeds) in "
               f"{len(runs.combinations(study)) * blocks} indent jobs (jobs.batch = {study.jobs.batch})"
               f"{coarse}{scans}{sticky}")
         return 0

@@ -38,7 +38,7 @@ from ...errors import ConfigError
 from ...models import paper
 from ...models.elasticity import effective_modulus
 from .axes import AXES, kind_of
-from .companions import default_coarse
+from .companions import coarse_config, default_coarse
 from .limits import full_contact_slope
 from .measured import resolve_inputs
 from .records import force_grid
@@ -85,6 +85,10 @@ def load_config(path: str | os.PathLike) -> dict:
 def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = None) -> dict:
     """Validate and normalise a config; return the resolved copy.
 
+    The grid-error companion (``grid.coarse``, absent: :func:`~.companions.default_coarse`) is
+    resolved too: one it named that cannot press the sweep (e.g. a cutoff below two of its cells)
+    is refused in one line naming ``grid.coarse``; a derived one is then left out (``null``).
+
     Raises :class:`ConfigError` with one line naming the offending key and
     what is allowed.  *schema* is a path or a loaded dict (default: the
     schema of the checkout).  *base_dir*: the directory of the config file, against which
@@ -92,6 +96,22 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
     directory); the resolved config holds absolute paths
     (:func:`roughcontact.study.config.measured.resolve_inputs`).
     """
+    derived = "coarse" not in ((raw or {}).get("grid") or {}) if isinstance(raw, dict) else False
+    cfg = _resolve(raw, schema, base_dir)
+    if cfg["grid"].get("coarse") is not None and cfg.get("hurst") and any(math.isfinite(r) for r in cfg["radius"]):
+        try:
+            _resolve(coarse_config(cfg), schema, base_dir)
+        except ConfigError as err:
+            if not derived:
+                raise ConfigError(f"config key 'grid.coarse' = {cfg['grid']['coarse']} is not allowed: its companion "
+                                  f"study fails the checks ({err}); allowed: null or a finer grid.coarse",
+                                  key="grid.coarse") from err
+            cfg["grid"]["coarse"] = None   # the derived companion cannot press this sweep: no grid error
+    return cfg
+
+
+def _resolve(raw, schema, base_dir) -> dict:
+    """:func:`resolve_config` of the study itself (not its companion)."""
     import jsonschema
 
     root = load_schema(schema)
