@@ -113,7 +113,8 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, out_csv, reason=empty_reason(study))
     write_groups(out_nc, curves, attrs)
-    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(table),
+    absent = "" if len(table) else f"Not measured, because {empty_reason(study)}. "
+    write_html_table(table, out_html, title="Model scorecard", lead=absent + scorecard_lead(table),
                      above=decision.matrix_html(table, list(registry.models())),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
                                       "systematic_low_total_verdict", "systematic_high_total_verdict"),
