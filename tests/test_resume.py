@@ -125,3 +125,23 @@ def test_hard_kill_then_the_same_command_again(tmp_path):
     assert len(list(run.glob("results/runs/*/*.nc"))) == 10
     assert (run / "results/stiffness.nc").is_file() and (run / "results/summary.html").is_file()
     assert not list((run / ".snakemake/locks").glob("*.lock"))
+
+
+def test_stale_locks_are_those_no_live_snakemake_holds(tmp_path, monkeypatch):
+    """study.files.locks: locks in a directory no Snakemake process works in are stale (Linux); kept
+    with ROUGHCONTACT_KEEP_LOCKS=1; a Snakemake process is told by its command line."""
+    from roughcontact.study.files import locks
+
+    assert locks._is_snakemake(["/usr/bin/python3", "-m", "snakemake", "--cores", "2"])
+    assert locks._is_snakemake(["/usr/local/bin/snakemake", "--cores", "2"])
+    assert not locks._is_snakemake(["python", "-m", "pytest", "tests/test_snakemake.py"])
+    (tmp_path / ".snakemake" / "locks").mkdir(parents=True)
+    lock = tmp_path / ".snakemake" / "locks" / "0.input.lock"
+    lock.write_text("results/stiffness.nc\n")
+    if locks.snakemake_processes(tmp_path) is None:
+        assert locks.stale_locks(tmp_path) == []   # no /proc: every lock is kept
+        return
+    monkeypatch.setenv(locks.KEEP_LOCKS, "1")
+    assert locks.clear_stale_locks(tmp_path) == [] and lock.exists()
+    monkeypatch.delenv(locks.KEEP_LOCKS)
+    assert locks.clear_stale_locks(tmp_path) == [str(lock)] and not lock.exists()

@@ -10,8 +10,9 @@ Elsewhere, or where ``/proc`` cannot be read, every lock is kept (Snakemake's ow
 what to do). A Snakemake process on another host sharing the directory over a network file system
 cannot be seen: such a setup keeps its locks by ``ROUGHCONTACT_KEEP_LOCKS=1``.
 
-The workflow calls :func:`clear_stale_locks` while it reads the Snakefile (``workflow/rules/indent.smk``),
-before Snakemake takes its own locks; with the default profile's ``rerun-incomplete: true`` the jobs
+The workflow calls :func:`clear_stale_locks` while Snakemake's main process reads the Snakefile
+(``workflow/rules/indent.smk``; never in a job's Snakemake, which on a cluster runs on another
+host), before Snakemake takes its own locks; with the default profile's ``rerun-incomplete: true`` the jobs
 the kill interrupted are recomputed (their outputs are written atomically: nothing half-written is kept).
 """
 from __future__ import annotations
