@@ -64,6 +64,7 @@ from ..runs import naming as runs
 from . import not_modelled as unmodelled
 from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval, verdict
+from .verdicts import NO_SPHERE
 from ..config.settings import StudySettings
 
 __all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_reason"]
@@ -213,7 +214,7 @@ def empty_reason(study) -> str:
     elastic), or no sphere combination with a resolved load a model predicts."""
     study = StudySettings.of(study)
     if not any(math.isfinite(r) for r in study.radius):
-        return "the sweep has no sphere (every radius is .inf), so no crossover force and no model scorecard"
+        return NO_SPHERE
     works = [w for w in study.work_of_adhesion if w is not None]
     if works and all(w > 0 for w in works):
         return "every sphere of the sweep is adhesive (work_of_adhesion > 0) and the scored models are elastic"
