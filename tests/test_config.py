@@ -214,6 +214,28 @@ def test_a_config_of_only_the_sweep_axes_takes_every_default_of_the_schema():
         "the schema's defaults differ from the values config.yaml spells out"
 
 
+def test_a_scalar_is_a_one_element_list_for_every_list_valued_key():
+    """``hurst: 0.7`` is ``hurst: [0.7]``: every key whose schema is a list only (the sweep axes,
+    fields.at, stickiness.hurst, ...) or a list or null (tangential.at) takes one value as a
+    one-element list; a key that also takes the scalar (seeds: 6, tangential.at: null) keeps it."""
+    root = schema.load_schema(None)
+    listed = {"hurst": 0.7, "radius": 0.5, "h_rms": 9e-3, "exponent": 2.0, "rolloff": None, "cutoff": None,
+              "hardness": None, "work_of_adhesion": 0.0, "poisson": 0.3, "friction": 0.5}
+    for name in root["properties"]:
+        node = schema.deref(root["properties"][name], root)
+        if node.get("type") == "array" and name not in ("topography", "spectrum"):
+            assert name in listed, f"{name}: a list-valued key this test does not try"
+    scalars = {**TINY, **listed, "fields": {"at": 1e-3}, "tangential": {"at": 2e-5}}
+    as_lists = {**TINY, **{k: [v] for k, v in listed.items()}, "fields": {"at": [1e-3]},
+                "tangential": {"at": [2e-5]}}
+    assert config.resolve_config(scalars) == config.resolve_config(as_lists)
+    kept = config.resolve_config({**TINY, "seeds": 3, "poisson": 0.3, "tangential": {"at": None}})
+    assert kept["seeds"] == [0, 1, 2] and kept["tangential"]["at"] is None
+    # a scalar of the wrong kind is still refused, naming the key's element
+    with pytest.raises(errors.ConfigError, match=r"hurst\[0\]"):
+        config.resolve_config({**TINY, "hurst": 2.5})
+
+
 def test_cli_check_config_names_every_swept_axis(tmp_path, capsys):
     """check-config counts the combinations by the axis registry: an optional axis swept is named."""
     sweep = tmp_path / "sweep.yaml"

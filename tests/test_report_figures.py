@@ -109,3 +109,83 @@ def test_scorecard_figure_is_faceted(tmp_path, monkeypatch):
         assert sorted(labels) == sorted(names), labels
     finally:
         pyplot().close(figures[0])
+
+
+def _sphere_inputs(zeta_rows):
+    """figures.Inputs of one sphere combination (H 0.7, R 0.5, h 0.01 on 33²) whose ensemble follows
+    eq. 16, with the ζ table *zeta_rows* (dicts of zeta.csv's columns) and no crossover row."""
+    import pandas as pd
+
+    from roughcontact.models import paper
+    from roughcontact.study.report import figures
+    from roughcontact.study.runs import naming as runs
+
+    cfg = config.resolve_config({"grid": {"n": 33, "length": 1.0, "coarse": None}, "e_star": 1.0, "hurst": [0.7],
+                                 "radius": [0.5], "h_rms": [0.01], "seeds": 2})
+    study = StudySettings.of(cfg)
+    force = np.geomspace(1e-5, 1e-2, 6)
+    k = paper.stiffness_from_force(force, radius=0.5, hurst=0.7, h_rms=0.01, length=1.0, e_star=1.0,
+                                   zeta=float(paper.zeta_estimate(0.7)))
+    spec = next(s for s in figures.figure_specs(cfg) if s["key"][0] == "fig3")
+    combo = spec["key"][1]
+    axes = runs.AXES["sphere"]
+    shape = (1,) * len(axes) + (force.size,)
+    ens = xr.Dataset({name: ((*axes, "force"), values.reshape(shape))
+                      for name, values in (("k_mean", k), ("k_sem", 0.01 * k), ("contact_cells_mean", 50 + 0 * k))},
+                     coords={**{a: [combo[a]] for a in axes}, "force": force}, attrs={"n_seeds": 2})
+    inputs = figures.Inputs(study=study, ensemble=ens, zeta=pd.DataFrame(zeta_rows), crossover=pd.DataFrame(),
+                            hurst=0.7, h_rms=0.01, radius=0.5, seed=0)
+    return figures, inputs, spec["key"]
+
+
+def _legend_texts(fig):
+    return [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
+
+
+NOT_FITTED = {"hurst": 0.7, "zeta": float("nan"), "zeta_ci_low": float("nan"), "zeta_ci_high": float("nan"),
+              "confidence": 0.95, "source": "no loads in the fit window (sphere small-force branch (no flat runs): "
+                                            "eq. 16 minus its Hertz term; no free exponent (the window is too narrow))"}
+
+
+def test_zeta_figure_of_a_sphere_only_sweep_has_no_reason_in_its_legend():
+    """ζ not fitted (a sphere-only sweep whose fit window is empty): the legend names the curves only,
+    the axes keep most of the figure's width, and a short note in the axes says why."""
+    figures, inputs, _ = _sphere_inputs([NOT_FITTED])
+    plt = pyplot()
+    fig = figures.zeta(plt, inputs, ("zeta",))
+    try:
+        texts = _legend_texts(fig)
+        assert texts == ["1.7/(H+1), eq. 13"], texts
+        assert fig.axes[0].get_position().width > 0.6, "the axes are a strip beside their legend"
+        notes = [t.get_text() for t in fig.axes[0].texts]
+        assert any("not fitted" in n and "no loads in the fit window" in n for n in notes), notes
+        assert not any("Hertz term" in n for n in notes), "the whole reason string is in the axes"
+    finally:
+        plt.close(fig)
+    fitted = {**NOT_FITTED, "zeta": 1.1, "zeta_ci_low": 1.0, "zeta_ci_high": 1.2, "source": "flat"}
+    figures, inputs, _ = _sphere_inputs([fitted])
+    fig = figures.zeta(plt, inputs, ("zeta",))
+    try:
+        assert sorted(_legend_texts(fig)) == ["1.7/(H+1), eq. 13", "fit (flat), 95% bootstrap CI"], _legend_texts(fig)
+        assert not fig.axes[0].texts
+    finally:
+        plt.close(fig)
+
+
+@pytest.mark.parametrize("fitted", [False, True])
+def test_fig3_says_fitted_only_when_zeta_was_fitted(fitted):
+    """Fig. 3's eq. 16 curve: "fitted ζ = …" where zeta.csv has ζ at that H, else ζ = 1.7/(H+1)
+    (eq. 13), drawn once."""
+    row = {**NOT_FITTED, "zeta": 1.1, "source": "flat"} if fitted else NOT_FITTED
+    figures, inputs, key = _sphere_inputs([row])
+    plt = pyplot()
+    fig = figures.fig3(plt, inputs, key)
+    try:
+        eq16 = [t for t in _legend_texts(fig) if t.startswith("eq. 16")]
+        if fitted:
+            assert "eq. 16, fitted ζ = 1.1" in eq16 and "eq. 16, ζ = 1.7/(H+1) (eq. 13)" in eq16, eq16
+        else:
+            assert not any("fitted" in t for t in _legend_texts(fig)), _legend_texts(fig)
+            assert eq16 and all(t == "eq. 16, ζ = 1.7/(H+1) = 1 (eq. 13)" for t in eq16), eq16
+    finally:
+        plt.close(fig)

@@ -92,3 +92,60 @@ def test_interrupt_and_resume(tmp_path):
         assert f.stat().st_mtime_ns == mtime, f"{f} was recomputed"
     assert len(list(run.glob("results/runs/*/*.nc"))) == 10
     assert_same_numbers(ref / "results/stiffness.nc", run / "results/stiffness.nc")
+
+
+def test_hard_kill_then_the_same_command_again(tmp_path):
+    """SIGKILL to snakemake's process group part way (its locks and incomplete markers left behind),
+    then the very same command: it completes (the default profile's rerun-incomplete, and
+    roughcontact.study.files.locks removes the locks no live Snakemake holds), with every run and
+    the merged file; while the run is alive its locks are kept."""
+    from roughcontact.study.files import locks
+
+    run = tmp_path / "run"
+    _write(run)
+    cmd = [sys.executable, "-m", "snakemake", "-s", str(REPO / "Snakefile"), "-d", str(run), "--cores", "2",
+           "--configfile", str(run / "config.yaml")]
+    env = {**os.environ, "PYTHONPATH": str(REPO / "src")}
+    p = subprocess.Popen(cmd, cwd=run, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env,
+                         start_new_session=True)
+    try:
+        end = time.monotonic() + 90
+        while time.monotonic() < end and not list(run.glob("results/runs/*/*.nc")):
+            time.sleep(0.1)
+        held = sorted((run / ".snakemake/locks").glob("*.lock"))
+        kept = locks.stale_locks(run)   # snakemake is alive in run/: none of its locks is stale
+        os.killpg(p.pid, signal.SIGKILL)
+        p.wait(timeout=10)
+    finally:
+        if p.poll() is None:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+    assert held, "the run took no lock before its first run file (or finished none within 90 s)"
+    assert kept == [], f"the locks of a live run were called stale: {kept}"
+    assert list((run / ".snakemake/locks").glob("*.lock")), "the kill left no lock: the test kills nothing"
+    assert not (run / "results/stiffness.nc").exists(), "the kill was not part way"
+    again = subprocess.run(cmd, cwd=run, capture_output=True, text=True, env=env, timeout=300)
+    assert again.returncode == 0, again.stdout[-3000:] + again.stderr[-3000:]
+    assert len(list(run.glob("results/runs/*/*.nc"))) == 10
+    assert (run / "results/stiffness.nc").is_file() and (run / "results/summary.html").is_file()
+    assert not list((run / ".snakemake/locks").glob("*.lock"))
+
+
+def test_stale_locks_are_those_no_live_snakemake_holds(tmp_path, monkeypatch):
+    """study.files.locks: locks in a directory no Snakemake process works in are stale (Linux); kept
+    with ROUGHCONTACT_KEEP_LOCKS=1; a Snakemake process is told by its command line."""
+    from roughcontact.study.files import locks
+
+    assert locks._is_snakemake(["/usr/bin/python3", "-m", "snakemake", "--cores", "2"])
+    assert locks._is_snakemake(["/usr/local/bin/snakemake", "--cores", "2"])
+    assert not locks._is_snakemake(["python", "-m", "pytest", "tests/test_snakemake.py"])
+    (tmp_path / ".snakemake" / "locks").mkdir(parents=True)
+    lock = tmp_path / ".snakemake" / "locks" / "0.input.lock"
+    lock.write_text("results/stiffness.nc\n")
+    if locks.snakemake_processes(tmp_path) is None:
+        assert locks.stale_locks(tmp_path) == []   # no /proc: every lock is kept
+        return
+    monkeypatch.setenv(locks.KEEP_LOCKS, "1")
+    assert locks.clear_stale_locks(tmp_path) == [] and lock.exists()
+    monkeypatch.delenv(locks.KEEP_LOCKS)
+    assert locks.clear_stale_locks(tmp_path) == [str(lock)] and not lock.exists()

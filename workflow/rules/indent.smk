@@ -5,6 +5,13 @@
 # longest jobs start first (priority: the job's expected cost), the short ones fill the end; the
 # grid error's companion runs on grid.coarse go with the sphere runs they accompany (the same
 # priority), so that merge_coarse is done while the last flat runs are.
+from roughcontact.study.files.locks import clear_stale_locks  # noqa: E402
+
+# a hard kill's locks (no Snakemake process left in this directory): the same command resumes;
+# only in Snakemake's main process (a job's Snakemake may run on another host)
+for lock in clear_stale_locks() if workflow.is_main_process else []:
+    print(f"removed the stale lock {lock} of a killed run", file=sys.stderr)
+
 if INDENT_BATCH == 1:
 
     rule indent:

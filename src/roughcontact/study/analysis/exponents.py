@@ -18,7 +18,11 @@ import numpy as np
 
 from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval
+from ..config import axes
 from ..config.settings import StudySettings
+
+#: the columns of exponents.csv after the surface kind and the sweep axes
+EXPONENT_COLUMNS = ("force", "local_exponent", "ci_low", "ci_high")
 
 __all__ = ["local_exponents", "exponent_table"]
 
@@ -65,6 +69,13 @@ def local_exponents(force, stiffness, contact_cells, *, window: int, min_cells: 
     return out[0], out[1], out[2]
 
 
+def empty_reason(study) -> str:
+    """Why exponents.csv has no row: no load window of ``fit.slopes.window`` consecutive resolved loads."""
+    study = StudySettings.of(study)
+    return (f"no combination has {study.fit.slopes.window} consecutive loads with at least "
+            f"{study.fit.zeta.min_cells} contact cells (fit.slopes.window, fit.zeta.min_cells)")
+
+
 def exponent_table(groups: dict, study):
     """One row per (kind, combination, resolved load): ``local_exponent`` and its interval
     (``exponent`` is the body's exponent m, a sweep axis)."""
@@ -84,4 +95,4 @@ def exponent_table(groups: dict, study):
             for i in np.flatnonzero(np.isfinite(beta)):
                 rows.append({"kind": kind, **combo, "force": float(force[i]), "local_exponent": beta[i],
                              "ci_low": low[i], "ci_high": high[i]})
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows) if rows else pd.DataFrame(columns=["kind", *axes.AXES, *EXPONENT_COLUMNS])

@@ -34,7 +34,7 @@ import numpy as np
 
 from ..config.settings import StudySettings
 from ..runs import naming as runs
-from .grid_error import grid_error, richardson
+from .grid_error import empty_reason, grid_error, richardson
 
 __all__ = ["SINGLE_ASPERITY_SHARE", "fine_reference", "combined_grid_error", "run_fine_reference"]
 
@@ -43,6 +43,13 @@ log = logging.getLogger(__name__)
 #: a load is in the single-asperity regime when the largest contact patch holds at least this share
 #: of the contact cells on the fine grid (mean over seeds)
 SINGLE_ASPERITY_SHARE = 0.8
+
+
+#: the columns of fine_reference.csv after the sphere axes (the header of a table without a row)
+FINE_REFERENCE_COLUMNS = ("force_normalized", "contact_cells", "study_grid_error", "study_grid_error_ci_low",
+                          "study_grid_error_ci_high", "fine_error_estimate", "grid_error_estimate", "stiffness",
+                          "fine_stiffness", "largest_patch_share", "single_asperity", "reference_stiffness",
+                          "grid_n", "fine_grid_n")
 
 
 def fine_reference(study_ds, fine_ds, coarse_ds=None, *, n: int, n_fine: int, n_coarse: int | None = None,
@@ -133,11 +140,17 @@ def run_fine_reference(study, stiffness_nc, fine_nc, out_csv, coarse_nc=None) ->
     study = StudySettings.of(study)
     zeta = study.fit.zeta
     groups, fine = read_groups(stiffness_nc), read_groups(fine_nc)
-    coarse = read_groups(coarse_nc)["sphere"] if coarse_nc else None
-    table = fine_reference(groups["sphere"], fine["sphere"], coarse, n=study.grid.n, n_fine=study.grid.fine,
-                           n_coarse=study.grid.coarse, min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
-                           confidence=zeta.confidence)
-    write_csv(table, out_csv)
+    reason = empty_reason(groups, fine)
+    if reason:
+        import pandas as pd
+
+        table = pd.DataFrame(columns=[*runs.AXES["sphere"], *FINE_REFERENCE_COLUMNS])
+    else:
+        coarse = read_groups(coarse_nc)["sphere"] if coarse_nc else None
+        table = fine_reference(groups["sphere"], fine["sphere"], coarse, n=study.grid.n, n_fine=study.grid.fine,
+                               n_coarse=study.grid.coarse, min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
+                               confidence=zeta.confidence)
+    write_csv(table, out_csv, reason=reason)
     log.info("fine reference on %d²: %d loads of %d sphere combinations; single-asperity loads: %d", study.grid.fine,
              len(table), len(table.groupby([c for c in ("hurst", "radius", "h_rms") if c in table])) if len(table) else 0,
              int(table["single_asperity"].sum()) if len(table) else 0)

@@ -52,6 +52,7 @@ from ...errors import MergeError
 
 from .ensemble import combinations, resolved
 from ..config.settings import StudySettings
+from ..runs import naming as runs
 from .statistics import bootstrap_indices, interval
 
 __all__ = ["grid_error", "richardson", "estimate", "run_grid_error", "run_study_grid_error", "GRID_ERROR_FRACTION",
@@ -121,6 +122,12 @@ def _combinations(ds):
     return [where for where, _ in combinations(ds)]
 
 
+#: the columns of grid_error.csv after the sphere axes
+GRID_ERROR_COLUMNS = ("force_normalized", "contact_cells_coarse", "contact_cells_fine", "grid_error",
+                      "grid_error_ci_low", "grid_error_ci_high", "grid_ratio", "grid_error_estimate", "band",
+                      "cell_resolved", "grid_resolved")
+
+
 def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: float, ratio: float,
                fraction: float = GRID_ERROR_FRACTION, order: float = GRID_ERROR_ORDER,
                safety: float = GRID_ERROR_SAFETY):
@@ -173,10 +180,23 @@ def run_study_grid_error(study, fine_nc, coarse_nc, out_csv) -> None:
     study = StudySettings.of(study)
     zeta = study.fit.zeta
     fine, coarse = read_groups(fine_nc), read_groups(coarse_nc)
-    table = (grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
-                        confidence=zeta.confidence, ratio=study.grid.n / study.grid.coarse)
-             if "sphere" in fine and "sphere" in coarse else pd.DataFrame())
-    write_csv(table, out_csv)
+    reason = empty_reason(fine, coarse)
+    table = (pd.DataFrame(columns=[*runs.AXES["sphere"], *GRID_ERROR_COLUMNS]) if reason else
+             grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
+                        confidence=zeta.confidence, ratio=study.grid.n / study.grid.coarse))
+    write_csv(table, out_csv, reason=reason)
+
+
+def empty_reason(fine: dict, coarse: dict) -> str | None:
+    """Why the grid error of the merged groups *fine* and *coarse* (``{kind: Dataset}``) cannot be
+    measured (no sphere, or fewer than 2 common seeds: no interval), or ``None`` where it can."""
+    if "sphere" not in fine or "sphere" not in coarse:
+        return "the sweep has no sphere (every radius is .inf): the grid error is measured on the sphere runs"
+    seeds = set(fine["sphere"]["seed"].values.tolist()) & set(coarse["sphere"]["seed"].values.tolist())
+    if len(seeds) < 2:
+        return (f"the sweep has {len(seeds)} seed: the grid error's interval (a bootstrap over seeds) needs at "
+                "least 2")
+    return None
 
 
 def run_grid_error(coarse_results, fine_results, out_csv, *, fraction: float = GRID_ERROR_FRACTION) -> None:

@@ -147,7 +147,9 @@ def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: i
                              "force_max_N": float(force[ok].max()), "tiles": int(count),
                              unmodelled.COLUMN: unmodelled.not_modelled(model, setting, length) if setting else "",
                              "outside_range": outside_range(model, values), **spread})
-    table = pd.DataFrame(rows)
+    table = pd.DataFrame(rows) if rows else pd.DataFrame(columns=[
+        "scan", "kind", "radius", "model", "max_rel_dev", "rms_rel_dev", "inside_band", "n_loads", "force_min_N",
+        "force_max_N", "tiles", unmodelled.COLUMN, "outside_range", "rank"])
     if len(table):
         table["rank"] = unmodelled.rank(table, ["kind", "radius"])
     return table

@@ -66,7 +66,7 @@ from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval, verdict
 from ..config.settings import StudySettings
 
-__all__ = ["Combination", "scorecard", "combo_label"]
+__all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_reason"]
 
 log = logging.getLogger(__name__)
 
@@ -202,6 +202,24 @@ def _with_grid(dev, band, g, use, weight_use, k_boot, k_mean, systematic: dict) 
     return out
 
 
+#: the columns of models.csv (the header of a table without a row; a row has more: the systematic
+#: deviations per branch, the grid error and the decision's columns)
+MODELS_COLUMNS = ("model", "combination", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high", "rms_rel_dev",
+                  "n_loads", "force_min", "force_max", "paper_setting", "inside_band", "crossover_force", "rank")
+
+
+def empty_reason(study) -> str:
+    """Why models.csv has no row: no sphere in the sweep, or only adhesive spheres (the models are
+    elastic), or no sphere combination with a resolved load a model predicts."""
+    study = StudySettings.of(study)
+    if not any(math.isfinite(r) for r in study.radius):
+        return "the sweep has no sphere (every radius is .inf), so no crossover force and no model scorecard"
+    works = [w for w in study.work_of_adhesion if w is not None]
+    if works and all(w > 0 for w in works):
+        return "every sphere of the sweep is adhesive (work_of_adhesion > 0) and the scored models are elastic"
+    return f"no sphere combination has a load with at least {study.fit.zeta.min_cells} contact cells that a model predicts"
+
+
 def scorecard(groups: dict, zeta_df, study, grid_error=None):
     """``models.csv`` as a DataFrame (one row per model and sphere combination), and a Dataset of
     the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band.
@@ -212,7 +230,7 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
     import xarray as xr
 
     if "sphere" not in groups:
-        return pd.DataFrame(), {}
+        return pd.DataFrame(columns=[MODELS_COLUMNS[0], *runs.AXES["sphere"], *MODELS_COLUMNS[1:]]), {}
     study = StudySettings.of(study)
     ds = groups["sphere"]
     L, E = study.grid.length, study.e_star
@@ -269,7 +287,8 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
                  "long_name": "grid error estimate |k_BEM/k_converged - 1| (grid.coarse)", "units": "1"})})},
             coords={"force_normalized": ("force", force_norm, {"long_name": "F/(E* L^2)", "units": "1"})},
             attrs={k: v for k, v in combo.items()})
-    table = pd.DataFrame(rows)
+    table = pd.DataFrame(rows) if rows else pd.DataFrame(columns=[MODELS_COLUMNS[0], *runs.AXES["sphere"],
+                                                                   *MODELS_COLUMNS[1:]])
     if len(table):
         table["rank"] = unmodelled.rank(table, "combination")
         table = decision.sort(table)

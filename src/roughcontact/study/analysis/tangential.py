@@ -285,8 +285,10 @@ def per_load_table(groups: dict, cross, study):
 
     study = StudySettings.of(study)
     ds = groups.get("full_stick")
+    columns = [*runs.AXES["sphere"], "poisson", "force", "branch", "crossover_force", "kt_over_kn", "ci_low",
+               "ci_high", "mindlin", "rel_dev"]
     if ds is None:
-        return pd.DataFrame()
+        return pd.DataFrame(columns=columns)
     rows = []
     for where, sub in combinations(ds, "tangential_stiffness"):
         split = combination_branches(sub, cross, where, study)
@@ -299,4 +301,4 @@ def per_load_table(groups: dict, cross, study):
             rows.append({**where, "force": force, "branch": branch, "crossover_force": split.crossover,
                          "kt_over_kn": est.value, "ci_low": est.low, "ci_high": est.high, "mindlin": mindlin,
                          "rel_dev": est.value / mindlin - 1})
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows) if rows else pd.DataFrame(columns=columns)

@@ -37,8 +37,10 @@ from . import ensemble
 from .eq16_fit import Eq16Fit, _slopes, fit_eq16
 from .statistics import BOOTSTRAP_SEED, bootstrap_indices, interval, verdict
 from ..config.settings import StudySettings
+from ..runs import naming as runs
 
-__all__ = ["Eq16Fit", "fit_eq16", "SphereCase", "VerdictWindows", "SphereVerdicts", "sphere_verdicts", "crossover_table", "run_crossover"]
+__all__ = ["Eq16Fit", "fit_eq16", "SphereCase", "VerdictWindows", "SphereVerdicts", "sphere_verdicts", "crossover_table", "run_crossover",
+           "CROSSOVER_COLUMNS", "NO_SPHERE"]
 
 log = logging.getLogger(__name__)
 
@@ -250,6 +252,17 @@ def sphere_verdicts(force, stiffness, contact_cells, *, case: SphereCase, zeta_f
 # --------------------------------------------------------------------------
 # tables
 # --------------------------------------------------------------------------
+#: the columns of crossover.csv after the sphere axes (the header of a table without a row; a row may
+#: have more: the prefactors and deviations of eq. 16 where they were measured)
+CROSSOVER_COLUMNS = ("zeta_fit", "zeta_estimate", "Ftr_pred_fit", "Ftr_pred_estimate", "Ftr_measured", "Ftr_ci_low",
+                     "Ftr_ci_high", "verdict_fit", "verdict_estimate", "slope_low", "slope_low_ci_low",
+                     "slope_low_ci_high", "slope_low_verdict", "slope_high", "slope_high_ci_low", "slope_high_ci_high",
+                     "slope_high_verdict", "n_loads", "n_loads_resolved", "n_seeds", "confidence", "note")
+
+#: why crossover.csv and models.csv have no row: the sweep has no sphere
+NO_SPHERE = "the sweep has no sphere (every radius is .inf), so no crossover force and no model scorecard"
+
+
 def crossover_table(groups: dict, zeta_df, study):
     """``crossover.csv`` (one row per sphere combination of every sweep axis,
     :func:`sphere_verdicts`) and a Dataset of the bootstrap replicates of the
@@ -258,7 +271,7 @@ def crossover_table(groups: dict, zeta_df, study):
     import xarray as xr
 
     if "sphere" not in groups:
-        return pd.DataFrame(), xr.Dataset()
+        return pd.DataFrame(columns=[*runs.AXES["sphere"], *CROSSOVER_COLUMNS]), xr.Dataset()
     study = StudySettings.of(study)
     ds = groups["sphere"]
     L, E = study.grid.length, study.e_star
@@ -299,6 +312,6 @@ def run_crossover(study, stiffness_nc, zeta_csv, out_csv, out_nc):
     study = StudySettings.of(study)
     table, reps = crossover_table(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study)
     reps.attrs.update(provenance.provenance_attrs(config=study.config, title="roughcontact: crossover force replicates"))
-    write_csv(table, out_csv)
+    write_csv(table, out_csv, reason=NO_SPHERE)
     write_netcdf(reps, out_nc)
     log.info("crossover:\n%s", table.to_string())

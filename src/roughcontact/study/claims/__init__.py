@@ -42,7 +42,6 @@ from __future__ import annotations
 import importlib
 import logging
 import pkgutil
-from pathlib import Path
 
 from ..config.settings import StudySettings
 from ..report.tables import write_html_table
@@ -104,6 +103,8 @@ def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, expone
     for claim in claims().values():
         if all(getattr(inputs, need) is not None for need in claim.needed):
             rows += table_rows(claim, inputs)
+    if not rows:
+        return pd.DataFrame(columns=CLAIMS_COLUMNS)
     return pd.DataFrame(rows).sort_values("claim", kind="stable", ignore_index=True)
 
 
@@ -115,6 +116,13 @@ def failed(table) -> list:
 
 
 #: the lead paragraph of the claims page of the report
+#: the columns of claims.csv around the sweep axes (the header of a table without a row)
+CLAIMS_COLUMNS = ("claim", "statement", "hurst", "radius", "h_rms", "measured", "ci_low", "ci_high", "paper_value",
+                  "verdict", "untested_because", "reason", "sweep", "loads", "note")
+
+#: why claims.csv has no row
+NO_CLAIM = "no claim of the paper has what it needs in this sweep"
+
 CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
                "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
                "paper's value and the verdict: consistent (the paper's value lies inside the interval, or for a "
@@ -125,6 +133,15 @@ CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per s
                "names the claim). The note says what the measured or paper value is; a second comparison (claim "
                "(b) with the fitted zeta, the slopes of eq. 16 itself) is a row of its own. claims.csv holds "
                "every digit.")
+
+
+def _rows_or_none(path):
+    """The table *path* (:func:`roughcontact.study.files.io.read_csv`), or ``None`` without a path or
+    a row: the claims that need it are then not in the table."""
+    from ..files.io import read_csv
+
+    table = read_csv(path) if path else None
+    return table if table is not None and len(table) else None
 
 
 def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
@@ -138,17 +155,16 @@ def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_
     import pandas as pd
     import xarray as xr
 
-    from ..files.io import read_groups, write_csv
+    from ..files.io import read_csv, read_groups, write_csv
 
-    cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
+    cross = read_csv(crossover_csv)
     with xr.open_dataset(crossover_nc, engine="netcdf4") as reps, xr.open_dataset(zeta_nc, engine="netcdf4") as zds:
-        exponents = pd.read_csv(exponents_csv) if Path(exponents_csv).stat().st_size > 1 else pd.DataFrame()
+        exponents = read_csv(exponents_csv)
         table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), study, read_groups(stiffness_nc), exponents,
                              zds["zeta_replicates"].load(),
-                             adhesion=pd.read_csv(pull_off_csv) if pull_off_csv else None,
-                             stickiness=pd.read_csv(stickiness_csv) if stickiness_csv else None,
+                             adhesion=_rows_or_none(pull_off_csv), stickiness=_rows_or_none(stickiness_csv),
                              tangential=read_groups(tangential_nc) if tangential_nc else None)
-    write_csv(table, out_csv)
+    write_csv(table, out_csv, reason=NO_CLAIM)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
                      first=("claim", "statement", "verdict", "untested_because", "measured", "ci_low", "ci_high",
                             "paper_value", "reason"))

@@ -16,13 +16,80 @@ from ...errors import MergeError
 from . import provenance, runfile
 from .provenance import write_netcdf
 
-__all__ = ["read_run", "write_groups", "read_groups", "write_netcdf", "write_csv"]
+__all__ = ["NO_ROW", "REASON", "empty_reason", "read_csv", "read_run", "reason_path", "read_groups", "write_csv",
+           "write_groups", "write_netcdf"]
 
 
-def write_csv(df, path) -> None:
-    """Atomic CSV write of a DataFrame (no index)."""
+#: the column of an empty table's sidecar (:func:`reason_path`): why the table has no row
+REASON = "reason"
+
+#: why a table has no row when its writer gave no reason
+NO_ROW = "no row to report"
+
+
+def reason_path(path) -> str:
+    """The sidecar of the table *path* that says why it has no row: ``results/crossover.csv`` ->
+    ``results/crossover.reason.csv`` (a one-row CSV with the column :data:`REASON`; absent while
+    the table has rows)."""
+    root, _ = os.path.splitext(str(path))
+    return f"{root}.reason.csv"
+
+
+def write_csv(df, path, *, columns=(), reason: str | None = None) -> None:
+    """Atomic CSV write of a DataFrame (no index), never a one-byte file.
+
+    A table with rows is written as it is (and its reason sidecar, if any, removed). A table
+    without a row is written as its header alone: the DataFrame's own columns, else *columns*
+    (else the one column :data:`REASON`), so that ``pandas.read_csv`` gives an empty table with
+    those columns; and why it is empty, *reason* (else :data:`NO_ROW`), is written to the sidecar
+    :func:`reason_path` (one row, column :data:`REASON`), which :func:`read_csv` puts into the
+    table's ``attrs["reason"]``: the landing page prints it as "not measured, because …".
+    """
+    import pandas as pd
+
+    sidecar = reason_path(path)
+    if len(df):
+        with provenance.atomic_path(path) as tmp:
+            df.to_csv(tmp, index=False)  # shortest round-trip repr: values read back are the values written
+        if os.path.exists(sidecar):
+            os.remove(sidecar)
+        return
+    header = list(df.columns) or list(columns) or [REASON]
     with provenance.atomic_path(path) as tmp:
-        df.to_csv(tmp, index=False)  # shortest round-trip repr: values read back are the values written
+        pd.DataFrame(columns=header).to_csv(tmp, index=False)
+    with provenance.atomic_path(sidecar) as tmp:
+        pd.DataFrame({REASON: [reason or NO_ROW]}).to_csv(tmp, index=False)
+
+
+def read_csv(path, **kwargs):
+    """A table written by :func:`write_csv` (or any CSV): an empty DataFrame for a missing, empty
+    or one-byte file (an older study's empty table); where the table has no row, ``attrs["reason"]``
+    holds why (:func:`reason_path`, or :data:`NO_ROW` without a sidecar). *kwargs* go to
+    ``pandas.read_csv``."""
+    import pandas as pd
+
+    path = str(path)
+    try:
+        table = pd.read_csv(path, **kwargs) if os.path.getsize(path) > 1 else pd.DataFrame()
+    except (FileNotFoundError, pd.errors.EmptyDataError):
+        table = pd.DataFrame()
+    if not len(table):
+        table.attrs[REASON] = empty_reason(path) or NO_ROW
+    return table
+
+
+def empty_reason(path) -> str | None:
+    """Why the table *path* has no row (its sidecar, :func:`reason_path`); ``None`` without one."""
+    import pandas as pd
+
+    sidecar = reason_path(path)
+    if not os.path.exists(sidecar):
+        return None
+    try:
+        rows = pd.read_csv(sidecar, keep_default_na=False)
+    except (pd.errors.EmptyDataError, pd.errors.ParserError):
+        return None
+    return str(rows[REASON].iloc[0]) if REASON in rows and len(rows) else None
 
 
 def read_run(path, expected=None):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import logging
 
-from ..analysis.exponents import exponent_table
+from ..analysis.exponents import empty_reason, exponent_table
 from .plotting import pyplot, save_png
 
 __all__ = ["run_exponents", "curves", "exponents_figure"]
@@ -17,7 +17,7 @@ def run_exponents(study, stiffness_nc, out_csv, out_png):
     from ..files.io import read_groups, write_csv
 
     table = exponent_table(read_groups(stiffness_nc), study)
-    write_csv(table, out_csv)
+    write_csv(table, out_csv, reason=empty_reason(study))
     exponents_figure(table, out_png)
     log.info("local exponents: %d rows", len(table))
 

@@ -99,11 +99,27 @@ class Inputs:
     radius: float
     seed: int
 
+    def zeta_fitted(self, hurst) -> bool:
+        """Whether ζ(H) was fitted at *hurst* (a finite ``zeta`` in the ζ table)."""
+        if "zeta" not in self.zeta or "hurst" not in self.zeta:
+            return False
+        z = dict(zip(self.zeta["hurst"], self.zeta["zeta"])).get(hurst, math.nan)
+        try:
+            return math.isfinite(float(z))
+        except (TypeError, ValueError):
+            return False
+
     def zeta_used(self, hurst):
         """Fitted ζ(H), or 1.7/(H+1) (eq. 13) where none was fitted."""
+        if self.zeta_fitted(hurst):
+            return float(dict(zip(self.zeta["hurst"], self.zeta["zeta"]))[hurst])
+        return float(paper.zeta_estimate(hurst))
 
-        z = dict(zip(self.zeta["hurst"], self.zeta["zeta"])).get(hurst, math.nan)
-        return z if math.isfinite(z) else float(paper.zeta_estimate(hurst))
+    def zeta_label(self, hurst) -> str:
+        """The legend's name of :meth:`zeta_used`: "fitted ζ = …" only where ζ was fitted."""
+        if self.zeta_fitted(hurst):
+            return f"fitted ζ = {self.zeta_used(hurst):.3g}"
+        return f"ζ = 1.7/(H+1) = {self.zeta_used(hurst):.3g} (eq. 13)"
 
 
 def fig1(plt, inputs: Inputs, _key):
@@ -175,13 +191,15 @@ def fig3(plt, inputs: Inputs, key):
                             label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
     if beyond:
         other.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf, exponent=m) / (E * L),
-                   "k-", lw=1.5, label=f"eq. 16, fitted zeta = {zf:.3g}")
+                   "k-", lw=1.5, label=f"eq. 16, {inputs.zeta_label(hurst)}")
     if plastic:
         other.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
                    label="loading tangent (plastic path)")
     body = "Hertz, eq. 9" if m == 2 else f"smooth body m = {m:g}, eq. 7"
-    for zeta, style, text in ((zf, "k-", f"eq. 16, fitted zeta = {zf:.3g}"),
-                              (float(paper.zeta_estimate(hurst)), "k:", "eq. 16, zeta = 1.7/(H+1)")):
+    curves = [(zf, "k-", f"eq. 16, {inputs.zeta_label(hurst)}")]
+    if inputs.zeta_fitted(hurst):  # else the same curve: eq. 13 is what eq. 16 already uses
+        curves.append((float(paper.zeta_estimate(hurst)), "k:", "eq. 16, ζ = 1.7/(H+1) (eq. 13)"))
+    for zeta, style, text in curves:
         ax.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zeta, exponent=m) / (E * L),
                 style, lw=1.5 if style == "k-" else 1, label=text)
     ax.plot(Fg, paper.body_stiffness(Fg * E * L**2, radius=radius, e_star=E, exponent=m) / (E * L), "--", color="C0",
@@ -235,26 +253,47 @@ def fig4(plt, inputs: Inputs, _key):
         ax.plot(r, zz)
         ax.set(title=title, xlabel="r")
     axes[0].set_ylabel("z")
-    fig.suptitle(f"R = {R0:g}, H = {H0:g}, h_rms = {h0:g}, zeta = {inputs.zeta_used(H0):.3g}", fontsize=9)
+    fig.suptitle(f"R = {R0:g}, H = {H0:g}, h_rms = {h0:g}, {inputs.zeta_label(H0)}", fontsize=9)
     fig.tight_layout()
     return fig
 
 
 def zeta(plt, inputs: Inputs, _key):
-    """ζ(H) with its bootstrap interval against 1.7/(H+1) (eq. 13)."""
+    """ζ(H) with its bootstrap interval against 1.7/(H+1) (eq. 13). The legend names the curves
+    only (the fit's source in a few words); where ζ was not fitted at some H, a short note in the
+    axes says so (the full reason is the ``source`` column of zeta.csv)."""
     import numpy as np
 
-    d = inputs.zeta.sort_values("hurst")
+    d = inputs.zeta.sort_values("hurst") if "hurst" in inputs.zeta else inputs.zeta
+    fitted = d[np.isfinite(d["zeta"].astype(float))] if len(d) else d
     fig, ax = plt.subplots(figsize=(5.5, 4))
-    yerr = np.array([d["zeta"] - d["zeta_ci_low"], d["zeta_ci_high"] - d["zeta"]])
-    ax.errorbar(d["hurst"], d["zeta"], yerr=np.nan_to_num(np.abs(yerr)), fmt="o", capsize=3, color="C3",
-                label=f"fit ({d['source'].iloc[0]}), {100 * d['confidence'].iloc[0]:.0f}% bootstrap CI")
+    if len(fitted):
+        yerr = np.array([fitted["zeta"] - fitted["zeta_ci_low"], fitted["zeta_ci_high"] - fitted["zeta"]])
+        sources = sorted({_zeta_source(s) for s in fitted["source"]})
+        ax.errorbar(fitted["hurst"], fitted["zeta"], yerr=np.nan_to_num(np.abs(yerr)), fmt="o", capsize=3,
+                    color="C3", label=f"fit ({', '.join(sources)}), "
+                                      f"{100 * fitted['confidence'].iloc[0]:.0f}% bootstrap CI")
     hg = np.linspace(0.05, 1.95, 200)
     ax.plot(hg, paper.zeta_estimate(hg), "k-", label="1.7/(H+1), eq. 13")
-    ax.set(xlabel="H", ylabel="zeta(H)", xlim=(0, 2) if d["hurst"].max() > 1 else (0, 1))
-    ax.legend(fontsize=7)
+    top = float(d["hurst"].max()) if len(d) else 1.0
+    ax.set(xlabel="H", ylabel="zeta(H)", xlim=(0, 2) if top > 1 else (0, 1))
+    missing = d[~d.index.isin(fitted.index)] if len(d) else d
+    if len(missing):
+        why = sorted({_zeta_source(s) for s in missing["source"]})
+        hs = ", ".join(f"{h:g}" for h in missing["hurst"])
+        ax.text(0.03, 0.03, f"ζ not fitted at H = {hs}: {'; '.join(why)} (zeta.csv)", transform=ax.transAxes,
+                fontsize=7, va="bottom", ha="left", wrap=True, color="0.3")
+    ax.legend(fontsize=7, loc="upper right")
     fig.tight_layout()
     return fig
+
+
+def _zeta_source(text) -> str:
+    """A few words of zeta.csv's ``source`` (its text before the first colon or parenthesis):
+    where the fit's points came from, or why there is none."""
+    text = str(text)
+    cut = min((i for i in (text.find(":"), text.find(" (")) if i > 0), default=len(text))
+    return text[:cut].strip()
 
 
 def collapse(plt, inputs: Inputs, _key):
@@ -301,11 +340,7 @@ DRAW = {"fig1": fig1, "fig2": fig2, "fig3": fig3, "fig4": fig4, "zeta": zeta, "c
 
 def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs):
     """Draw every figure of :func:`figure_specs` to *outputs* (paths, in the same order)."""
-    from pathlib import Path
-
-    import pandas as pd
-
-    from ..files.io import read_groups
+    from ..files.io import read_csv, read_groups
     from .plotting import pyplot, save_png
 
     plt = pyplot()
@@ -317,8 +352,8 @@ def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs):
         raise ValueError(f"make_figures got {len(paths)} output paths for {len(specs)} figures")
     finite = [r for r in study.radius if math.isfinite(r)]
     inputs = Inputs(
-        study=study, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=pd.read_csv(zeta_csv),
-        crossover=pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame(),
+        study=study, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=read_csv(zeta_csv),
+        crossover=read_csv(crossover_csv),
         hurst=_pick(study.hurst, 0.7), h_rms=_pick(study.h_rms, 9e-3),
         radius=_pick(finite, 0.5) if finite else 0.5, seed=study.seeds[0])
     for spec, path in zip(specs, paths):

@@ -194,7 +194,8 @@ def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv
     predicted = read_groups(spectrum_file)
     table = measured_scorecard(read_groups(merged_file), predicted, name=name,
                                min_cells=study.fit.zeta.min_cells, fit=study.fit.zeta)
-    write_csv(table, out_csv)
+    write_csv(table, out_csv, reason=f"no load of the scan {name} has at least {study.fit.zeta.min_cells} contact "
+                                     "cells and a model's prediction")
     spectrum = predicted.get("spectrum")
     note = range_note(table, spectrum.attrs if spectrum is not None else {})
     write_html_table(table, out_html, title=f"Model scorecard of the scan {name}",

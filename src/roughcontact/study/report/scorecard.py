@@ -10,7 +10,7 @@ import numpy as np
 from ...models import scorecard as registry
 from ..analysis import decision
 from ..analysis import not_modelled as unmodelled
-from ..analysis.scorecard import scorecard
+from ..analysis.scorecard import empty_reason, scorecard
 from ..config import axes
 from ..config.settings import StudySettings
 from ..files import provenance
@@ -111,9 +111,10 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
     table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error)
     attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
-    write_csv(table, out_csv)
+    write_csv(table, out_csv, reason=empty_reason(study))
     write_groups(out_nc, curves, attrs)
-    write_html_table(table, out_html, title="Model scorecard", lead=scorecard_lead(table),
+    absent = "" if len(table) else f"Not measured, because {empty_reason(study)}. "
+    write_html_table(table, out_html, title="Model scorecard", lead=absent + scorecard_lead(table),
                      above=decision.matrix_html(table, list(registry.models())),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
                                       "systematic_low_total_verdict", "systematic_high_total_verdict"),

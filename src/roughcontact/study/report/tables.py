@@ -140,17 +140,14 @@ TABLE_PAGES = {
 
 def csv_to_html(csv_path, html_path, table: str) -> None:
     """The CSV table *csv_path* as the report's page *html_path* (:func:`write_html_table`,
-    title and lead of :data:`TABLE_PAGES` [*table*]); the CSV stays as it is."""
-    import pandas as pd
+    title and lead of :data:`TABLE_PAGES` [*table*]); the CSV stays as it is. A table without a row
+    says why in its lead ("Not measured, because …": :func:`roughcontact.study.files.io.read_csv`)."""
+    from ..files.io import REASON, read_csv
 
-    rows = pd.read_csv(csv_path, keep_default_na=False, na_values=[""]) if _has_rows(csv_path) else pd.DataFrame()
+    rows = read_csv(csv_path, keep_default_na=False, na_values=[""])
     title, lead = TABLE_PAGES[table]
+    if not len(rows):
+        lead = f"Not measured, because {rows.attrs[REASON]}. {lead}"
     verdicts = tuple(c for c in rows.columns if str(c) == "verdict" or str(c).endswith("_verdict")
                      or str(c).startswith("verdict_"))
     write_html_table(rows, html_path, title=title, lead=lead, verdict_columns=verdicts)
-
-
-def _has_rows(path) -> bool:
-    import os
-
-    return os.path.getsize(path) > 1

@@ -15,7 +15,6 @@ Forces ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
 from __future__ import annotations
 
 import logging
-from pathlib import Path
 
 import numpy as np
 
@@ -35,9 +34,9 @@ MAX_PANELS = 6
 
 
 def _crossover(crossover_csv):
-    import pandas as pd
+    from ..files.io import read_csv
 
-    return pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
+    return read_csv(crossover_csv)
 
 
 def run_tangential(study, run_files, crossover_csv, out_nc, out_csv, out_html) -> None:
@@ -52,7 +51,7 @@ def run_tangential(study, run_files, crossover_csv, out_nc, out_csv, out_html) -
         grid_length=study.grid.length, e_star=study.e_star, seeds=list(study.seeds))
     write_groups(out_nc, groups, attrs)
     table = estimate.per_load_table(groups, _crossover(crossover_csv), study)
-    write_csv(table, out_csv)
+    write_csv(table, out_csv, reason="no tangential run has a full-stick stiffness (no sphere with a poisson ratio)")
     csv_to_html(out_csv, out_html, "tangential")
     log.info("merged the tangential runs (%s) into %s; %d rows in %s", ", ".join(groups), out_nc, len(table), out_csv)
 

@@ -113,6 +113,15 @@ def _zeta_stats(points, hurst):
     return math.exp(ln_zeta), slope
 
 
+#: the columns of zeta.csv (the header of a table without a row: a sweep without generated surfaces)
+ZETA_COLUMNS = ("hurst", "zeta", "zeta_ci_low", "zeta_ci_high", "zeta_estimate", "exponent", "exponent_ci_low",
+                "exponent_ci_high", "exponent_theory", "n_points", "n_seeds", "force_min", "force_max", "confidence",
+                "source", "window")
+
+#: why zeta.csv has no row
+NO_HURST = "the sweep has no generated surface (hurst is empty), so no fit of zeta(H)"
+
+
 def fit_zeta(groups, study):
     """ζ(H) from eq. 11 (exponent fixed to 1/(H+1)) and the free exponent, with
     bootstrap-over-seeds confidence intervals.  Returns (DataFrame, Dataset).
@@ -165,9 +174,9 @@ def fit_zeta(groups, study):
                        + (f"A/L^2 <= {zc.max_area_fraction}" if flat
                           else f"F <= {zc.sphere_max_force_ratio} F_tr(eq. 17, zeta = 1.7/(H+1))")),
         })
-    df = pd.DataFrame(rows)
+    df = pd.DataFrame(rows) if rows else pd.DataFrame(columns=ZETA_COLUMNS)
     zds = df.set_index("hurst").to_xarray()
-    zds["zeta_replicates"] = (("hurst", "replicate"), np.array(replicates), {
+    zds["zeta_replicates"] = (("hurst", "replicate"), np.array(replicates).reshape(len(rows), n_boot), {
         "long_name": "zeta of each bootstrap resample of the seeds (the same resamples for every H)",
         "units": "1"})
     zds.attrs.update(provenance.provenance_attrs(
@@ -179,6 +188,6 @@ def fit_zeta(groups, study):
 def run_fit_zeta(study, stiffness_nc, out_csv, out_nc):
     """``fit_zeta`` rule: stiffness.nc -> zeta.csv and zeta.nc (eq. 11)."""
     df, zds = fit_zeta(read_groups(stiffness_nc), study)
-    write_csv(df, out_csv)
+    write_csv(df, out_csv, reason=NO_HURST)
     write_netcdf(zds, out_nc)
     log.info("zeta(H):\n%s", df.to_string())
