@@ -198,7 +198,7 @@ def test_axis_off_its_paper_value_adds_only_its_runs(with_axis):
 #: the smallest largest relative change of k the worn runs must show against the unworn runs of
 #: the same surfaces, at the resolved loads of each combination (65², H 0.7, h_rms 0.02, plateau
 #: 1.0, seeds 0 and 1, 4 resolved loads each: measured 20.6 % at R 0.5 and 34.8 % at R 1.0,
-#: 2026-11-29 03:40 UTC; the valleys cut instead, as the example did before, exactly 0)
+#: 2026-11-29 03:37 UTC; the valleys cut instead, as the example did before, exactly 0)
 WORN_CHANGE = 0.02
 
 
@@ -248,8 +248,8 @@ def test_example_claim_has_a_row_per_sphere_combination(with_axis):
 
 def test_example_claim_gives_verdicts(with_axis):
     """At its resolved loads (4 or 5 per combination) k rises by 44-53 % at the least, its interval
-    far above 0: every row of the guide's claim is decided, consistent (over every load, the one- and
-    two-cell loads would leave it untested)."""
+    far above 0: every row of the guide's claim is decided, consistent (over every load, loads carried
+    by one or two cells, with equal k, could decide it)."""
     claims = _table(with_axis, "claims")
     verdicts = claims[claims["claim"] == CLAIM]["verdict"].tolist()
     assert verdicts == ["consistent"] * 4, f"verdicts of ({CLAIM}): {verdicts}"
