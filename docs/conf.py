@@ -11,7 +11,9 @@ from pathlib import Path
 DOCS = Path(__file__).resolve().parent
 sys.path.insert(0, str(DOCS / "_ext"))
 sys.path.insert(0, str(DOCS.parent / "src"))
+sys.path.insert(0, str(DOCS))
 
+import make_module_table  # noqa: E402
 import roughcontact  # noqa: E402
 
 project = "roughcontact"
@@ -30,7 +32,8 @@ extensions = [
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "myst-nb", ".ipynb": "myst-nb"}
-exclude_patterns = ["_build", "**.ipynb_checkpoints", "_ext"]
+# the module table is a part of the package guide (included there), not a page of its own
+exclude_patterns = ["_build", "**.ipynb_checkpoints", "_ext", str(make_module_table.GENERATED)]
 myst_enable_extensions = ["dollarmath", "colon_fence"]
 myst_heading_anchors = 3
 suppress_warnings = ["myst.header"]
@@ -57,3 +60,9 @@ html_theme_options = {
 }
 html_static_path = ["_static"]
 html_css_files = ["wide.css"]
+
+
+def setup(app):
+    """The package guide's table of every module (``docs/make_module_table.py``), written into
+    ``_generated/`` when the build starts, before any page is read."""
+    app.connect("builder-inited", make_module_table.on_builder_inited)

@@ -203,6 +203,7 @@ def test_claim_p_needs_two_hurst_exponents():
     assert row["verdict"] == "untested", row
 
 
+@pytest.mark.workflow
 def test_workflow_end_to_end(tmp_path):
     """A smooth and a rough sphere with and without adhesion through snakemake, and a stickiness
     sweep of two flat surfaces at two numbers: the pull-off table, the merged file, the figures,

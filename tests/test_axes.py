@@ -20,6 +20,9 @@ from roughcontact.study.config import resolve as config
 from roughcontact.study.files import io as study_io
 from roughcontact.study.runs import naming as runs
 
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
+
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = {
     "grid": {"n": 65, "length": 1.0}, "e_star": 1.0, "hurst": [0.7], "radius": [0.5], "h_rms": [9.0e-3],

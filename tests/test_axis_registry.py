@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
+from examples import in_order, loaded, scoped_registry  # noqa: F401 -- scoped_registry: every test in its own registries
 
 from roughcontact import errors
 from roughcontact.cli import build_parser
@@ -19,15 +21,14 @@ BASE = {"hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 2}
 @pytest.fixture
 def toy_axis():
     """The package guide's worked example: a roll-off exponent of the spectrum, passed to the
-    surface generator (role ``roughness``), paper value 0 (none); removed afterwards."""
+    surface generator (role ``roughness``), paper value 0 (none); registered in the test's own
+    registry (:func:`examples.scoped_registry`)."""
     spec = axes.register(axes.Axis(
         "rolloff_power", "rp", "power of the roll-off", "1", "power of the roll-off plateau (0: flat plateau)",
         {"type": "number", "minimum": 0, "maximum": 4}, "roughness", paper=0.0,
         flag_help="power of the roll-off plateau (default 0)"))
     schema._package_schema.cache_clear()
-    yield spec
-    del axes.AXES[spec.name]
-    schema._package_schema.cache_clear()
+    return spec
 
 
 def test_registered_axis_is_a_config_key_with_its_default(toy_axis):
@@ -82,15 +83,46 @@ def test_paper_setting_keeps_the_run_hash(toy_axis):
     assert "rolloff_power" not in record, f"record: {record}"
 
 
+#: the registry's own axes of the sphere runs' merged files, in the order of their dimensions
+SPHERE_AXES = ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness", "work_of_adhesion")
+
+
 def test_registry_order_is_the_merged_dimension_order():
-    assert runs.AXES["sphere"] == ("hurst", "radius", "exponent", "h_rms", "rolloff", "cutoff", "hardness",
-                                   "work_of_adhesion"), \
-        f"sphere dimensions: {runs.AXES['sphere']}"
+    """The built-in axes lead the sphere dimensions, in order; an axis of a further module follows."""
+    assert runs.AXES["sphere"][:len(SPHERE_AXES)] == SPHERE_AXES, f"sphere dimensions: {runs.AXES['sphere']}"
 
 
 def test_flat_surfaces_do_not_sweep_the_body_axes():
-    assert runs.AXES["flat"] == ("hurst", "h_rms", "rolloff", "cutoff", "hardness", "work_of_adhesion"), \
-        f"flat dimensions: {runs.AXES['flat']}"
+    flat = runs.AXES["flat"]
+    assert in_order(("hurst", "h_rms", "rolloff", "cutoff", "hardness", "work_of_adhesion"), flat) \
+        and not {"radius", "exponent"} & set(flat), f"flat dimensions: {flat}"
+
+
+def test_an_axis_of_a_further_module_follows_the_builtins(toy_axis):
+    assert runs.AXES["sphere"][len(SPHERE_AXES):][-1] == "rolloff_power", f"sphere dimensions: {runs.AXES['sphere']}"
+
+
+def test_the_axis_example_loads_twice():
+    """Loading the guide's axis twice (as a test run after another, or with the example copied
+    into the package) is no error: each load has its own registry."""
+    for _ in range(2):
+        with loaded("axis_example.py", axes.AXES, "plateau"):
+            assert "plateau" in axes.AXES
+
+
+def test_the_axis_example_cuts_the_touching_side():
+    """Heights grow from the half-space towards the indenter and the lowest touch first
+    (:mod:`roughcontact.bem.contact`): the worn roughness raises every height below
+    ``−plateau·h_rms`` to it and leaves the others as they are, exactly."""
+    from roughcontact.surfaces import self_affine
+
+    heights = self_affine(64, hurst=0.7, h_rms=0.02, length=1.0, seed=0)
+    run = type("Run", (), {"h_rms": 0.02})()
+    with loaded("axis_example.py", axes.AXES, "plateau") as example:
+        worn = example.truncate(heights, 1.5, run)
+    below = heights < -1.5 * 0.02
+    assert below.any() and np.array_equal(worn[below], np.full(below.sum(), -1.5 * 0.02)), "the summits are not cut"
+    assert np.array_equal(worn[~below], heights[~below]), "heights above the plateau changed"
 
 
 @pytest.mark.parametrize("extra, recorded", [({}, "61a64f8073b3e8ec"),

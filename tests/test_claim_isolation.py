@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import xarray as xr
+from examples import scoped_registry  # noqa: F401 -- every test in its own registries
 
 from roughcontact.models import paper
 from roughcontact.study.config import axes, schema
@@ -73,10 +74,10 @@ def _rise(combination):
 
 @pytest.fixture
 def failing_claim():
-    claims.claims()
-    claim = register(Claim("x", "the ensemble-mean stiffness rises with the load", estimate=_rise))
-    yield claim
-    del claims.CLAIMS["x"]
+    """Claim (x) of :func:`_rise`, in the test's own registry: in place of any claim x of the package
+    (the guide's example, copied in)."""
+    claims.CLAIMS.pop("x", None)
+    return register(Claim("x", "the ensemble-mean stiffness rises with the load", estimate=_rise))
 
 
 def test_failing_combination_has_an_error_row(failing_claim):
@@ -98,10 +99,7 @@ def test_other_combination_keeps_its_row(failing_claim):
 def test_other_claims_rows_are_unchanged(failing_claim):
     table = _table(_groups(), _study())
     del claims.CLAIMS["x"]
-    try:
-        without_x = _table(_groups(), _study())
-    finally:
-        register(failing_claim)
+    without_x = _table(_groups(), _study())
     others = table[table["claim"] != "x"].reset_index(drop=True)
     pd.testing.assert_frame_equal(others, without_x, rtol=1e-12)
 
@@ -113,12 +111,9 @@ def test_failing_claim_is_logged_by_its_letter(failing_claim, caplog):
 
 
 def test_whole_study_claim_that_raises_has_one_error_row():
-    claims.claims()
+    claims.CLAIMS.pop("y", None)
     register(Claim("y", "a claim that fails", lambda inputs: 1 / 0))
-    try:
-        table = _table(_groups(), _study())
-    finally:
-        del claims.CLAIMS["y"]
+    table = _table(_groups(), _study())
     assert table.query("claim == 'y'")["verdict"].tolist() == ["error"], table.query("claim == 'y'").to_dict("records")
 
 
@@ -133,13 +128,10 @@ def test_error_verdict_is_coloured_in_the_html_table(failing_claim):
 
 def test_each_combination_is_estimated_on_its_own_seed_force_slice():
     """The guide's claim on a two-combination study: one row per radius (no transpose error)."""
-    claims.claims()
+    claims.CLAIMS.pop("z", None)
     register(Claim("z", "k rises", estimate=lambda c: row("z", "k", float(c.data["stiffness"].shape[0]), 0, 0, 0,
                                                           "consistent: shape", **c.axes)))
-    try:
-        rows = _table(_groups(), _study()).query("claim == 'z'")
-    finally:
-        del claims.CLAIMS["z"]
+    rows = _table(_groups(), _study()).query("claim == 'z'")
     assert rows["measured"].tolist() == [len(SCALES)] * len(RADII), rows.to_dict("records")
 
 
@@ -148,14 +140,13 @@ def test_each_combination_is_estimated_on_its_own_seed_force_slice():
 # ---------------------------------------------------------------------------------------------
 @pytest.fixture
 def toy_axis():
-    """An optional axis of the roughness with paper value 0 and no claim of its own."""
+    """An optional axis of the roughness with paper value 0 and no claim of its own, in the test's
+    own registry."""
     spec = axes.register(axes.Axis(
         "rolloff_power", "rp", "power of the roll-off", "1", "power of the roll-off plateau (0: flat plateau)",
         {"type": "number", "minimum": 0, "maximum": 4}, "roughness", paper=0.0, flag_help="power"))
     schema._package_schema.cache_clear()
-    yield spec
-    del axes.AXES[spec.name]
-    schema._package_schema.cache_clear()
+    return spec
 
 
 @pytest.fixture

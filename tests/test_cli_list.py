@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 
 import pytest
+from examples import loaded, scoped_registry  # noqa: F401 -- scoped_registry: every test in its own registries
 
 from roughcontact.cli import main
 from roughcontact.models import scorecard
@@ -59,6 +60,20 @@ def test_models_json_has_declared_axes(capsys):
 def test_claims_one_line_each(capsys):
     names = [line.split("\t")[0] for line in _lines(capsys, "claims")]
     assert names == list(claims()), f"claims listed: {names}"
+
+
+@pytest.mark.parametrize("example, registry, kind, key", [("axis_example.py", axes.AXES, "axes", "plateau"),
+                                                           ("model_example.py", scorecard.MODELS, "models", "smooth_body"),
+                                                           ("claim_example.py", None, "claims", "x")])
+def test_a_registered_example_is_listed_last_of_its_module(capsys, example, registry, kind, key):
+    """The guide's example, loaded: listed once, after the entries the package had (claims: in letter order)."""
+    from roughcontact.study.claims import CLAIMS
+
+    before = [item["name"] for item in _json(capsys, kind) if item["name"] != key]
+    with loaded(example, CLAIMS if registry is None else registry, key):
+        names = [item["name"] for item in _json(capsys, kind)]
+    expected = sorted(before + [key]) if kind == "claims" else before + [key]
+    assert names == expected, f"roughcontact list {kind}: {names}"
 
 
 def test_unknown_registry_is_a_usage_error(capsys):

@@ -138,6 +138,7 @@ def test_the_combined_grid_error_has_one_row_per_load():
     assert len(combined_grid_error(*_companion_tables())) == 2
 
 
+@pytest.mark.workflow
 def test_pipeline_writes_the_fine_reference(tmp_path):
     (tmp_path / "fine.yaml").write_text(yaml.safe_dump(_with(grid={"fine_to": 5e-5})))
     r = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(REPO / "Snakefile"), "-d", str(tmp_path),

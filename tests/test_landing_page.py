@@ -12,6 +12,9 @@ from pathlib import Path
 
 import pytest
 
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
+
 ROOT = Path(__file__).resolve().parents[1]
 _COMMON = "grid: {n: 33, length: 1.0, coarse: null}\nsolver: {tol: 1.0e-8}\nfit: {zeta: {min_cells: 4, bootstrap: 50}}\n"
 SWEEPS = {

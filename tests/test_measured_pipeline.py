@@ -30,6 +30,9 @@ from roughcontact.study.analysis.measured_merge import merge_surface
 from roughcontact.study.runs import measured
 from roughcontact.study.files.io import read_groups
 
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
+
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = Path(os.environ.get("ROUGHCONTACT_TOPOGRAPHIES", ROOT.parent / "shared" / "topographies"))
 UNITS = {"length": "um", "e_star": "GPa"}

@@ -8,6 +8,9 @@ import pytest
 
 from test_slurm import REPO, _snakemake, _write_config  # noqa: F401
 
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
+
 
 def _rerun_merge(d):
     cmd = [sys.executable, "-m", "snakemake", "results/stiffness.nc", "-s", str(REPO / "Snakefile"),

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
-from examples import loaded
+from examples import in_order, loaded, scoped_registry  # noqa: F401 -- scoped_registry: every test in its own registries
 from test_scorecard import CFG, FORCE, HURST, ZETA, _groups
 
 from roughcontact.models import paper
@@ -22,8 +22,7 @@ from roughcontact.surfaces.spectrum_fit import fit_spectrum
 @pytest.fixture
 def hertz_model():
     """The package guide's worked example (``docs/guide/extending/model_example.py``), the smooth
-    body (eq. 9 for the paraboloid): loaded as its module, removed afterwards."""
-    registry.models()   # the built-in models first
+    body (eq. 9 for the paraboloid): loaded as its module in the test's own registry."""
     with loaded("model_example.py", registry.MODELS, "smooth_body"):
         yield registry.MODELS["smooth_body"]
 
@@ -33,10 +32,26 @@ def hertz(force, s: registry.Surface):
     return paper.hertz_stiffness(force, radius=s.radius, e_star=s.e_star)
 
 
+#: the package's own models, in the order of the tables and figures
+PACKAGE_MODELS = ("eq16_paper", "eq16_fitted", "eq16_law", "contact_scale", "contact_scale_h", "contact_scale_tail",
+                  "greenwood_tripp", "mdr", "persson")
+
+
 def test_registry_order():
-    assert list(registry.models()) == ["eq16_paper", "eq16_fitted", "eq16_law", "contact_scale", "contact_scale_h",
-                                       "contact_scale_tail", "greenwood_tripp", "mdr", "persson"], \
-        f"models: {list(registry.models())}"
+    """The package's models lead, in order; a module added to the package follows them."""
+    names = list(registry.models())
+    assert names[:len(PACKAGE_MODELS)] == list(PACKAGE_MODELS), f"models: {names}"
+
+
+def test_a_model_of_a_further_module_follows_the_package_models(hertz_model):
+    names = list(registry.models())
+    assert in_order(PACKAGE_MODELS + ("smooth_body",), names), f"models: {names}"
+
+
+def test_the_model_example_loads_twice():
+    for _ in range(2):
+        with loaded("model_example.py", registry.MODELS, "smooth_body"):
+            assert "smooth_body" in registry.models()
 
 
 def test_second_registration_of_a_name_is_an_error():

@@ -29,6 +29,9 @@ from roughcontact.study.runs import naming as runs
 from roughcontact.study.runs import jobs as settings
 from roughcontact.study.report.summary import NO_RECOMMENDATION
 
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
+
 ROOT = Path(__file__).resolve().parents[1]
 TINY = ROOT / "presets/tiny.yaml"
 

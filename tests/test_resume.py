@@ -12,10 +12,14 @@ import time
 from base64 import urlsafe_b64decode
 from pathlib import Path
 
+import pytest
 import yaml
 
 from merged import assert_same_numbers
 from test_slurm import REPO, TINY, _snakemake
+
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
 
 CFG = copy.deepcopy(TINY)
 CFG["seeds"] = 5  # 10 runs

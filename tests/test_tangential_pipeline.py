@@ -14,6 +14,9 @@ import yaml
 from roughcontact.study.analysis.statistics import VERDICTS
 from roughcontact.study.files.io import read_groups
 
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
+
 REPO = Path(__file__).resolve().parents[1]
 
 CONFIG = {

@@ -96,7 +96,8 @@ def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = 
     directory); the resolved config holds absolute paths
     (:func:`roughcontact.study.config.measured.resolve_inputs`).
     """
-    derived = "coarse" not in ((raw or {}).get("grid") or {}) if isinstance(raw, dict) else False
+    grid = raw.get("grid") if isinstance(raw, dict) else None
+    derived = not (isinstance(grid, dict) and "coarse" in grid)   # a bad grid fails the schema below
     cfg = _resolve(raw, schema, base_dir)
     if cfg["grid"].get("coarse") is not None and cfg.get("hurst") and any(math.isfinite(r) for r in cfg["radius"]):
         try:
