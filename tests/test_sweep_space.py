@@ -209,6 +209,7 @@ EXAMPLES = [
 DRAWN = int(os.environ.get("ROUGHCONTACT_SWEEP_EXAMPLES", "1"))
 
 
+@pytest.mark.workflow
 @settings(max_examples=DRAWN, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture,
                                  HealthCheck.data_too_large])
@@ -319,6 +320,7 @@ def test_the_presets_run_by_default_cover_a_shape_each():
     assert len(set(shapes)) == len(PRESETS)
 
 
+@pytest.mark.workflow
 @pytest.mark.parametrize("preset", _presets(), ids=lambda p: p.stem)
 def test_preset_runs_to_a_report(tmp_path, preset):
     cfg = yaml.safe_load(preset.read_text())
