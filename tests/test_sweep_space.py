@@ -236,14 +236,17 @@ SMALL = {"n": 33, "coarse": 17, "fine": 65, "realization_of": 65}
 
 
 def shrink(cfg: dict, base_dir: Path) -> dict:
-    """*cfg* (a preset) at a size for a test: 33² (its companions 17² and 65², the surfaces of 65²
-    where it presses another grid's), two seeds, at most two values per axis (a sphere and the flat
+    """*cfg* (a preset) at a size for a test: 33² (65² where a cutoff needs it; its companions 17² and
+    65², the surfaces of 65² where it presses another grid's), two seeds, at most two values per axis (a sphere and the flat
     surface where it has both), at most four loads per branch, 50 bootstrap resamples; the
     stickiness section on 64² with two seeds; its scans' paths absolute."""
     cfg = copy.deepcopy(cfg)
     grid = cfg.setdefault("grid", {}) if "topography" not in cfg else cfg.get("grid", {})
     if "topography" not in cfg:
-        grid["n"] = SMALL["n"]
+        # 33², or 65² where a cutoff is shorter than 2 cells of 33² (the shortest wavelength a grid holds)
+        length = float(grid.get("length", 1.0))
+        cutoffs = [float(c) for c in cfg.get("cutoff") or [] if c is not None]
+        grid["n"] = SMALL["n"] if all(c >= 2 * length / SMALL["n"] for c in cutoffs) else SMALL["fine"]
         for key in ("coarse", "fine", "realization_of"):
             if grid.get(key) is not None:
                 grid[key] = SMALL[key]
