@@ -5,12 +5,12 @@ because …" where a table has no row, and no console error."""
 from __future__ import annotations
 
 import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from browser import needs_chromium, report_page
 
 #: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
 pytestmark = pytest.mark.workflow
@@ -32,10 +32,6 @@ EXPECTED = {
     "flat-only": ["Not measured, because the sweep has no sphere"],
     "adhesive": [],
 }
-
-
-def _chromium():
-    return next((p for p in map(shutil.which, ("chromium", "chromium-browser", "google-chrome")) if p), None)
 
 
 def _snakemake(args, cwd):
@@ -65,23 +61,14 @@ def test_the_summary_holds_the_answer(report):
         assert phrase in text, (name, phrase)
 
 
-@pytest.mark.skipif(_chromium() is None, reason="no Chromium on this machine (.ci/run installs it)")
+@needs_chromium
 def test_the_answer_is_on_screen_as_the_report_opens(report):
-    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright (the test extra) is not installed")
     name, work = report
-    errors = []
-    with sync_api.sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=_chromium(), args=["--no-sandbox"])
-        try:
-            page = browser.new_page(viewport={"width": 1400, "height": 1000})
-            page.on("console", lambda msg: errors.append(msg.text) if msg.type == "error" else None)
-            page.goto((work / "results/report.html").resolve().as_uri())
-            answer = page.locator(".rc-summary .rc-answer")
-            answer.wait_for(timeout=20_000)
-            top = answer.evaluate("p => p.getBoundingClientRect().top")
-            text = page.locator(".rc-summary").inner_text()
-        finally:
-            browser.close()
+    with report_page(work / "results/report.html", viewport={"width": 1400, "height": 1000}) as (page, errors):
+        answer = page.locator(".rc-summary .rc-answer")
+        answer.wait_for(timeout=20_000)
+        top = answer.evaluate("p => p.getBoundingClientRect().top")
+        text = page.locator(".rc-summary").inner_text()
     assert 0 <= top < 1000, f"{name}: the answer is not on screen as the page opens (top at {top} px)"
     assert "This study:" in text, name
     for phrase in EXPECTED[name]:

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import hashlib
 import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -20,6 +19,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
+from browser import needs_chromium, report_page
 
 ST = pytest.importorskip("SurfaceTopography")
 
@@ -468,16 +468,11 @@ def test_check_config_resolves_paths_against_the_config_file(tmp_path, monkeypat
     assert "measured: 1 scan(s) x 2 radii x their tiles" in capsys.readouterr().out
 
 
-def _chromium() -> str | None:
-    return shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
-
-
-@pytest.mark.skipif(_chromium() is None, reason="no Chromium on this machine (.ci/run installs it)")
+@needs_chromium
 def test_measured_report_is_its_own_and_loads_without_errors(pipeline):
     """The measured report under its own name (the study's report.html untouched): in headless
     Chromium its landing page describes the scan, its scorecard table opens with one row per row of
     the CSV, and the console stays free of errors."""
-    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright (the test extra) is not installed")
     work, run_dir, _, _ = pipeline
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
     proc = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--configfile",
@@ -486,28 +481,19 @@ def test_measured_report_is_its_own_and_loads_without_errors(pipeline):
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     assert not (run_dir / "results/report.html").exists(), "the measured report overwrote the study's name"
     rows = len(pd.read_csv(run_dir / "results/measured_scorecard/scan.csv"))
-    errors = []
-    with sync_api.sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=_chromium(), args=["--no-sandbox"])
-        try:
-            page = browser.new_page()
-            page.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
-            page.on("pageerror", lambda error: errors.append(str(error)))
-            page.goto((run_dir / MEASURED_REPORT).resolve().as_uri())
-            landing = page.inner_text("body")
-            for link in page.locator("a[href^='javascript:']").all():   # a link to a missing result errs
-                link.click()
-            page.goto((run_dir / MEASURED_REPORT).resolve().as_uri())
-            page.get_by_text("Results", exact=True).first.click()
-            page.get_by_text("Measured: scan", exact=True).first.click()
-            # the "eye" button of the results table's row "model scorecard" shows the page
-            page.locator("tr", has_text="model scorecard").first.locator("a[iconname=eye]").click()
-            page.wait_for_function("document.querySelector('iframe') !== null", timeout=20_000)
-            cells = page.frame_locator("iframe").locator("tbody tr")
-            cells.first.wait_for(timeout=20_000)
-            count = cells.count()
-        finally:
-            browser.close()
+    with report_page(run_dir / MEASURED_REPORT) as (page, errors):
+        landing = page.inner_text("body")
+        for link in page.locator("a[href^='javascript:']").all():   # a link to a missing result errs
+            link.click()
+        page.goto((run_dir / MEASURED_REPORT).resolve().as_uri())
+        page.get_by_text("Results", exact=True).first.click()
+        page.get_by_text("Measured: scan", exact=True).first.click()
+        # the "eye" button of the results table's row "model scorecard" shows the page
+        page.locator("tr", has_text="model scorecard").first.locator("a[iconname=eye]").click()
+        page.wait_for_function("document.querySelector('iframe') !== null", timeout=20_000)
+        cells = page.frame_locator("iframe").locator("tbody tr")
+        cells.first.wait_for(timeout=20_000)
+        count = cells.count()
     assert "Scan scan" in landing and "H = []" not in landing, f"landing page: {landing[:400]!r}"
     assert count == rows, f"{count} rows on the scorecard page for {rows} rows of the CSV"
     assert errors == [], f"console errors: {errors}"

@@ -6,7 +6,6 @@ from __future__ import annotations
 import dataclasses
 import math
 import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -15,6 +14,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import xarray as xr
+from browser import needs_chromium, report_page
 from workflow_paths import LOG_PATTERN, RUN_PATTERN
 
 from roughcontact import cli
@@ -203,11 +203,7 @@ def test_model_scorecard(run):
     assert figures == sorted(f"{runs.combo_name(c)}.png" for c in spheres), figures
 
 
-def _chromium() -> str | None:
-    return shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
-
-
-@pytest.mark.skipif(_chromium() is None, reason="no Chromium on this machine (.ci/run installs it)")
+@needs_chromium
 @pytest.mark.parametrize("link, table, cell", [
     ("claims table", "claims.csv", "td.verdict-consistent, td.verdict-differs, td.verdict-untested"),
     ("model scorecard", "models.csv", "table.rows tbody tr"),   # the decision matrix above is not counted
@@ -215,57 +211,41 @@ def _chromium() -> str | None:
 def test_report_shows_its_tables_on_the_page(run, link, table, cell):
     """In headless Chromium the landing page's link opens the table inside the report (not a
     download), one row (for the claims: one coloured verdict cell) per row of the CSV."""
-    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright (the test extra) is not installed")
     work, _ = run
     rows = len(pd.read_csv(work / "results" / table))
-    with sync_api.sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=_chromium(), args=["--no-sandbox"])
-        try:
-            page = browser.new_page()
-            page.goto((work / "results/report.html").resolve().as_uri())
-            page.get_by_text(link, exact=True).first.click()
-            page.wait_for_function("document.querySelector('iframe') !== null", timeout=20_000)
-            frame = page.frame_locator("iframe")
-            cells = frame.locator(cell)
-            cells.first.wait_for(timeout=20_000)
-            count = cells.count()
-            header = frame.locator("th").all_inner_texts()
-        finally:
-            browser.close()
+    with report_page(work / "results/report.html") as (page, _):
+        page.get_by_text(link, exact=True).first.click()
+        page.wait_for_function("document.querySelector('iframe') !== null", timeout=20_000)
+        frame = page.frame_locator("iframe")
+        cells = frame.locator(cell)
+        cells.first.wait_for(timeout=20_000)
+        count = cells.count()
+        header = frame.locator("th").all_inner_texts()
     assert count == rows, f"{count} rows ({cell}) on the page for {rows} rows of {table}"
     assert header, f"the {table} page has no table header"
 
 
-@pytest.mark.skipif(_chromium() is None, reason="no Chromium on this machine (.ci/run installs it)")
+@needs_chromium
 def test_report_landing_page_is_the_answer(run):
     """In headless Chromium the report's first page shows, without a click, the verdict words,
     the recommended model of every sphere combination and Fig. 3 (an image on screen), with no
     SEVERE console message; the report holds no CSV data link (every table is an HTML page)."""
-    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright (the test extra) is not installed")
     work, _ = run
     html = (work / "results/report.html").read_text(errors="replace")
     assert "data:text/csv" not in html, "a table is a CSV data link"
     models = pd.read_csv(work / "results/models.csv")
     best = set(models.loc[models["rank"] == 1, "model"])
-    severe = []
-    with sync_api.sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=_chromium(), args=["--no-sandbox"])
-        try:
-            page = browser.new_page(viewport={"width": 1400, "height": 1000})
-            page.on("console", lambda msg: severe.append(msg.text) if msg.type == "error" else None)
-            page.goto((work / "results/report.html").resolve().as_uri())
-            summary = page.locator(".rc-summary")
-            summary.wait_for(timeout=20_000)
-            text = summary.inner_text()
-            # the verdicts on screen as the page opens (the report centres tall text: its top cut off)
-            top = page.locator(".rc-summary table").first.evaluate("t => t.getBoundingClientRect().top")
-            image = page.locator("img.rc-fig3")
-            image.scroll_into_view_if_needed()
-            visible = image.is_visible()
-            width = image.evaluate("img => img.naturalWidth")
-            shown_models = summary.locator("td.model").all_inner_texts()
-        finally:
-            browser.close()
+    with report_page(work / "results/report.html", viewport={"width": 1400, "height": 1000}) as (page, severe):
+        summary = page.locator(".rc-summary")
+        summary.wait_for(timeout=20_000)
+        text = summary.inner_text()
+        # the verdicts on screen as the page opens (the report centres tall text: its top cut off)
+        top = page.locator(".rc-summary table").first.evaluate("t => t.getBoundingClientRect().top")
+        image = page.locator("img.rc-fig3")
+        image.scroll_into_view_if_needed()
+        visible = image.is_visible()
+        width = image.evaluate("img => img.naturalWidth")
+        shown_models = summary.locator("td.model").all_inner_texts()
     for word in ("consistent", "differs", "untested"):
         assert word in text, f"{word!r} is not on the first page"
     assert shown_models and set(shown_models) <= set(models["model"]) | {NO_RECOMMENDATION}, shown_models

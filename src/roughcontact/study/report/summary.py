@@ -21,6 +21,7 @@ from ..analysis import decision
 from ..config import axes
 from ..analysis.statistics import VERDICTS
 from ..files import provenance
+from ..files.io import NO_ROW, REASON, read_csv
 from . import answer
 from .tables import DIGITS, VERDICT_COLOURS, stamp, verdict_cell
 
@@ -150,8 +151,12 @@ def _holds(row) -> str:
     return {"true": "yes", "false": "no"}[text]
 
 
-def _why_empty(kind: str, size) -> str:
-    """Why the table *kind* (crossover, zeta, models) has no row, from the study's size."""
+def _why_empty(kind: str, size, table=None) -> str:
+    """Why the table *kind* (crossover, zeta, models) has no row: its writer's reason
+    (``table.attrs["reason"]``, :func:`roughcontact.study.files.io.write_csv`), else from the study's size."""
+    reason = getattr(table, "attrs", {}).get(REASON)
+    if reason and reason != NO_ROW:
+        return str(reason)
     if kind in ("crossover", "models"):
         if size is not None and not size.spheres:
             return "the sweep has no sphere (every radius is .inf): no crossover and no model scorecard"
@@ -201,7 +206,7 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
         parts.append(_table(["combination", "F_tr measured [95 % interval]", "eq. 17, ζ = 1.7/(H+1)", "verdict",
                              "eq. 17, fitted ζ", "verdict"], rows))
     else:
-        parts.append(_absent(_why_empty("crossover", size)))
+        parts.append(_absent(_why_empty("crossover", size, crossover)))
     # 4. zeta(H) against eq. 13
     parts.append("<h2>ζ(H) fitted against eq. 13, 1.7/(H+1)</h2>")
     if len(zeta):
@@ -209,7 +214,7 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
                  fmt(r.get("zeta_estimate")), html.escape(str(r.get("source", "")))] for _, r in zeta.iterrows()]
         parts.append(_table(["H", "ζ fitted [95 % interval]", "eq. 13", "source"], rows))
     else:
-        parts.append(_absent(_why_empty("zeta", size)))
+        parts.append(_absent(_why_empty("zeta", size, zeta)))
     # 5. the recommended model per sphere combination
     parts.append("<h2>Recommended model per sphere combination</h2>")
     if len(models):
@@ -234,24 +239,16 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
         parts.append(_table(["combination", "model", "holds", "max_rel_dev", "systematic, F < F_tr", "verdict",
                              "systematic, F > F_tr", "verdict"], rows))
     else:
-        parts.append(_absent(_why_empty("models", size)))
+        parts.append(_absent(_why_empty("models", size, models)))
     parts.append(f'<p style="color:#555; font-size: 11px;">{stamp()}</p>')
     parts.append("</div>")
     return "\n".join(parts) + "\n"
 
 
 def _read(path):
-    """The table at *path*; an empty DataFrame for an empty file (a table with no row and no header)."""
-    import os
-
-    import pandas as pd
-
-    if os.path.getsize(path) <= 1:
-        return pd.DataFrame()
-    try:
-        return pd.read_csv(path, keep_default_na=False, na_values=[""])
-    except pd.errors.EmptyDataError:
-        return pd.DataFrame()
+    """The table at *path* (:func:`roughcontact.study.files.io.read_csv`): an empty DataFrame, with
+    its writer's reason in ``attrs["reason"]``, for a table without a row."""
+    return read_csv(path, keep_default_na=False, na_values=[""])
 
 
 def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_paths, out_html) -> None:
