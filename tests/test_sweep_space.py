@@ -201,7 +201,7 @@ MEASURED = {"units": {"length": "um", "e_star": "GPa"}, "e_star": 100.0, "tile":
 EXAMPLES = [
     _merge(_base("flat", seeds=1, hurst=(0.5, 0.8)), MEASURED),            # flat only, one seed, a scan
     _with(_base("sphere", seeds=1, count=2, n=65), "adhesion"),             # one load per branch
-    _with(_base("both"), "hardness", "fine", "fields", exponent=[1.0, 2.0], rolloff=[None, 0.5]),
+    _with(_base("both"), "hardness", "fine", "fields", exponent=[1.0, 2.0], rolloff=[0.5]),
     _with(_base("sphere"), "tangential", cutoff=[None, 0.125], h_rms=[0.005, 0.02]),
 ]
 
