@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from .. import quantities
 from ..config import axes
 from ..files import runfile
 from .naming import parse_combo
@@ -154,8 +155,7 @@ class JobSettings(ForcePathRecord):
         """What this run's file must be (:func:`roughcontact.study.files.io.read_run`): the run file's
         variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
         H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
-        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS,
-                     *(runfile.PATCH_VARIABLES if self.patches else ()),
+        variables = (*quantities.recorded(self), "force", *runfile.SCALARS,
                      *(runfile.TANGENTIAL_VARIABLES if self.poisson is not None else ()),
                      *(runfile.SLIP_VARIABLES if self.slip_loads else ()))
         dims = ("force", *(runfile.SLIP_COORDS if self.slip_loads else ()))
