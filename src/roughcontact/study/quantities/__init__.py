@@ -25,7 +25,11 @@ from typing import Callable
 
 from ..files.runfile import Variable
 
-__all__ = ["Load", "Quantity", "QUANTITIES", "names", "recorded", "register", "variables"]
+__all__ = ["OPT_IN", "Load", "Quantity", "QUANTITIES", "names", "opted_in", "optional", "recorded", "register",
+           "variables"]
+
+#: the configuration key that lists the opt-in quantities a study's runs keep
+OPT_IN = "fields.quantities"
 
 
 def _always(settings) -> bool:
@@ -112,6 +116,20 @@ def register(quantity: Quantity) -> Quantity:
     return quantity
 
 
+def opted_in(name: str) -> Callable:
+    """The :attr:`Quantity.records` of an opt-in quantity *name*: a run keeps it where its settings'
+    ``quantities`` (the configuration's :data:`OPT_IN`) name it."""
+    def records(settings) -> bool:
+        return name in (getattr(settings, "quantities", ()) or ())
+
+    return records
+
+
+def optional() -> tuple[str, ...]:
+    """The names of the opt-in quantities (:data:`OPT_IN`), in the registry's order."""
+    return tuple(q.name for q in QUANTITIES.values() if q.option == OPT_IN)
+
+
 def names() -> tuple[str, ...]:
     """The registered quantities' names, in the registry's order."""
     return tuple(QUANTITIES)
@@ -130,7 +148,7 @@ def variables(selected) -> dict[str, Variable]:
 
 
 #: the families registered first, in this order (the run files' variable order)
-_ORDER = ("normal", "plastic", "patches")
+_ORDER = ("normal", "plastic", "patches", "gap")
 
 
 def _load() -> None:

@@ -71,6 +71,8 @@ class PathSettings:
         <force_key> to <last good load> or below").
     patches : bool
         Count each load's contact patches (:mod:`roughcontact.study.quantities.patches`).
+    quantities : tuple of str
+        The opt-in per-load quantities kept (``fields.quantities``, :mod:`roughcontact.study.quantities`).
     field_loads : tuple of int
         Loads (0-based) whose contact fields are kept (:data:`~roughcontact.study.files.runfile.FIELD_VARIABLES`).
     poisson : float or None
@@ -94,6 +96,7 @@ class PathSettings:
     hardness: float | None = None
     edge_contact: bool = False
     patches: bool = False
+    quantities: tuple = ()
     field_loads: tuple = ()
     poisson: float | None = None
     friction: float = 0.0
@@ -174,7 +177,8 @@ def path_settings(s, **where) -> PathSettings:
     (:meth:`~roughcontact.study.runs.jobs.JobSettings.arguments`, e.g. the hardness). *where*: the
     fields a job record does not hold (a measured run's tile ``length``, ``periodic``,
     ``edge_hint``, ``edge_contact``)."""
-    own = ({"length": s.length, "periodic": s.periodic, "patches": s.patches, "field_loads": s.field_loads,
+    own = ({"length": s.length, "periodic": s.periodic, "patches": s.patches, "quantities": s.quantities,
+            "field_loads": s.field_loads,
             "poisson": s.poisson, "friction": s.friction, "slip_loads": s.slip_loads, "slip_steps": s.slip_steps,
             **s.arguments("solver")} if isinstance(s, JobSettings) else {})
     return PathSettings(e_star=s.e_star, tol=s.tol, maxiter=s.maxiter, stiffness_method=s.stiffness_method,
