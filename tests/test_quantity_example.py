@@ -80,3 +80,5 @@ def test_the_merged_files_keep_it_and_it_bounds_the_mean_contact_pressure(scratc
     assert np.isfinite(peak).all()
     assert (peak >= mean * (1 - 1e-12)).all()
     assert (peak > 1.5 * mean).any(), "a sphere's peak stays near its mean pressure at no load"
+    with xr.open_dataset(where / "with" / "results" / "ensemble.nc", group="sphere") as ens:
+        assert np.allclose(ens["peak_pressure_mean"].values, peak.mean(axis=-2), rtol=1e-12)
