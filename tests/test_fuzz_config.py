@@ -262,6 +262,15 @@ GENERIC = st.one_of(
 )
 
 
+def _numeric(text: str) -> bool:
+    """Whether *text* reads as a number (a command line's "1e-5"), not a name (an enum's choice)."""
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
 def allowed_values(node: dict):
     """A strategy for values the schema node allows by itself (cross-checks may still reject them),
     written as numbers or as the text a command line passes; None for mappings."""
@@ -274,7 +283,8 @@ def allowed_values(node: dict):
             item = allowed_values(alt["items"])
             if item is not None:
                 strategies.append(st.lists(item, min_size=max(1, alt.get("minItems", 0)), max_size=4,
-                                           unique_by=lambda v: float(v)))
+                                           unique_by=lambda v: v if isinstance(v, str) and not _numeric(v)
+                                           else float(v)))
         elif "integer" in kinds and "number" not in kinds:
             lo = alt.get("minimum", alt.get("exclusiveMinimum", -1) + 1)
             hi = min(alt.get("maximum", alt.get("exclusiveMaximum", lo + 51) - 1), lo + 50)

@@ -23,6 +23,7 @@ from roughcontact.models import paper
 from roughcontact.study.config import resolve as config
 from roughcontact.study.runs import indent
 from roughcontact.study.files import io as study_io
+from roughcontact.study import quantities
 from roughcontact.study.files import runfile
 from roughcontact.models import scorecard as registry
 from roughcontact.study.runs import naming as runs
@@ -65,7 +66,7 @@ def test_merged_file_has_a_group_per_kind_without_padding(run):
         assert ds["h_rms"].values.tolist() == cfg["h_rms"], kind
         assert ds["seed"].values.tolist() == cfg["seeds"], kind
         assert ds.sizes["force"] == cfg["forces"][kind]["count"], f"{kind}: its own load grid"
-        for name in runfile.RUN_VARIABLES:
+        for name in quantities.recorded(settings.job_settings(cfg, runs.runs(cfg)[0])):
             assert not ds[name].isnull().any(), f"{kind}/{name} is NaN somewhere"
         for name in ("contact_cells", "iterations", "converged"):
             assert np.issubdtype(ds[name].dtype, np.integer), f"{kind}/{name} is {ds[name].dtype}"

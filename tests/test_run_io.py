@@ -10,6 +10,7 @@ import pytest
 import xarray as xr
 
 from roughcontact.errors import MergeError
+from roughcontact.study import quantities
 from roughcontact.study.files import provenance, runfile
 from roughcontact.study.files.io import read_run
 from roughcontact.study.runs.measured import MeasuredJob
@@ -44,7 +45,7 @@ def _generated_file(path, s: JobSettings):
     out = {"force": s.forces(), "depth": rng.random(count), "stiffness": rng.random(count) + 1.0,
            "contact_area": rng.random(count), "contact_cells": np.arange(count) + s.seed, "iterations": np.ones(count, int),
            "converged": np.ones(count, "i1")}
-    runfile.write_run(path, out, stiffness_method=s.stiffness_method,
+    runfile.write_run(path, out, variables=quantities.variables(out), stiffness_method=s.stiffness_method,
                       scalars={name: getattr(s, name) for name in runfile.SCALARS},
                       attrs=provenance.provenance_attrs(config=s.record()))
 
@@ -83,9 +84,9 @@ MEASURED = MeasuredJob(source="spectrum", name="s", index=1, radius=0.5, e_star=
 
 
 def _measured_file(path, job: MeasuredJob, normalized):
-    out = {"force": normalized * 2.0, **{name: np.ones(normalized.size, runfile.VARIABLES[name].dtype)
-                                         for name in runfile.RUN_VARIABLES}}
-    runfile.write_run(path, out, stiffness_method="punch", coordinates=("force_normalized",),
+    kept = quantities.variables(quantities.recorded(job))
+    out = {"force": normalized * 2.0, **{name: np.ones(normalized.size, meta.dtype) for name, meta in kept.items()}}
+    runfile.write_run(path, out, variables=kept, stiffness_method="punch", coordinates=("force_normalized",),
                       extra={"force_normalized": (normalized, {"long_name": "F/(E* L^2)", "units": "1"})},
                       attrs=provenance.provenance_attrs(config=dataclasses.asdict(job)))
 

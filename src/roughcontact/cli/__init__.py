@@ -74,10 +74,11 @@ def build_parser() -> argparse.ArgumentParser:
     chk = sub.add_parser("check-config", help="validate a sweep config (exit 2 with one line if invalid)")
     chk.add_argument("config", help="YAML config file, e.g. config.yaml or presets/paper.yaml")
 
-    lst = sub.add_parser("list", help="the registered sweep axes, models or claims, one per line",
+    lst = sub.add_parser("list", help="the registered sweep axes, models, claims or per-load quantities, one per line",
                          description="Print what a registry holds, one per line: axes (name, unit, paper value), "
-                                     "models (name, the optional axes it models, summary) or claims (letter, "
-                                     "statement); --json: the same as a JSON list of objects.")
+                                     "models (name, the optional axes it models, summary), claims (letter, "
+                                     "statement) or quantities (name, units, the key that turns it on, long name); "
+                                     "--json: the same as a JSON list of objects.")
     lst.add_argument("registry", choices=REGISTRIES, help="which registry")
     lst.add_argument("--json", action="store_true", help="a JSON list of objects (name, and paper for axes)")
     return p
@@ -97,6 +98,8 @@ def _list(args) -> int:
             print(f"{item['name']}\tunit {item['unit']}\tpaper {paper}\t{item['role']}")
         elif args.registry == "models":
             print(f"{item['name']}\taxes {','.join(item['axes']) or '-'}\t{item['summary']}")
+        elif args.registry == "quantities":
+            print(f"{item['name']}\tunits {item['units']}\ton {item['option'] or 'every run'}\t{item['long_name']}")
         else:
             print(f"{item['name']}\t{item['statement']}")
     return 0

@@ -1,8 +1,9 @@
 """What the study's registries hold, and the fingerprint of the code of what they register.
 
-:func:`listing` is what ``roughcontact list axes|models|claims`` prints: the registered sweep
-axes (:mod:`roughcontact.study.config.axes`), models of the scorecard (:mod:`roughcontact.models.scorecard`)
-and claims (:mod:`roughcontact.study.claims`), one record each.
+:func:`listing` is what ``roughcontact list axes|models|claims|quantities`` prints: the registered
+sweep axes (:mod:`roughcontact.study.config.axes`), models of the scorecard
+(:mod:`roughcontact.models.scorecard`), claims (:mod:`roughcontact.study.claims`) and per-load
+quantities of a run (:mod:`roughcontact.study.quantities`), one record each.
 
 :func:`code_fingerprint` hashes the source of the modules an analysis rule runs, so that the
 workflow gives it as a ``params`` value: adding or changing a model, a claim or their code makes
@@ -21,7 +22,7 @@ from pathlib import Path
 __all__ = ["REGISTRIES", "listing", "code_fingerprint", "ANALYSIS_CODE"]
 
 #: the registries ``roughcontact list`` knows
-REGISTRIES = ("axes", "models", "claims")
+REGISTRIES = ("axes", "models", "claims", "quantities")
 
 #: the entry modules of each analysis rule, for :func:`code_fingerprint` (which follows their imports)
 ANALYSIS_CODE = {
@@ -48,7 +49,9 @@ def listing(kind: str) -> list[dict]:
     - axes: ``name``, ``unit``, ``paper`` (the paper's setting; ``None``: a nullable axis's
       ``null``; required axes have none), ``optional``, ``role``, ``tag``, ``kinds``;
     - models: ``name``, ``axes`` (the optional axes it models), ``summary``, ``reference``;
-    - claims: ``name`` (its letter), ``statement``.
+    - claims: ``name`` (its letter), ``statement``;
+    - quantities: ``name``, ``units``, ``long_name``, ``dtype``, ``option`` (the configuration key
+      that turns it on; ``None``: the run's kind), ``family``.
 
     ``ValueError`` for another *kind*."""
     if kind == "axes":
@@ -66,12 +69,18 @@ def listing(kind: str) -> list[dict]:
         from .claims import claims
 
         return [{"name": c.letter, "statement": c.statement} for c in claims().values()]
+    if kind == "quantities":
+        from .quantities import QUANTITIES
+
+        return [{"name": q.name, "units": q.units, "long_name": q.long_name, "dtype": q.dtype, "option": q.option,
+                 "family": q.family} for q in QUANTITIES.values()]
     raise ValueError(f"no registry {kind!r}; allowed: {', '.join(REGISTRIES)}")
 
 
 #: the packages whose modules are imported by discovery (the registries), not by name: every module
 #: of their folder counts where the package is imported
-DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.config.axes")
+DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.config.axes",
+              "roughcontact.study.quantities")
 
 #: the folder of the ``roughcontact`` package (this file is ``roughcontact/study/registries.py``)
 PACKAGE = Path(__file__).resolve().parents[1]

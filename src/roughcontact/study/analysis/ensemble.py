@@ -34,8 +34,9 @@ def combinations(ds, variable: str = "stiffness", inner: tuple = ("seed", "force
 
 
 def ensemble(ds):
-    """Mean, standard deviation and standard error of k over seeds (and means
-    of depth, contact area and contact cells) of one kind's Dataset."""
+    """Mean, standard deviation and standard error of k over seeds (and means of depth, contact
+    area and contact cells, and of every opt-in quantity the runs kept: ``<name>_mean``) of one
+    kind's Dataset."""
     k = ds["stiffness"]
     n_seeds = ds.sizes["seed"]
     std = k.std("seed", ddof=1) if n_seeds > 1 else k.isel(seed=0) * np.nan
@@ -52,6 +53,13 @@ def ensemble(ds):
             "long_name": "ensemble mean loading tangent along the plastic path", "units": "e_star * length"})
         per_load["plastic_cells_mean"] = (ds["plastic_cells"].mean("seed"), {"long_name": "mean plastic cells",
                                                                                 "units": "1"})
+    from .. import quantities
+
+    for name in quantities.optional():   # the opt-in quantities the runs kept (fields.quantities)
+        if name in ds:
+            q = quantities.QUANTITIES[name]
+            per_load[f"{name}_mean"] = (ds[name].mean("seed"), {"long_name": f"ensemble mean of the {q.long_name}",
+                                                                 "units": q.units})
     import xarray as xr
 
     return xr.Dataset({name: value.assign_attrs(attrs) for name, (value, attrs) in per_load.items()},

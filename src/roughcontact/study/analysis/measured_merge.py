@@ -11,6 +11,7 @@ import os
 
 import numpy as np
 
+from .. import quantities
 from ..files import provenance, runfile
 from . import statistics
 from ..runs.naming import kind_of
@@ -41,7 +42,8 @@ def merge_surface(study, source: str, name: str, run_files, output, surface_file
     study = StudySettings.of(study)
     order = run_order(study, source, name, len(run_files) // max(1, len(study.radius)))
     ens = "tile" if source == "topography" else "seed"
-    variables = {"force": "f8", **{v: runfile.VARIABLES[v].dtype for v in runfile.RUN_VARIABLES},
+    kept = quantities.recorded(job_of(study, source, name, study.radius[0], 0)) if study.radius else ()
+    variables = {"force": "f8", **{v: quantities.QUANTITIES[v].dtype for v in kept},
                  **{v: "f8" for v in _NORMALIZED}}
     groups, commits = {}, set()
     for layout in _layouts(study, ens, order, run_files):

@@ -13,6 +13,7 @@ import logging
 import numpy as np
 
 from ...errors import MergeError
+from .. import quantities
 from ..files import provenance, runfile
 from ..config.axes import coordinate_attrs
 from ..config.units import to_metres
@@ -175,10 +176,11 @@ def merge_runs(study, paths) -> dict:
     groups = {}
     for layout in kind_layouts(study, table, paths):
         kind, axes, coords = layout.kind, layout.axes, layout.coords
-        plastic = any(row["hardness"] is not None for row, _ in layout.rows)
-        names = (runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if plastic else ())
-                 + (runfile.PATCH_VARIABLES if study.fields.patches else ()))
-        runs_of = gather(layout, lambda row: job_settings(study, row), {n: runfile.VARIABLES[n].dtype for n in names},
+        # the quantities any run of the kind keeps (a hardness on some runs: their plastic ones too)
+        kept = [quantities.recorded(job_settings(study, row)) for row, _ in layout.rows]
+        names = tuple(name for name in quantities.names() if any(name in k for k in kept))
+        runs_of = gather(layout, lambda row: job_settings(study, row),
+                         {n: quantities.QUANTITIES[n].dtype for n in names},
                          value=_generated_value)
         dims = (*axes, "seed", "force")
         groups[kind] = xr.Dataset(

@@ -31,6 +31,7 @@ import numpy as np
 from ...models import tangential as theory
 from ..config.axes import coordinate_attrs
 from ..config.settings import StudySettings
+from .. import quantities
 from ..files import provenance, runfile
 from ..runs import naming as runs
 from ..runs.jobs import job_settings
@@ -79,7 +80,7 @@ def merge_tangential(study, paths) -> dict:
     stick = [(r, p) for r, p in pairs if r.get("friction", 0.0) == study.friction[0]]
     groups = {"full_stick": group(
         layout_of(study, "sphere", stick, (*normal, "poisson")),
-        {**{n: runfile.VARIABLES[n] for n in ("stiffness", "depth", "contact_cells")}, **runfile.TANGENTIAL_VARIABLES},
+        {**quantities.variables(("stiffness", "depth", "contact_cells")), **runfile.TANGENTIAL_VARIABLES},
         force_coords(study, "sphere"))}
     slip = [(r, p) for r, p in pairs if r.get("friction", 0.0) > 0]
     if slip:

@@ -29,8 +29,9 @@ def coerce(obj):
     return one_element_lists(out) if isinstance(out, Mapping) else out
 
 
-#: the JSON types a Python value has (an integer is also a number)
-_JSON_TYPES = ((bool, {"boolean"}), (int, {"integer", "number"}), (float, {"number"}), (str, {"string"}),
+#: the JSON types a Python value may be meant as (an integer is also a number; a float, e.g. ``seeds: 6.0``
+#: or ``nan``, is meant as the key's own number, and its error names the key, not a list's item)
+_JSON_TYPES = ((bool, {"boolean"}), (int, {"integer", "number"}), (float, {"integer", "number"}), (str, {"string"}),
                (type(None), {"null"}), (Mapping, {"object"}))
 
 

@@ -268,7 +268,7 @@ def _check_fine_grid(cfg: dict) -> None:
 def _check_fields(cfg: dict) -> None:
     """``fields``: kept by generated elastic and plastic runs, at loads within a load path."""
     fields = cfg["fields"]
-    if not (fields["patches"] or fields["at"]):
+    if not (fields["patches"] or fields["at"] or fields["quantities"]):
         return
     if any(w > 0 for w in cfg.get("work_of_adhesion", []) if w is not None):
         raise ConfigError("config key 'fields' is not allowed with work_of_adhesion > 0; allowed: fields on "

@@ -86,6 +86,11 @@ def _package_schema(mtime_ns: int) -> dict:
             properties.update(schema_properties())
         properties[name] = node
     root["properties"] = properties
+    # the opt-in per-load quantities a run may keep: the registry's (one new module adds one)
+    from .. import quantities
+
+    choices = root["properties"]["fields"]["properties"]["quantities"]["items"]
+    choices["enum"] = list(quantities.optional()) or [""]
     return root
 
 

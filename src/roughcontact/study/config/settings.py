@@ -92,6 +92,7 @@ class FieldsSettings:
 
     patches: bool = False   #: per load, the number of contact patches and the largest one's cells
     at: tuple = ()          #: ``F/(E* L²)``: the loads nearest these keep their contact fields
+    quantities: tuple = ()  #: the opt-in per-load quantities every run keeps (:mod:`roughcontact.study.quantities`)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -308,7 +309,8 @@ class StudySettings:
             stickiness=StickinessSettings.of(cfg),
             jobs=JobsSettings.of(cfg),
             fields=FieldsSettings(patches=bool((cfg.get("fields") or {}).get("patches", False)),
-                                  at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ())))),
+                                  at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ()))),
+                                  quantities=tuple((cfg.get("fields") or {}).get("quantities", ()))),
             tangential=_tangential(cfg.get("tangential") or {}),
             conductance=ConductanceSettings(**{key: None if value is None else tuple(float(v) for v in value)
                                                for key, value in (cfg.get("conductance") or {}).items()}),

@@ -128,7 +128,7 @@ def read_run(path, expected=None):
                          f"it may be truncated; {hint}") from exc
     spec = expected.file_spec() if expected is not None else None
     title = spec.title if spec is not None else runfile.TITLE
-    required = spec.variables if spec is not None else (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS)
+    required = spec.variables if spec is not None else ("force", *runfile.SCALARS)
     missing = [v for v in required if v not in ds.variables]
     if missing or ds.attrs.get("title") != title:
         what = f"lacks {', '.join(missing)}" if missing else f"is not a {title}"

@@ -1,6 +1,7 @@
 """The run file's data model: every variable of a run and of the merged files, once.
 
-Names, NetCDF types, long names and units of what one indentation run writes
+Names, NetCDF types, long names and units of what one indentation run writes beyond its per-load
+quantities (those: :mod:`roughcontact.study.quantities`)
 (:mod:`roughcontact.study.runs.indent`) and what the merge reads back and stacks
 (:mod:`roughcontact.study.analysis.merge`). Units are CF-style strings in the study's own units:
 lengths in the unit of ``grid.length``, forces in ``e_star * length**2``.
@@ -12,7 +13,7 @@ import dataclasses
 import numpy as np
 
 
-__all__ = ["Variable", "VARIABLES", "RUN_VARIABLES", "PLASTIC_VARIABLES", "PATCH_VARIABLES", "FIELD_VARIABLES",
+__all__ = ["Variable", "FIELD_VARIABLES",
            "TANGENTIAL_VARIABLES", "SLIP_VARIABLES", "SLIP_COORDS", "slip_fractions", "FIELD_GROUP", "RETRACT_VARIABLES",
            "PULL_OFF_VARIABLES", "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
            "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
@@ -31,26 +32,10 @@ class Variable:
     dims: tuple = ("force",)
 
 
-#: every per-load variable a run file can hold
-VARIABLES = {
-    "depth": Variable("f8", "indentation depth from first touch", "length"),
-    "stiffness": Variable("f8", "normal contact stiffness dF/dd", "e_star * length"),
-    "contact_area": Variable("f8", "contact area (contact cells * (L/n)^2)", "length**2"),
-    "contact_cells": Variable("i8", "number of grid cells in contact", "1"),
-    "iterations": Variable("i8", "solver iterations (warm-started from the previous load)", "1"),
-    "converged": Variable("i1", "solver converged (1) or not (0)", "1"),
-    "loading_stiffness": Variable("f8", "loading tangent dF/dd along the plastic path (forward quotient, "
-                                        "solver.rel_step); stiffness is the unloading one", "e_star * length"),
-    "plastic_cells": Variable("i8", "number of grid cells that flowed (pressure at the hardness)", "1"),
-    "contact_patches": Variable("i8", "number of contact patches (edge-connected clusters of contact cells)", "1"),
-    "largest_patch_cells": Variable("i8", "number of grid cells of the largest contact patch", "1"),
-}
-#: variables of every run file
-RUN_VARIABLES = ("depth", "stiffness", "contact_area", "contact_cells", "iterations", "converged")
-#: further variables of a run with a hardness (elastic runs: loading stiffness = stiffness, no plastic cell)
-PLASTIC_VARIABLES = ("loading_stiffness", "plastic_cells")
-#: further variables of a run that counts its contact patches (``fields.patches``)
-PATCH_VARIABLES = ("contact_patches", "largest_patch_cells")
+#: The per-load quantities of a run (depth, stiffness, contact area, ...) are declared by the
+#: quantity registry (:mod:`roughcontact.study.quantities`), which hands the writer their
+#: :class:`Variable` (``write_run(variables=...)``) and the reader their names (the run file's
+#: declaration, :class:`RunFileSpec`).
 #: further per-load variables of a sphere run with a Poisson ratio (axis ``poisson``;
 #: :mod:`roughcontact.study.runs.tangential`)
 TANGENTIAL_VARIABLES = {
@@ -200,7 +185,8 @@ def _meta(meta: Variable) -> dict:
     return {"long_name": meta.long_name, "units": meta.units}
 
 
-def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = None, units: dict | None = None,
+def write_run(path, out: dict, *, attrs: dict, variables: dict | None = None, stiffness_method: str | None = None,
+              units: dict | None = None,
               scalars: dict | None = None, extra: dict | None = None, coordinates: tuple = (),
               kind: str = "indentation") -> None:
     """Write one run file (NetCDF4, atomic: :func:`roughcontact.study.files.provenance.write_netcdf`): the
@@ -209,10 +195,12 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = No
     Parameters
     ----------
     out : dict
-        An indentation run: ``force`` and the per-load arrays of :data:`VARIABLES` (``force`` in
-        force units; an adhesive run's :data:`RETRACT_VARIABLES` and :data:`PULL_OFF_VARIABLES`
-        too). A stickiness run: the arrays of :data:`STICKINESS_VARIABLES` (one per approach) and
+        An indentation run: ``force`` and the per-load arrays of *variables* (``force`` in force
+        units; an adhesive run's :data:`RETRACT_VARIABLES` and :data:`PULL_OFF_VARIABLES` too). A stickiness run: the arrays of :data:`STICKINESS_VARIABLES` (one per approach) and
         the scalars of :data:`STICKINESS_SCALARS`.
+    variables : dict, optional
+        ``{name: Variable}`` of the per-load quantities to write (an indentation run; in this order,
+        :func:`roughcontact.study.quantities.variables`).
     attrs : dict
         Global attributes (provenance, settings); ``title`` is set to :data:`TITLE` (a stickiness
         run: :data:`STICKINESS_TITLE`).
@@ -250,6 +238,7 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = No
     if kind != "indentation":
         raise ValueError(f"kind must be 'indentation' or 'stickiness', not {kind!r}")
     units = units or {}
+    variables = variables or {}
     scalars = scalars or {}
     extra = extra or {}
     labels = " ".join((*scalars, *coordinates))
@@ -263,8 +252,7 @@ def write_run(path, out: dict, *, attrs: dict, stiffness_method: str | None = No
         for name, value in scalars.items():
             dtype, long, unit = SCALARS[name]
             _put(nc, name, dtype, (), value, {"long_name": long, "units": unit})
-        for name in (*RUN_VARIABLES, *(v for v in PLASTIC_VARIABLES + PATCH_VARIABLES if v in out)):
-            meta = VARIABLES[name]
+        for name, meta in variables.items():
             scale, unit = units.get(name, (1.0, meta.units))
             long = f"{meta.long_name} ({stiffness_method})" if name == "stiffness" else meta.long_name
             _put(nc, name, meta.dtype, ("force",), out[name] * scale if scale != 1.0 else out[name],

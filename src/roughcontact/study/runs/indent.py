@@ -13,7 +13,8 @@ import logging
 import numpy as np
 
 from ... import bem, surfaces
-from ...errors import ConvergenceError, DomainTooSmallError, IndentError
+from ...errors import DomainTooSmallError, IndentError
+from .. import quantities
 from ..files import provenance, runfile
 from . import tangential
 from .path import LoadPath
@@ -60,7 +61,7 @@ class PathSettings:
         Solver and stiffness settings (:func:`roughcontact.bem.solve`, :func:`~roughcontact.bem.stiffness`).
     hardness : float or None
         Penetration hardness as a pressure (``None``: elastic): adds the loading tangent and the
-        plastic cells (:data:`roughcontact.study.files.runfile.PLASTIC_VARIABLES`).
+        plastic cells (:mod:`roughcontact.study.quantities.plastic`).
     name : str
         The run, as error messages and progress lines name it.
     force_key : str
@@ -69,7 +70,9 @@ class PathSettings:
         What to change when the contact reaches the edge of a free grid (after "lower
         <force_key> to <last good load> or below").
     patches : bool
-        Count each load's contact patches (:data:`roughcontact.study.files.runfile.PATCH_VARIABLES`).
+        Count each load's contact patches (:mod:`roughcontact.study.quantities.patches`).
+    quantities : tuple of str
+        The opt-in per-load quantities kept (``fields.quantities``, :mod:`roughcontact.study.quantities`).
     field_loads : tuple of int
         Loads (0-based) whose contact fields are kept (:data:`~roughcontact.study.files.runfile.FIELD_VARIABLES`).
     poisson : float or None
@@ -93,6 +96,7 @@ class PathSettings:
     hardness: float | None = None
     edge_contact: bool = False
     patches: bool = False
+    quantities: tuple = ()
     field_loads: tuple = ()
     poisson: float | None = None
     friction: float = 0.0
@@ -103,7 +107,8 @@ class PathSettings:
 def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress=None, *,
                     units: tuple[float, str, float, str] | None = None) -> dict:
     """Solve the warm-started load path of heights *z* at *forces* (force units); return
-    the per-load arrays of :data:`roughcontact.study.files.runfile.VARIABLES` and ``force``.
+    the per-load arrays of the quantities the run keeps (:func:`roughcontact.study.quantities.recorded`)
+    and ``force``.
 
     The force-controlled path kind of :class:`~roughcontact.study.runs.path.LoadPath`: generated
     surfaces (:func:`compute_run`) and measured ones (:func:`roughcontact.study.runs.measured.run_job`)
@@ -120,9 +125,7 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     L, E = p.length, p.e_star
     total = len(forces)
     cell = L**2 / z.size
-    out = {name: np.zeros(total, dtype=runfile.VARIABLES[name].dtype)
-           for name in runfile.RUN_VARIABLES + (runfile.PLASTIC_VARIABLES if p.hardness is not None else ())
-           + (runfile.PATCH_VARIABLES if p.patches else ())}
+    out = {name: np.zeros(total, dtype=quantities.QUANTITIES[name].dtype) for name in quantities.recorded(p)}
     out["force"] = np.asarray(forces, dtype=float)
     if p.field_loads:
         out["fields"] = {}
@@ -174,7 +177,8 @@ def path_settings(s, **where) -> PathSettings:
     (:meth:`~roughcontact.study.runs.jobs.JobSettings.arguments`, e.g. the hardness). *where*: the
     fields a job record does not hold (a measured run's tile ``length``, ``periodic``,
     ``edge_hint``, ``edge_contact``)."""
-    own = ({"length": s.length, "periodic": s.periodic, "patches": s.patches, "field_loads": s.field_loads,
+    own = ({"length": s.length, "periodic": s.periodic, "patches": s.patches, "quantities": s.quantities,
+            "field_loads": s.field_loads,
             "poisson": s.poisson, "friction": s.friction, "slip_loads": s.slip_loads, "slip_steps": s.slip_steps,
             **s.arguments("solver")} if isinstance(s, JobSettings) else {})
     return PathSettings(e_star=s.e_star, tol=s.tol, maxiter=s.maxiter, stiffness_method=s.stiffness_method,
@@ -182,7 +186,8 @@ def path_settings(s, **where) -> PathSettings:
 
 
 def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
-    """Check one solved state and store its numbers at load *i* of *out*."""
+    """Check one solved state and store its quantities (:data:`roughcontact.study.quantities.QUANTITIES`
+    that the run keeps) at load *i* of *out*."""
     total = len(out["force"])
     fnorm = state.force / (p.e_star * p.length**2)
     where = f"load step {i + 1}/{total} (F/(E*L^2) = {fnorm:.3g}"
@@ -192,48 +197,12 @@ def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
             f"tol = {p.tol:g}); raise solver.maxiter, loosen solver.tol, use more cells (grid.n) or a smaller "
             f"load ({p.force_key})"
         )
-    try:
-        k = bem.stiffness(state, method=p.stiffness_method, rel_step=p.rel_step)
-    except (ConvergenceError, ValueError) as exc:
-        other = "punch" if p.stiffness_method == "difference" else "difference"
-        raise IndentError(
-            f"indent {p.name}: the stiffness ({p.stiffness_method}) failed at {where}): {exc}; try "
-            f"solver.stiffness = {other} or more cells (grid.n)"
-        ) from exc
-    cells = int(np.count_nonzero(state.contact))
-    if not (np.isfinite(k) and k > 0):   # e.g. a periodic surface pressed into full contact
-        raise IndentError(
-            f"indent {p.name}: non-positive stiffness k = {k!r} at {where}, {cells} of {state.contact.size} cells "
-            f"in contact); lower {p.force_key} or raise the smallest force or grid.n"
-        )
-    out["depth"][i] = state.depth
-    out["stiffness"][i] = k
-    out["contact_cells"][i] = cells
-    out["contact_area"][i] = cells * cell
-    out["iterations"][i] = state.iterations
-    out["converged"][i] = int(bool(state.converged))
-    if p.patches:
-        patches = bem.contact_patches(state.contact, periodic=p.periodic)
-        out["contact_patches"][i] = patches.count
-        out["largest_patch_cells"][i] = patches.largest
+    load = quantities.Load(settings=p, index=i, total=total, where=where, cell=cell)
+    for name in quantities.recorded(p):
+        out[name][i] = quantities.QUANTITIES[name].compute(state, load)
     if i in p.field_loads:
         out["fields"][i] = _fields(state, cell)
     tangential.record(p, out, i, state, where)
-    if "loading_stiffness" in out:  # with a hardness: the loading tangent along the plastic path too
-        try:
-            loading = bem.stiffness(state, method="loading", rel_step=p.rel_step)
-        except (ConvergenceError, ValueError) as exc:
-            raise IndentError(
-                f"indent {p.name}: the loading stiffness failed at {where}): {exc}; use more cells (grid.n) "
-                f"or a smaller load ({p.force_key})"
-            ) from exc
-        if not (np.isfinite(loading) and loading > 0):
-            raise IndentError(
-                f"indent {p.name}: non-positive loading stiffness {loading!r} at {where}); raise the smallest "
-                "force or grid.n"
-            )
-        out["loading_stiffness"][i] = loading
-        out["plastic_cells"][i] = int(np.count_nonzero(state.plastic))
 
 
 def _fields(state, cell: float) -> dict:
@@ -249,7 +218,8 @@ def _fields(state, cell: float) -> dict:
 
 def write_run(path, s: JobSettings, out: dict) -> None:
     """Write one generated run (:func:`roughcontact.study.files.runfile.write_run`) with provenance."""
-    runfile.write_run(path, out, stiffness_method=s.stiffness_method, scalars={name: getattr(s, name) for name in runfile.SCALARS},
+    runfile.write_run(path, out, variables=quantities.variables(out), stiffness_method=s.stiffness_method,
+                      scalars={name: getattr(s, name) for name in runfile.SCALARS},
                       attrs=provenance.provenance_attrs(
                           config=s.record(), kind=s.kind, seed=s.seed, grid_n=s.n, grid_length=s.length,
                           e_star=s.e_star, periodic=s.periodic, solver_tol=s.tol, solver_maxiter=s.maxiter,

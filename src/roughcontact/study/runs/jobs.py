@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from .. import quantities
 from ..config import axes
 from ..files import runfile
 from .naming import parse_combo
@@ -55,6 +56,9 @@ class JobSettings(ForcePathRecord):
         it is not listed.
     patches : bool
         Whether every load also counts its contact patches (``fields.patches``).
+    quantities : tuple of str
+        The opt-in per-load quantities the run keeps (``fields.quantities``,
+        :mod:`roughcontact.study.quantities`).
     field_loads : tuple of int
         The loads (0-based, of the path) that keep their contact fields (``fields.at``).
     slip_loads : tuple of int
@@ -71,6 +75,7 @@ class JobSettings(ForcePathRecord):
     options: tuple = ()
     realization_of: int | None = None
     patches: bool = False
+    quantities: tuple = ()
     field_loads: tuple = ()
     slip_loads: tuple = ()
     slip_steps: int = 0
@@ -134,7 +139,7 @@ class JobSettings(ForcePathRecord):
         """The settings as a flat mapping of plain values: what a run file's ``config_hash``
         and attributes are made of. Optional axes at the paper's setting are left out."""
         out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
-               if field.name not in ("options", "realization_of", "patches", "field_loads", "slip_loads",
+               if field.name not in ("options", "realization_of", "patches", "quantities", "field_loads", "slip_loads",
                                      "slip_steps")}
         # each at its default is left out: runs of a grid's own surfaces, and runs that keep nothing
         # more than their per-load numbers, keep their hash
@@ -142,6 +147,8 @@ class JobSettings(ForcePathRecord):
             out["realization_of"] = self.realization_of
         if self.patches:
             out["patches"] = True
+        if self.quantities:
+            out["quantities"] = list(self.quantities)
         if self.field_loads:
             out["field_loads"] = list(self.field_loads)
         if self.slip_loads:   # friction > 0: the partial-slip path
@@ -154,8 +161,7 @@ class JobSettings(ForcePathRecord):
         """What this run's file must be (:func:`roughcontact.study.files.io.read_run`): the run file's
         variables and ``force`` dimension (an adhesive run's retract path and pull-off too), its
         H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
-        variables = (*runfile.RUN_VARIABLES, "force", *runfile.SCALARS,
-                     *(runfile.PATCH_VARIABLES if self.patches else ()),
+        variables = (*quantities.recorded(self), "force", *runfile.SCALARS,
                      *(runfile.TANGENTIAL_VARIABLES if self.poisson is not None else ()),
                      *(runfile.SLIP_VARIABLES if self.slip_loads else ()))
         dims = ("force", *(runfile.SLIP_COORDS if self.slip_loads else ()))
@@ -201,6 +207,7 @@ def job_settings(study, run: dict) -> JobSettings:
         tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
         maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
         realization_of=study.grid.realization_of, patches=study.fields.patches,
+        quantities=study.fields.quantities,
         field_loads=nearest_loads(rng.normalized(), study.fields.at), slip_loads=slip_loads,
         slip_steps=study.tangential.steps if sliding else 0)
 

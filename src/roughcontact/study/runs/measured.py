@@ -39,6 +39,7 @@ import numpy as np
 from ... import surfaces
 from ...errors import IndentError, InputFileError
 from ...surfaces.bodies import paraboloid
+from .. import quantities
 from ..files import provenance, runfile
 from ..config.measured import LENGTH_UNITS, plain_unit, to_metres, to_newtons, to_pascals
 from .naming import kind_of
@@ -184,7 +185,8 @@ class MeasuredJob(ForcePathRecord):
         """What this run's file must be (:func:`roughcontact.study.files.io.read_run`): the run file's
         variables over ``force`` with ``force_normalized``, the ``config_hash`` of the job and
         its normalised force grid ``F/(E* L²)``."""
-        return runfile.RunFileSpec(title=runfile.TITLE, variables=(*runfile.RUN_VARIABLES, "force", "force_normalized"),
+        return runfile.RunFileSpec(title=runfile.TITLE, variables=(*quantities.recorded(self), "force",
+                                                                   "force_normalized"),
                                    dims=("force",), config=self.record(), force_variable="force_normalized",
                                    forces=self.forces_normalized())
 
@@ -279,7 +281,7 @@ def _write_run(job: MeasuredJob, output, out: dict, normalized, length: float) -
     scale_f, scale_k = _scales(job)
     unit = job.length_unit
     runfile.write_run(
-        output, out, stiffness_method=job.stiffness_method,
+        output, out, variables=quantities.variables(out), stiffness_method=job.stiffness_method,
         units={"force": (scale_f, "N"), "stiffness": (scale_k, "N m-1"), "depth": (1.0, unit),
                "contact_area": (1.0, f"{unit}2")},
         extra={"force_normalized": (normalized, {"long_name": "F/(E* L^2)", "units": "1"}),

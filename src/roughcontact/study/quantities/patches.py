@@ -1,0 +1,25 @@
+"""The contact patches of each load (``fields.patches``): how many edge-connected clusters of contact
+cells there are, and the cells of the largest (:func:`roughcontact.bem.contact_patches`)."""
+from __future__ import annotations
+
+from ... import bem
+from . import Quantity, register
+
+
+def _counted(settings) -> bool:
+    return bool(getattr(settings, "patches", False))
+
+
+def _patches(state, load):
+    """The patches of *state*, counted once per load for both quantities."""
+    if __name__ not in load.cache:
+        load.cache[__name__] = bem.contact_patches(state.contact, periodic=load.settings.periodic)
+    return load.cache[__name__]
+
+
+register(Quantity("contact_patches", "i8", "number of contact patches (edge-connected clusters of contact cells)",
+                  "1", compute=lambda state, load: _patches(state, load).count, records=_counted,
+                  option="fields.patches", family="patches"))
+register(Quantity("largest_patch_cells", "i8", "number of grid cells of the largest contact patch", "1",
+                  compute=lambda state, load: _patches(state, load).largest, records=_counted,
+                  option="fields.patches", family="patches"))
