@@ -35,24 +35,19 @@ this package: :mod:`roughcontact.study.claims.paper` (a)-(h), :mod:`roughcontact
 :mod:`roughcontact.study.claims.tangential` (r)-(t). :func:`claims_table` loops over the registry; a new claim is one
 object in one module (worked example in the package guide, ``docs/guide/package.md``). A claim
 that raises gives rows with the verdict ``error`` and the exception as the reason; the others'
-rows are kept.
+rows are kept. The ``claims`` rule's files, ``claims.csv`` and its page, are written by
+:mod:`roughcontact.study.report.claims`: this package estimates and imports nothing of the report.
 """
 from __future__ import annotations
 
 import importlib
-import logging
 import pkgutil
-from pathlib import Path
 
 from ..config.settings import StudySettings
-from ..report.tables import write_html_table
 from .registry import CLAIMS, Claim, ClaimInputs, Combination, register, row, table_rows
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "claims", "claims_table", "failed",
-           "run_claims", "CLAIMS_LEAD",
            "EQ16_TOLERANCE", "prl2012_exponent"]
-
-log = logging.getLogger(__name__)
 
 #: the modules of the claims of Pohrt & Popov (2013) and the studies that extend them, in the order
 #: they are imported (each registers its claims); further modules of this package follow by name
@@ -112,46 +107,3 @@ def failed(table) -> list:
     if not len(table):
         return []
     return sorted(set(table.loc[table["verdict"] == "error", "claim"]))
-
-
-#: the lead paragraph of the claims page of the report
-CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
-               "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
-               "paper's value and the verdict: consistent (the paper's value lies inside the interval, or for a "
-               "bound the interval lies on the claimed side), differs (it is excluded), untested (the claim is "
-               "not decided; untested_because names why: not swept, off the paper's setting, interval holds the "
-               "threshold, unresolved, outside the model's range or no prediction, and the reason gives the "
-               "detail) or error (the claim's estimate failed; the reason is the exception, the workflow's log "
-               "names the claim). The note says what the measured or paper value is; a second comparison (claim "
-               "(b) with the fitted zeta, the slopes of eq. 16 itself) is a row of its own. claims.csv holds "
-               "every digit.")
-
-
-def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
-               pull_off_csv=None, stickiness_csv=None, tangential_nc=None):
-    """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
-    runs, the local exponents, the adhesive runs' pull-off table (*pull_off_csv*, or ``None``
-    without adhesive runs) and the stickiness table (*stickiness_csv*, or ``None`` without the
-    config's ``stickiness`` section), the tangential runs (*tangential_nc*, or ``None`` without the
-    axis ``poisson``) -> claims.csv and the same table as an HTML page for the report
-    (:mod:`roughcontact.study.report.tables`)."""
-    import pandas as pd
-    import xarray as xr
-
-    from ..files.io import read_groups, write_csv
-
-    cross = pd.read_csv(crossover_csv) if Path(crossover_csv).stat().st_size > 1 else pd.DataFrame()
-    with xr.open_dataset(crossover_nc, engine="netcdf4") as reps, xr.open_dataset(zeta_nc, engine="netcdf4") as zds:
-        exponents = pd.read_csv(exponents_csv) if Path(exponents_csv).stat().st_size > 1 else pd.DataFrame()
-        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), study, read_groups(stiffness_nc), exponents,
-                             zds["zeta_replicates"].load(),
-                             adhesion=pd.read_csv(pull_off_csv) if pull_off_csv else None,
-                             stickiness=pd.read_csv(stickiness_csv) if stickiness_csv else None,
-                             tangential=read_groups(tangential_nc) if tangential_nc else None)
-    write_csv(table, out_csv)
-    write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
-                     first=("claim", "statement", "verdict", "untested_because", "measured", "ci_low", "ci_high",
-                            "paper_value", "reason"))
-    log.info("claims:\n%s", table.to_string())
-    if failed(table):
-        log.warning("claims that failed (verdict error, the reason is the exception): %s", ", ".join(failed(table)))
