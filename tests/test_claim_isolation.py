@@ -241,3 +241,14 @@ def test_with_axes_gives_the_paired_combination(toy_axis):
 
 def test_with_axes_of_a_value_not_swept_is_none():
     assert _combinations(_groups(), _study())[0].with_axes(radius=7.0) is None
+
+
+def test_the_claims_import_nothing_of_the_report():
+    """The claims estimate and judge; the report writes their files (:mod:`roughcontact.study.report.claims`):
+    no module the claims import, however indirectly, is one of the report's."""
+    from roughcontact.study import registries
+
+    report = registries.PACKAGE / "study" / "report"
+    reached = sorted(str(p.relative_to(registries.PACKAGE)) for p in registries._closure(("roughcontact.study.claims",))
+                     if report in p.parents)
+    assert not reached, f"the claims import the report's {reached}"

@@ -1,5 +1,5 @@
 """Snakemake `claims` job: crossover and zeta tables -> results/claims.csv and claims.html (the paper's claims, verdicts)."""
-from roughcontact.study.claims import run_claims
+from roughcontact.study.report.claims import run_claims
 from roughcontact.study.files.logs import log_to
 
 snakemake = globals()["snakemake"]

@@ -28,7 +28,7 @@ REGISTRIES = ("axes", "models", "claims", "quantities")
 ANALYSIS_CODE = {
     "models": ("roughcontact.study.report.scorecard", "roughcontact.study.report.measured",
                "roughcontact.study.analysis.measured_spectrum"),
-    "claims": ("roughcontact.study.claims",),
+    "claims": ("roughcontact.study.report.claims",),
     "figures": ("roughcontact.study.report.figures",),
     "summary": ("roughcontact.study.report.summary",),
     "grid_error": ("roughcontact.study.analysis.grid_error",),

@@ -1,6 +1,7 @@
 """Eq. 16 of Pohrt & Popov (2013) with free prefactors, fitted to a stiffness-force curve:
 ``F = A k³ + B k^(H+1)`` (a body ``z ∝ r^m``: ``A k^(m+1)``), the crossover force of eq. 17 where the
-two terms are equal, and the least-squares log-log slope of the asymptotic windows.
+two terms are equal. The slopes of its asymptotic windows are
+:func:`roughcontact.study.analysis.statistics.log_log_slope` (``_slopes`` here, for the crossover table).
 
 Forces are normalised, F/(E* L²), and stiffnesses k/(E* L).
 """
@@ -9,6 +10,8 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+
+from .statistics import log_log_slope
 
 __all__ = ["Eq16Fit", "fit_eq16"]
 
@@ -105,9 +108,8 @@ def fit_eq16(force, stiffness, hurst: float, *, exponent: float = 2.0, iteration
                    crossover_stiffness=np.exp(ln_k_tr), crossover_force=np.exp(ln_a + (exponent + 1.0) * ln_k_tr))
 
 
-def _slopes(log_f: np.ndarray, log_k: np.ndarray) -> np.ndarray:
-    """Least-squares slope of ``log_k`` (shape (..., m)) against ``log_f`` (shape (m,))."""
-    xm = log_f - log_f.mean()
-    return (log_k * xm).sum(-1) / (xm @ xm)
+#: the least-squares slope of ``log_k`` (shape (..., m)) against ``log_f`` (shape (m,)): the study's one
+#: log-log slope, :func:`roughcontact.study.analysis.statistics.log_log_slope`
+_slopes = log_log_slope
 
 

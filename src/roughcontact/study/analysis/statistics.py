@@ -1,4 +1,5 @@
-"""Statistics of the study: bootstrap over seeds, percentile intervals and the verdict rules.
+"""Statistics of the study: bootstrap over seeds, percentile intervals, the verdict rules and
+the least-squares log-log slope.
 
 Every interval of the study is a percentile bootstrap over the seeds (Efron & Tibshirani,
 An Introduction to the Bootstrap, Chapman & Hall 1993, doi 10.1201/9780429246593) with one
@@ -19,7 +20,7 @@ import math
 import numpy as np
 
 __all__ = ["BOOTSTRAP_SEED", "bootstrap_indices", "interval", "verdict", "verdict_bound", "judge", "untested",
-           "split_verdict", "UNTESTED_BECAUSE", "VERDICTS", "CONSISTENT", "DIFFERS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
+           "split_verdict", "log_log_slope", "UNTESTED_BECAUSE", "VERDICTS", "CONSISTENT", "DIFFERS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
            "OUT_OF_RANGE", "NO_PREDICTION"]
 
 #: random state of every bootstrap (the paper's acceptance date)
@@ -129,3 +130,47 @@ def interval(samples: np.ndarray, level: float) -> tuple[float, float]:
         return math.nan, math.nan
     low, high = np.percentile(finite, [50 * (1 - level), 50 * (1 + level)])
     return float(low), float(high)
+
+
+def log_log_slope(log_x, log_y, *, covariates=None):
+    """The least-squares slope of ``ln y`` against ``ln x``: the exponent ``a`` of ``y = c x^a``.
+
+    The one log-log slope of the study: the asymptotic slopes of eq. 16 (the crossover table),
+    the change of the low-force slope by a roll-off (claim (j)), the free exponent of the ζ fit and
+    the exponents of ``F_tr`` in R and h_rms (claim (g), with the other as a covariate).
+
+    Parameters
+    ----------
+    log_x : array_like, shape (m,)
+        The logarithms ``ln x`` of the abscissae (any unit: a unit shifts ``ln x`` only).
+    log_y : array_like, shape (..., m)
+        The logarithms ``ln y``, one curve per leading index (e.g. bootstrap replicates).
+    covariates : array_like, shape (p, m), optional
+        Further regressors (logarithms of other swept quantities) fitted beside ``ln x``: the slope
+        is then the partial coefficient of ``ln x`` in ``ln y = b + a ln x + Σ c_j z_j``.
+
+    Returns
+    -------
+    ndarray or float
+        The slope ``a``, shape ``(...)``; NaN where ``ln x`` does not vary (with covariates: where
+        they explain all but ``1e-10`` of its variance).
+
+    Notes
+    -----
+    ``a = Σ x̃_i ln y_i / Σ x̃_i²`` with ``x̃`` the residual of ``ln x`` after the least-squares fit
+    of a constant (and the covariates) to it: ``x̃ = ln x − mean(ln x)`` without covariates
+    (Frisch & Waugh, Econometrica 1, 387 (1933), doi:10.2307/1907330: the same coefficient as the
+    full least-squares fit).
+    """
+    log_x = np.asarray(log_x, dtype=float)
+    log_y = np.asarray(log_y, dtype=float)
+    centred = log_x - log_x.mean()
+    if covariates is None or np.size(covariates) == 0:
+        xm, floor = centred, 0.0
+    else:   # ln x explained by the covariates (a sweep that is no product) leaves no slope to fit
+        design = np.column_stack([np.ones(log_x.size), *np.atleast_2d(np.asarray(covariates, dtype=float))])
+        xm, floor = log_x - design @ np.linalg.lstsq(design, log_x, rcond=None)[0], 1e-10 * (centred @ centred)
+    norm = xm @ xm
+    if not norm > floor:
+        return np.full(log_y.shape[:-1], math.nan) if log_y.ndim > 1 else math.nan
+    return (log_y * xm).sum(-1) / norm

@@ -35,23 +35,19 @@ this package: :mod:`roughcontact.study.claims.paper` (a)-(h), :mod:`roughcontact
 :mod:`roughcontact.study.claims.tangential` (r)-(t). :func:`claims_table` loops over the registry; a new claim is one
 object in one module (worked example in the package guide, ``docs/guide/package.md``). A claim
 that raises gives rows with the verdict ``error`` and the exception as the reason; the others'
-rows are kept.
+rows are kept. The ``claims`` rule's files, ``claims.csv`` and its page, are written by
+:mod:`roughcontact.study.report.claims`: this package estimates and imports nothing of the report.
 """
 from __future__ import annotations
 
 import importlib
-import logging
 import pkgutil
 
 from ..config.settings import StudySettings
-from ..report.tables import write_html_table
 from .registry import CLAIMS, Claim, ClaimInputs, Combination, register, row, table_rows
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "claims", "claims_table", "failed",
-           "run_claims", "CLAIMS_LEAD",
-           "EQ16_TOLERANCE", "prl2012_exponent"]
-
-log = logging.getLogger(__name__)
+           "EQ16_TOLERANCE", "prl2012_exponent", "CLAIMS_COLUMNS", "NO_CLAIM"]
 
 #: the modules of the claims of Pohrt & Popov (2013) and the studies that extend them, in the order
 #: they are imported (each registers its claims); further modules of this package follow by name
@@ -115,59 +111,9 @@ def failed(table) -> list:
     return sorted(set(table.loc[table["verdict"] == "error", "claim"]))
 
 
-#: the lead paragraph of the claims page of the report
 #: the columns of claims.csv around the sweep axes (the header of a table without a row)
 CLAIMS_COLUMNS = ("claim", "statement", "hurst", "radius", "h_rms", "measured", "ci_low", "ci_high", "paper_value",
                   "verdict", "untested_because", "reason", "sweep", "loads", "note")
 
 #: why claims.csv has no row
 NO_CLAIM = "no claim of the paper has what it needs in this sweep"
-
-CLAIMS_LEAD = ("One row per quantitative claim of Pohrt & Popov (2013) and per sweep combination it is tested "
-               "on: the measured value with its 95 % bootstrap-over-seeds interval (ci_low, ci_high), the "
-               "paper's value and the verdict: consistent (the paper's value lies inside the interval, or for a "
-               "bound the interval lies on the claimed side), differs (it is excluded), untested (the claim is "
-               "not decided; untested_because names why: not swept, off the paper's setting, interval holds the "
-               "threshold, unresolved, outside the model's range or no prediction, and the reason gives the "
-               "detail) or error (the claim's estimate failed; the reason is the exception, the workflow's log "
-               "names the claim). The note says what the measured or paper value is; a second comparison (claim "
-               "(b) with the fitted zeta, the slopes of eq. 16 itself) is a row of its own. claims.csv holds "
-               "every digit.")
-
-
-def _rows_or_none(path):
-    """The table *path* (:func:`roughcontact.study.files.io.read_csv`), or ``None`` without a path or
-    a row: the claims that need it are then not in the table."""
-    from ..files.io import read_csv
-
-    table = read_csv(path) if path else None
-    return table if table is not None and len(table) else None
-
-
-def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
-               pull_off_csv=None, stickiness_csv=None, tangential_nc=None):
-    """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
-    runs, the local exponents, the adhesive runs' pull-off table (*pull_off_csv*, or ``None``
-    without adhesive runs) and the stickiness table (*stickiness_csv*, or ``None`` without the
-    config's ``stickiness`` section), the tangential runs (*tangential_nc*, or ``None`` without the
-    axis ``poisson``) -> claims.csv and the same table as an HTML page for the report
-    (:mod:`roughcontact.study.report.tables`)."""
-    import pandas as pd
-    import xarray as xr
-
-    from ..files.io import read_csv, read_groups, write_csv
-
-    cross = read_csv(crossover_csv)
-    with xr.open_dataset(crossover_nc, engine="netcdf4") as reps, xr.open_dataset(zeta_nc, engine="netcdf4") as zds:
-        exponents = read_csv(exponents_csv)
-        table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), study, read_groups(stiffness_nc), exponents,
-                             zds["zeta_replicates"].load(),
-                             adhesion=_rows_or_none(pull_off_csv), stickiness=_rows_or_none(stickiness_csv),
-                             tangential=read_groups(tangential_nc) if tangential_nc else None)
-    write_csv(table, out_csv, reason=NO_CLAIM)
-    write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
-                     first=("claim", "statement", "verdict", "untested_because", "measured", "ci_low", "ci_high",
-                            "paper_value", "reason"))
-    log.info("claims:\n%s", table.to_string())
-    if failed(table):
-        log.warning("claims that failed (verdict error, the reason is the exception): %s", ", ".join(failed(table)))

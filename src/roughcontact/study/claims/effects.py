@@ -26,7 +26,8 @@ import numpy as np
 
 from ..config import axes
 from ..analysis.ensemble import resolved
-from ..analysis.statistics import NOT_SWEPT, UNRESOLVED, bootstrap_indices, interval, judge, untested, verdict_bound
+from ..analysis.statistics import (NOT_SWEPT, UNRESOLVED, bootstrap_indices, interval, judge, log_log_slope, untested,
+                                   verdict_bound)
 from .registry import Claim, register, row
 
 __all__ = ["INSENSITIVE_TOLERANCE"]
@@ -107,10 +108,9 @@ def _pair(axis, where, baseline, with_, without, crossover, study):
         k_without = without[name].transpose("seed", "force").values[:, mask]
         if axis == "rolloff":
             log_f = np.log(force[mask])
-            xm = log_f - log_f.mean()
 
             def measure(a, b):
-                return ((np.log(a) - np.log(b)) * xm).sum(-1) / (xm @ xm)
+                return log_log_slope(log_f, np.log(a) - np.log(b))
         else:
             def measure(a, b):
                 return np.abs(a / b - 1).max(-1)

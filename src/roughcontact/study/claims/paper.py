@@ -17,7 +17,8 @@ import math
 
 import numpy as np
 
-from ..analysis.statistics import NO_PREDICTION, NOT_SWEPT, UNRESOLVED, interval, judge, untested, verdict_bound
+from ..analysis.statistics import (NO_PREDICTION, NOT_SWEPT, UNRESOLVED, interval, judge, log_log_slope, untested,
+                                   verdict_bound)
 from ..config import axes
 from .registry import Claim, all_of, at_theory, describe, off_theory, register, row, with_crossover
 
@@ -209,13 +210,13 @@ def _g(inputs):
                 out.append(row("g", statement, math.nan, math.nan, math.nan, theory_value, why, hurst=hurst))
                 continue
             others = [a for a in ("radius", "h_rms") if a != axis and len(set(sub[a])) >= 2]
-            design = np.column_stack([np.ones(len(sub)), np.log(sub[axis].to_numpy(float)),
-                                      *[np.log(sub[a].to_numpy(float)) for a in others]])
-            point = np.linalg.lstsq(design, np.log(sub["Ftr_measured"].to_numpy(float)), rcond=None)[0][1]
+            log_axis = np.log(sub[axis].to_numpy(float))
+            covariates = [np.log(sub[a].to_numpy(float)) for a in others]      # the other axis, where swept
+            point = log_log_slope(log_axis, np.log(sub["Ftr_measured"].to_numpy(float)), covariates=covariates)
             boot = np.array([reps["Ftr_replicates"].sel(
                 {a: r[a] for a in reps["Ftr_replicates"].dims if a != "replicate"}).values
                 for _, r in sub.iterrows()])                                     # (combos, replicates)
-            exponents = np.linalg.pinv(design)[1] @ np.log(boot)
+            exponents = log_log_slope(log_axis, np.log(boot).T, covariates=covariates)   # (replicates,)
             lo, hi = interval(exponents, level)
             out.append(row("g", statement, float(point), lo, hi, theory_value, judge(theory_value, lo, hi),
                            hurst=hurst, sweep=f"{len(sub)} sphere combinations at H = {hurst:g}",

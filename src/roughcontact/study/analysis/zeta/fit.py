@@ -15,7 +15,7 @@ from ...config import axes
 from ...files import provenance
 from ..ensemble import resolved
 from ...files.io import read_groups, write_csv, write_netcdf
-from ..statistics import bootstrap_indices
+from ..statistics import bootstrap_indices, log_log_slope
 from ...config.settings import StudySettings
 
 __all__ = ["paper_setting", "off_paper", "fit_zeta", "run_fit_zeta"]
@@ -109,7 +109,7 @@ def _zeta_stats(points, hurst):
     if x.size == 0:
         return math.nan, math.nan
     ln_zeta = float(np.mean(y - x / (hurst + 1)))
-    slope = float(np.polyfit(x, y, 1)[0]) if x.size >= 2 and np.ptp(x) > 0 else math.nan
+    slope = float(log_log_slope(x, y)) if x.size >= 2 and np.ptp(x) > 0 else math.nan
     return math.exp(ln_zeta), slope
 
 
