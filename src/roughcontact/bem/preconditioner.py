@@ -63,15 +63,26 @@ class FourierInverse:
             self._shape = tuple(shape)
         return self._symbol
 
-    def __call__(self, shape: tuple[int, int], cells: np.ndarray, values: np.ndarray) -> np.ndarray:
+    def __call__(self, shape: tuple[int, int], cells: np.ndarray, values: np.ndarray, *,
+                 deflate: bool = True) -> np.ndarray:
         """``P_W R_W F⁻¹ E*|q|/2 F R_Wᵀ values``: the preconditioned ``values`` given on the flat
-        ``cells`` ``W`` of a window of ``shape`` (length unit in, pressure unit out), zero mean on ``W``."""
+        ``cells`` ``W`` of a window of ``shape`` (length unit in, pressure unit out), zero mean on ``W``.
+
+        ``deflate=False`` (systems without the force constraint, such as the flat punch
+        ``K_cc p = 1``): no projection, and the mean ``q = 0`` is multiplied by the symbol's smallest
+        nonzero value ``E* π/(m Δ)`` (``m`` the longer side) instead of 0, so that the preconditioner
+        is symmetric positive definite on all vectors of ``W``.
+        """
         field = np.zeros(shape, dtype=np.float32)
         field.reshape(-1)[cells] = values
         transform = scipy.fft.rfft2(field, overwrite_x=True)
+        mean = transform[0, 0]
         transform *= self.symbol(shape)
+        if not deflate:
+            transform[0, 0] = mean * (np.pi * self.e_star / (max(shape) * self.spacing))
         result = scipy.fft.irfft2(transform, s=shape, overwrite_x=True).reshape(-1)[cells].astype(float)
-        result -= result.mean()
+        if deflate:
+            result -= result.mean()
         return result
 
 
