@@ -53,6 +53,9 @@ def love_coefficients(n: int) -> np.ndarray:
             - corner(x - 0.5, y + 0.5) + corner(x - 0.5, y - 0.5))
 
 
+#: Columns of the half spectrum transformed along the padded rows at a time
+#: (:meth:`FreeSpaceOperator._convolve`).
+_COLUMN_BLOCK = 256
 #: Rows of a dense influence matrix gathered at a time (bounds the index temporaries).
 _GATHER_ROWS = 256
 
@@ -93,11 +96,11 @@ class FreeSpaceOperator:
     """
 
     periodic = False
-    #: Kernel spectra kept per precision (least recently used dropped first): a load path
-    #: only grows its window, so old sizes are rarely needed again. The kernel is even in
-    #: both offsets, so its spectrum is real: a spectrum of the padded size ``M₀ × M₁`` holds
-    #: ``M₀ (M₁/2 + 1)`` doubles (0.27 GB for the padded 8192² of a whole 4097² grid).
-    cached_spectra = 2
+    #: Kernel spectra kept per precision: a load path only grows its window, so an old
+    #: size is rarely needed again. The kernel is even in both offsets, so its spectrum is
+    #: real: a spectrum of the padded size ``M₀ × M₁`` holds ``M₀ (M₁/2 + 1)`` doubles
+    #: (0.27 GB for the padded 8192² of a whole 4097² grid; its single-precision copy half that).
+    cached_spectra = 1
 
     def __init__(self, n: int, length: float, e_star: float):
         self.n = n
@@ -221,12 +224,17 @@ class FreeSpaceOperator:
 
     @staticmethod
     def _convolve(pressure, padded, spectrum):
+        """The pruned padded convolution; the transform along the padded rows runs on blocks of
+        :data:`_COLUMN_BLOCK` columns, so that no ``M₀ × (M₁/2 + 1)`` complex array is held (only the
+        ``m₁`` rows that hold the pressure and are returned)."""
         m1, m2 = pressure.shape
         transform = scipy.fft.rfft(pressure, n=padded[1], axis=1)
-        transform = scipy.fft.fft(transform, n=padded[0], axis=0, overwrite_x=True)
-        transform *= spectrum
-        transform = scipy.fft.ifft(transform, axis=0, overwrite_x=True)
-        return scipy.fft.irfft(transform[:m1], n=padded[1], axis=1)[:, :m2]
+        for start in range(0, transform.shape[1], _COLUMN_BLOCK):
+            block = slice(start, start + _COLUMN_BLOCK)
+            column = scipy.fft.fft(transform[:, block], n=padded[0], axis=0)
+            column *= spectrum[:, block]
+            transform[:, block] = scipy.fft.ifft(column, axis=0, overwrite_x=True)[:m1]
+        return scipy.fft.irfft(transform, n=padded[1], axis=1)[:, :m2].copy()
 
 
 class PeriodicOperator:
