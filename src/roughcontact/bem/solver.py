@@ -71,8 +71,9 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     cells enter through the same step (P&K give them ``−τ r`` after the step
     on ``c``). Operators without a cell size (the dense matrices of the working
     sets) take ``M = I``: then this is P&K's unpreconditioned iteration.
-    Preconditioning cuts the iterations of the largest loads of the default sphere
-    path by 2.4–2.6× from 513² to 2049² (benchmarks/large_grid.py).
+    Preconditioning cuts the iterations of the largest load of the default sphere
+    path 2.0–2.5× on 513² … 4097² (benchmarks/large_grid.py); they still grow with
+    the grid, in the first iterations after the warm start, which find the contact set.
 
     The contact set is kept as an index array, so that besides the one
     convolution (and the preconditioner's transform on the unpadded window, a
