@@ -4,7 +4,7 @@ The face is :func:`solve` (one load), :func:`load_path` and :func:`iter_load_pat
 (warm-started loads), :func:`stiffness` (``k = dF/dd`` of a solved state, :mod:`.incremental`),
 :func:`displacement` and :class:`ContactState`. Behind it: the half-space influence
 operators (:mod:`.operators`), the constrained conjugate-gradient kernels
-(:mod:`.solver`), the windows and working sets they run on (:mod:`.active_sets`), the
+(:mod:`.solver`) and their FFT preconditioner (:mod:`.preconditioner`), the windows and working sets they run on (:mod:`.active_sets`), the
 flat-punch stiffness (:mod:`.punch`) and penetration-hardness plasticity (:mod:`.plastic`).
 Tangential contact, elastic only (the normal–tangential coupling neglected): the Cerruti kernel
 (:mod:`.cerruti`), the full-stick stiffness :func:`tangential_stiffness` and Cattaneo–Mindlin

@@ -74,6 +74,14 @@ def _window_box(mask: np.ndarray, operator) -> tuple[slice, slice]:
     return tuple(window)
 
 
+def _lowest_outside(lift: np.ndarray, window: tuple[slice, slice]) -> float:
+    """Smallest ``lift`` outside ``window`` (``inf`` if none), from the four strips around it
+    (views: no copy of the grid)."""
+    rows, cols = window
+    strips = (lift[: rows.start], lift[rows.stop:], lift[rows, : cols.start], lift[rows, cols.stop:])
+    return min((float(strip.min()) for strip in strips if strip.size), default=math.inf)
+
+
 def _start_pressure(previous, lift, depth_bound):
     """Starting pressure on some cells: ``previous`` (a neighbouring solution on the
     same cells, or ``None``) where it is positive anywhere, else unit pressure on the
@@ -291,9 +299,7 @@ def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, perio
         p_window, depth, spent, converged, error = kernel(
             local, operator, total, start, tol, maxiter - iterations)
         iterations += spent
-        outside = np.ones((n, n), dtype=bool)
-        outside[window] = False
-        lowest_outside = lift[outside].min(initial=math.inf)
+        lowest_outside = _lowest_outside(lift, window)
         if depth < lowest_outside or not converged or iterations >= maxiter:
             break
         # The box solution is an upper bound of the true depth: one more

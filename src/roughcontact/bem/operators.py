@@ -53,6 +53,9 @@ def love_coefficients(n: int) -> np.ndarray:
             - corner(x - 0.5, y + 0.5) + corner(x - 0.5, y - 0.5))
 
 
+#: Columns of the half spectrum transformed along the padded rows at a time
+#: (:meth:`FreeSpaceOperator._convolve`).
+_COLUMN_BLOCK = 256
 #: Rows of a dense influence matrix gathered at a time (bounds the index temporaries).
 _GATHER_ROWS = 256
 
@@ -93,9 +96,11 @@ class FreeSpaceOperator:
     """
 
     periodic = False
-    #: Kernel spectra kept (least recently used dropped first): a load path
-    #: only grows its window, so old sizes are rarely needed again.
-    cached_spectra = 6
+    #: Kernel spectra kept per precision: a load path only grows its window, so an old
+    #: size is rarely needed again. The kernel is even in both offsets, so its spectrum is
+    #: real: a spectrum of the padded size ``M₀ × M₁`` holds ``M₀ (M₁/2 + 1)`` doubles
+    #: (0.27 GB for the padded 8192² of a whole 4097² grid; its single-precision copy half that).
+    cached_spectra = 1
 
     def __init__(self, n: int, length: float, e_star: float):
         self.n = n
@@ -107,7 +112,6 @@ class FreeSpaceOperator:
             collections.OrderedDict()
         self._single_spectra: collections.OrderedDict[tuple[int, int], np.ndarray] = \
             collections.OrderedDict()
-        self._symmetric: np.ndarray | None = None
 
     def _coefficients(self, size: int) -> np.ndarray:
         """Displacements under a unit cell pressure at offsets ``[0, size)²`` (at least).
@@ -150,25 +154,13 @@ class FreeSpaceOperator:
         if spectrum is None:
             window = PaddedWindow.of(padded, self.n)
             kernel = self._coefficients(window.side)[window.rows, window.cols] * window.mask
-            spectrum = scipy.fft.rfft2(kernel)
+            spectrum = np.ascontiguousarray(scipy.fft.rfft2(kernel, overwrite_x=True).real)
             self._spectra[padded] = spectrum
             if len(self._spectra) > self.cached_spectra:
                 self._spectra.popitem(last=False)
         else:
             self._spectra.move_to_end(padded)
         return padded, spectrum
-
-    def _kernel(self, half: int) -> np.ndarray:
-        """Symmetric influence array for windows of up to ``half`` cells a side:
-        ``[half−1+i, half−1+j]`` holds the coefficient at offset (i, j), ``|i|, |j| < half``.
-
-        Kept for the largest window seen, so its memory follows the window, not
-        the grid: ``(2 half − 1)²`` values instead of ``(2n − 1)²``.
-        """
-        if self._symmetric is None or (self._symmetric.shape[0] + 1) // 2 < half:
-            index = np.abs(np.arange(-(half - 1), half))
-            self._symmetric = self._coefficients(half)[index[:, None], index[None, :]]
-        return self._symmetric
 
     def column_limit(self, shape: tuple[int, int]) -> int:
         """How many columns :meth:`add_columns` sums in about the time of one FFT convolution."""
@@ -180,10 +172,15 @@ class FreeSpaceOperator:
         """Add the displacement of pressures ``values`` on the flat ``cells`` of the window
         ``field`` to ``field`` in place, summing influence columns directly."""
         m1, m2 = field.shape
-        kernel = self._kernel(max(m1, m2))
-        origin = (kernel.shape[0] - 1) // 2
+        table = self._coefficients(max(m1, m2))
         for value, (i, j) in zip(values, zip(*np.unravel_index(cells, field.shape))):
-            field += value * kernel[origin - i: origin - i + m1, origin - j: origin - j + m2]
+            # the coefficient at |r − i|, |c − j| as four blocks of the table (offsets
+            # 0, 1, ... below and right of the cell, reversed above and left of it)
+            below, above = table[: m1 - i], table[i:0:-1]
+            field[i:, j:] += value * below[:, : m2 - j]
+            field[i:, :j] += value * below[:, j:0:-1]
+            field[:i, j:] += value * above[:, : m2 - j]
+            field[:i, :j] += value * above[:, j:0:-1]
 
     def influence_matrix(self, rows: np.ndarray, cols: np.ndarray,
                          source_rows: np.ndarray | None = None,
@@ -220,19 +217,24 @@ class FreeSpaceOperator:
         padded, spectrum = self._spectrum(pressure.shape)
         single = self._single_spectra.get(padded)
         if single is None:
-            single = self._single_spectra[padded] = spectrum.astype(np.complex64)
+            single = self._single_spectra[padded] = spectrum.astype(np.float32)
             if len(self._single_spectra) > self.cached_spectra:
                 self._single_spectra.popitem(last=False)
         return self._convolve(pressure.astype(np.float32), padded, single).astype(float)
 
     @staticmethod
     def _convolve(pressure, padded, spectrum):
+        """The pruned padded convolution; the transform along the padded rows runs on blocks of
+        :data:`_COLUMN_BLOCK` columns, so that no ``M₀ × (M₁/2 + 1)`` complex array is held (only the
+        ``m₁`` rows that hold the pressure and are returned)."""
         m1, m2 = pressure.shape
         transform = scipy.fft.rfft(pressure, n=padded[1], axis=1)
-        transform = scipy.fft.fft(transform, n=padded[0], axis=0, overwrite_x=True)
-        transform *= spectrum
-        transform = scipy.fft.ifft(transform, axis=0, overwrite_x=True)
-        return scipy.fft.irfft(transform[:m1], n=padded[1], axis=1)[:, :m2]
+        for start in range(0, transform.shape[1], _COLUMN_BLOCK):
+            block = slice(start, start + _COLUMN_BLOCK)
+            column = scipy.fft.fft(transform[:, block], n=padded[0], axis=0)
+            column *= spectrum[:, block]
+            transform[:, block] = scipy.fft.ifft(column, axis=0, overwrite_x=True)[:m1]
+        return scipy.fft.irfft(transform, n=padded[1], axis=1)[:, :m2].copy()
 
 
 class PeriodicOperator:

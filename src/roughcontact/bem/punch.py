@@ -9,7 +9,11 @@ products otherwise. With FFT products the conjugate gradients use single-precisi
 products inside a mixed-precision iterative refinement (Wilkinson 1963;
 Higham, *Accuracy and Stability of Numerical Algorithms*, 2nd ed., ch. 12): the
 residual is recomputed in double precision after each inner solve, so the
-stopping test is met in double precision at about half the cost per product.
+stopping test is met in double precision at about half the cost per product. The conjugate gradients
+of the FFT path are preconditioned with the FFT approximate inverse ``E*|q|/2`` of the half-space on the
+footprint's window (:mod:`roughcontact.bem.preconditioner`, without deflation of the mean): on the
+footprints of the largest loads of the default sphere at 1025² and 2049², 43 and 61 products instead of
+77 and 97.
 """
 
 from __future__ import annotations
@@ -22,6 +26,7 @@ from scipy.sparse.linalg import LinearOperator, cg
 from ..errors import ConvergenceError
 from .active_sets import _window_box, bounding_box, dense_limit
 from .operators import operator_for
+from .preconditioner import fourier_inverse
 
 __all__ = ["INNER_RTOL", "punch_stiffness", "contact_stiffness"]
 
@@ -50,8 +55,18 @@ def _system(operator, footprint, convolve):
     return LinearOperator((cells.size, cells.size), matvec=matvec, dtype=float)
 
 
-def _cg(system, rhs, start, rtol, maxiter):
-    solution, info = cg(system, rhs, x0=start, rtol=rtol, atol=0.0, maxiter=maxiter)
+def _preconditioner(operator, footprint):
+    """The FFT approximate inverse ``E*|q|/2`` of the half-space on the footprint's window
+    (:class:`~roughcontact.bem.preconditioner.FourierInverse`, the mean not deflated) as a
+    :class:`~scipy.sparse.linalg.LinearOperator`."""
+    cells = np.flatnonzero(footprint)
+    inverse = fourier_inverse(operator)
+    return LinearOperator((cells.size, cells.size), dtype=float,
+                          matvec=lambda values: inverse(footprint.shape, cells, values.ravel(), deflate=False))
+
+
+def _cg(system, rhs, start, rtol, maxiter, preconditioner=None):
+    solution, info = cg(system, rhs, x0=start, rtol=rtol, atol=0.0, maxiter=maxiter, M=preconditioner)
     if info != 0:
         raise ConvergenceError(f"the flat-punch stiffness solve did not converge in {info} iterations")
     return solution
@@ -100,6 +115,7 @@ def punch_stiffness(operator, footprint: np.ndarray, tol: float) -> float:
         system = operator.influence_matrix(*np.nonzero(footprint))
         return float(_cg(system, unit_depth, punch, tol, maxiter).sum())
     exact = _system(operator, footprint, operator)
+    preconditioner = _preconditioner(operator, footprint)
     if hasattr(operator, "single") and tol < INNER_RTOL:
         approximate = _system(operator, footprint, operator.single)
         target = tol * np.linalg.norm(unit_depth)
@@ -114,12 +130,12 @@ def punch_stiffness(operator, footprint: np.ndarray, tol: float) -> float:
             best_norm, best = norm, punch
             rtol = max(INNER_RTOL, 0.5 * target / norm)
             correction, info = cg(approximate, residual, x0=np.zeros(count), rtol=rtol, atol=0.0,
-                                  maxiter=_INNER_MAXITER)
+                                  maxiter=_INNER_MAXITER, M=preconditioner)
             if info != 0:  # the single-precision system misbehaves
                 break
             punch = best + correction
         punch = best
-    return float(_cg(exact, unit_depth, punch, tol, maxiter).sum())
+    return float(_cg(exact, unit_depth, punch, tol, maxiter, preconditioner).sum())
 
 
 def contact_stiffness(contact: np.ndarray, *, length: float, e_star: float, periodic: bool, tol: float) -> float:
