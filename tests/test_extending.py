@@ -28,6 +28,9 @@ import pytest
 import yaml
 from examples import EXAMPLES, module_of
 
+#: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
+pytestmark = pytest.mark.workflow
+
 ROOT = Path(__file__).resolve().parents[1]
 AXIS, MODEL, CLAIM = "plateau", "smooth_body", "x"
 
@@ -122,8 +125,11 @@ def _list(where: Path, registry: str) -> list:
 
 
 def test_every_example_names_its_module():
+    """Each worked example's first line names the new module it becomes (the per-load quantity's
+    example is run by tests/test_quantity_example.py)."""
     names = sorted(p.name for p in EXAMPLES.glob("*_example.py"))
-    assert names == ["axis_example.py", "claim_example.py", "model_example.py"], f"examples: {names}"
+    assert names == ["axis_example.py", "claim_example.py", "model_example.py", "quantity_example.py"], names
+    assert all(module_of(p).startswith("roughcontact.") for p in EXAMPLES.glob("*_example.py"))
 
 
 @pytest.mark.parametrize("registry, name", [("axes", AXIS), ("models", MODEL), ("claims", CLAIM)])
