@@ -145,3 +145,16 @@ def test_an_unknown_key_of_jobs_is_one_line_naming_it():
     with pytest.raises(ConfigError, match="bacth") as info:
         resolve_config(raw)
     assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize("n, measured_gb", [(2049, 0.43), (4097, 1.42), (8193, 4.67)])
+def test_declared_memory_follows_the_measured_peak(n, measured_gb):
+    """An indent job's mem_mb against the peak RSS measured for one seed of the default sphere's 27 loads
+    (benchmarks/RESULTS.md section 11, 2026-11-29): above it with room for the interpreter's imports
+    (at least 1.3×), and not so far above that a cluster holds memory idle (at most 3×)."""
+    from roughcontact.study.config import resolve_config
+
+    study = resolve_config({"grid": {"n": n, "coarse": None}, "hurst": [0.7], "radius": [0.5], "h_rms": [9e-3],
+                            "seeds": 1})
+    declared_gb = naming.indent_resources(study)["mem_mb"] / 1000
+    assert 1.3 * measured_gb <= declared_gb <= 3 * measured_gb

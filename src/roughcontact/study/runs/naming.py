@@ -192,22 +192,28 @@ def run_paths(study, pattern: str) -> list[str]:
     return [run_path(r, pattern) for r in runs(study)]
 
 
+#: peak bytes per grid cell of an indent job's load path (measured, see :func:`indent_resources`)
+INDENT_BYTES_PER_CELL = 100
+
+
 def indent_resources(study, runs: int = 1) -> dict:
     """Generous per-job estimates for schedulers (SLURM): ``mem_mb`` and
     ``runtime`` (minutes) of one ``indent`` job of *runs* runs (one after another,
     :func:`seed_blocks`), from the grid and load count.
 
-    Memory: surface generation (24 bytes per cell), the heights and two states
-    alive at a time (pressure, contact set: ~17 bytes per cell each), FFT
-    kernels up to the doubled grid, over a ~250 MB interpreter; times 1.5 (the
-    same for a batch: one run is alive at a time).
+    Memory: :data:`INDENT_BYTES_PER_CELL` bytes per cell over a ~250 MB interpreter, times 1.5
+    (the same for a batch: one run is alive at a time). Measured peak RSS of one seed of the
+    default sphere's 27 loads (``benchmarks/large_grid.py``, 2026-11-29, the preconditioned
+    solver): 0.10, 0.17, 0.43, 1.42 and 4.67 GB on 513², 1025², 2049², 4097² and 8193², that is
+    70–100 bytes per cell from 2049² on (heights, lift, two pressures, the window's work arrays,
+    one real kernel spectrum per precision, the table of coefficients).
     Runtime: measured ~10 s for a 513^2 flat run of 13 loads on one core,
     scaled by n^2 log n and the load count, times 10, times *runs*.
     """
     study = StudySettings.of(study)
     n = study.grid.n
     count = max(study.forces[kind_of(r)].count for r in study.radius)
-    mem = 250 + (n * n * (24 + 8 + 2 * 17) + 8 * (2 * n) ** 2 * 16) / 1e6
+    mem = 250 + n * n * INDENT_BYTES_PER_CELL / 1e6
     scale = (n * n * math.log(n)) / (513 * 513 * math.log(513)) * count / 13
     return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100),
             "runtime": int(max(5, math.ceil(10 * scale * 10 / 60 * runs)))}
