@@ -10,9 +10,7 @@ one module in this package that calls :func:`register` (worked example in the pa
 """
 from __future__ import annotations
 
-import importlib
-import pkgutil
-
+from ..._registry import import_modules, rank
 from .registry import MODELS, SELF_AFFINE, Model, Range, Surface, register
 
 __all__ = ["MODELS", "Model", "Range", "SELF_AFFINE", "Surface", "register", "models", "predict"]
@@ -24,14 +22,12 @@ _ORDER = ("eq16", "contact_scale", "greenwood_tripp", "mdr", "persson")
 
 def _rank(module: str) -> tuple:
     """Where a module's models stand: :data:`_ORDER`, then the other modules by name."""
-    short = module.rsplit(".", 1)[-1]
-    return (_ORDER.index(short) if short in _ORDER else len(_ORDER), short)
+    return rank(module, _ORDER)
 
 
 def _load() -> None:
     """Import every module of this package once (each registers its models)."""
-    for name in sorted((m.name for m in pkgutil.iter_modules(__path__) if m.name != "registry"), key=_rank):
-        importlib.import_module(f"{__name__}.{name}")
+    import_modules(__name__, __path__, _ORDER)
 
 
 def models() -> dict[str, Model]:

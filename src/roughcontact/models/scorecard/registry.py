@@ -13,6 +13,8 @@ import math
 import types
 from typing import Callable, Mapping
 
+from ..._registry import add
+
 __all__ = ["Surface", "Range", "Model", "MODELS", "register", "PERSSON_BINS_PER_DECADE", "SELF_AFFINE"]
 
 #: logarithmic bins per decade of a spectrum for the models that integrate over it (the grid's
@@ -217,7 +219,4 @@ MODELS: dict[str, Model] = {}
 
 def register(model: Model) -> Model:
     """Add *model* to :data:`MODELS` (a second model of the same name is an error)."""
-    if model.name in MODELS:
-        raise ValueError(f"model {model.name!r} is registered already")
-    MODELS[model.name] = model
-    return model
+    return add(MODELS, model.name, model, "model")

@@ -40,9 +40,7 @@ rows are kept. The ``claims`` rule's files, ``claims.csv`` and its page, are wri
 """
 from __future__ import annotations
 
-import importlib
-import pkgutil
-
+from ..._registry import import_modules
 from ..config.settings import StudySettings
 from .registry import CLAIMS, Claim, ClaimInputs, Combination, register, row, table_rows
 
@@ -59,9 +57,7 @@ def claims() -> dict[str, Claim]:
     """``{letter: Claim}`` of every registered claim in letter order (every module of this package
     imported once)."""
     if not _loaded:
-        found = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name != "registry")
-        for name in sorted(found, key=lambda m: (_ORDER.index(m) if m in _ORDER else len(_ORDER), m)):
-            importlib.import_module(f"{__name__}.{name}")
+        import_modules(__name__, __path__, _ORDER)
         _loaded.append(True)
     return dict(sorted(CLAIMS.items()))
 

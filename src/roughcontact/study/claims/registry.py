@@ -12,6 +12,7 @@ from typing import Callable
 
 import numpy as np
 
+from ..._registry import add
 from ..config import axes
 from ..config.axes import AXES, optional_axes
 from ..analysis.statistics import OFF_PAPER, split_verdict, untested
@@ -195,10 +196,7 @@ CLAIMS: dict[str, Claim] = {}
 
 def register(claim: Claim) -> Claim:
     """Add *claim* to :data:`CLAIMS` (one object per letter)."""
-    if claim.letter in CLAIMS:
-        raise ValueError(f"claim {claim.letter!r} is registered already")
-    CLAIMS[claim.letter] = claim
-    return claim
+    return add(CLAIMS, claim.letter, claim, "claim")
 
 
 def __getattr__(name: str):

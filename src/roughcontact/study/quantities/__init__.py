@@ -19,10 +19,9 @@ Units are written as the run files write them: in the study's normalised units (
 from __future__ import annotations
 
 import dataclasses
-import importlib
-import pkgutil
 from typing import Callable
 
+from ..._registry import add, import_modules
 from ..files.runfile import Variable
 
 __all__ = ["OPT_IN", "Load", "Quantity", "QUANTITIES", "names", "opted_in", "optional", "recorded", "register",
@@ -110,10 +109,7 @@ QUANTITIES: dict[str, Quantity] = {}
 
 def register(quantity: Quantity) -> Quantity:
     """Add *quantity* to :data:`QUANTITIES`; ``ValueError`` for a name registered already."""
-    if quantity.name in QUANTITIES:
-        raise ValueError(f"quantity {quantity.name!r} is registered already")
-    QUANTITIES[quantity.name] = quantity
-    return quantity
+    return add(QUANTITIES, quantity.name, quantity, "quantity")
 
 
 def opted_in(name: str) -> Callable:
@@ -153,9 +149,7 @@ _ORDER = ("normal", "plastic", "patches", "gap")
 
 def _load() -> None:
     """Import every module of this package (:data:`_ORDER` first, then the others by name)."""
-    found = sorted(m.name for m in pkgutil.iter_modules(__path__))
-    for name in sorted(found, key=lambda m: (_ORDER.index(m) if m in _ORDER else len(_ORDER), m)):
-        importlib.import_module(f"{__name__}.{name}")
+    import_modules(__name__, __path__, _ORDER)
 
 
 _load()

@@ -21,10 +21,10 @@ hardness ``inf``).
 from __future__ import annotations
 
 import dataclasses
-import importlib
 import math
-import pkgutil
 from typing import Callable
+
+from ...._registry import add, import_modules
 
 __all__ = ["Axis", "AXES", "register", "axis", "names", "optional_axes", "schema_properties", "ROLES", "kind_of",
            "coordinate_attrs",
@@ -181,12 +181,9 @@ AXES: dict[str, Axis] = {}
 
 def register(axis_: Axis) -> Axis:
     """Add *axis_* to :data:`AXES` (after the ones registered before it)."""
-    if axis_.name in AXES:
-        raise ValueError(f"axis {axis_.name!r} is registered already")
     if axis_.role not in ROLES:
         raise ValueError(f"axis {axis_.name!r}: role {axis_.role!r} is none of {ROLES}")
-    AXES[axis_.name] = axis_
-    return axis_
+    return add(AXES, axis_.name, axis_, "axis")
 
 
 def axis(name: str) -> Axis:
@@ -280,9 +277,7 @@ _ORDER = ("rough_body", "spectrum", "plasticity", "adhesion", "tangential")
 
 def _load() -> None:
     """Import every module of this package once (each registers its axes)."""
-    found = sorted(m.name for m in pkgutil.iter_modules(__path__))
-    for name in sorted(found, key=lambda m: (_ORDER.index(m) if m in _ORDER else len(_ORDER), m)):
-        importlib.import_module(f"{__name__}.{name}")
+    import_modules(__name__, __path__, _ORDER)
 
 
 _load()
