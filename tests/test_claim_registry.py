@@ -108,3 +108,11 @@ def test_rows_are_ordered_by_letter(stiffening_claim):
     letters = _table(_groups(np.ones(4)))["claim"].tolist()
     assert letters == sorted(letters), f"row order: {letters}"
 
+
+
+def test_describe_names_a_flat_row_flat():
+    """A row's sweep names the surface kind: a flat row has no sphere radius (R = inf)."""
+    from roughcontact.study.claims.registry import describe
+
+    assert describe({"hurst": 0.7, "radius": float("inf"), "h_rms": 9e-3}, 1.0, 65, 2).startswith("flat H = 0.7, h_rms")
+    assert describe({"hurst": 0.7, "radius": 0.5, "h_rms": 9e-3}, 1.0, 65, 2).startswith("sphere H = 0.7, R = 0.5")

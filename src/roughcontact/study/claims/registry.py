@@ -227,10 +227,12 @@ def row(claim, statement, measured, low, high, paper, verdict_text, *, sweep="",
 
 
 def describe(r, length: float, n: int, seeds: int) -> str:
-    """The sweep a row rests on: the combination *r* (axis -> coordinate; the optional axes off the
-    paper's setting, :func:`roughcontact.study.config.axes.off_paper`, then the axes of the tangential
+    """The sweep a row rests on: the combination *r* (axis -> coordinate: ``sphere H, R`` or, for
+    ``R = inf``, ``flat H``; h_rms; the optional axes off the paper's setting, :func:`roughcontact.study.config.axes.off_paper`, then the axes of the tangential
     problem it has, by their tag: ``nu``, ``mu``), seeds, grid."""
-    text = f"sphere H = {r['hurst']:g}, R = {r['radius']:g}, h_rms = {r['h_rms']:g}"
+    radius = float(r["radius"]) if r.get("radius") is not None else math.inf
+    body = f"sphere H = {r['hurst']:g}, R = {radius:g}" if math.isfinite(radius) else f"flat H = {r['hurst']:g}"
+    text = f"{body}, h_rms = {r['h_rms']:g}"
     for axis, value in axes.off_paper(r, length).items():
         text += f", {axis} = {value:g}"
     for spec in axes.optional_axes(normal=False):
