@@ -1,8 +1,9 @@
 """The package's import layers: no cycle, and no import that runs up the layers.
 
 Layers, bottom up: ``_validate`` and ``errors`` → ``surfaces`` → ``bem`` and ``models`` (which
-do not import each other) → ``study`` → ``cli``. Every import statement counts, also one inside
-a function. The test reads the sources with :mod:`ast` and imports nothing.
+do not import each other) → ``study`` → ``cli``; inside ``study``: ``files`` → ``quantities`` →
+``config`` → ``runs`` → ``analysis`` → ``claims`` → ``report`` (→ ``registries``). Every import
+statement counts, also one inside a function. The test reads the sources with :mod:`ast` and imports nothing.
 """
 from __future__ import annotations
 
@@ -111,3 +112,28 @@ def test_the_top_level_import_leaves_the_study_out():
         todo += sorted(GRAPH[module])
     study = sorted(m for m in reached if _part(m) in ("study", "cli"))
     assert not study, f"import roughcontact also imports {study}"
+
+
+#: the sub-layers inside ``study/``, bottom up: the run file's data model, the per-load quantities,
+#: the configuration, the runs, the analysis, the claims, the report; ``registries`` reads them all
+STUDY_LAYER = {"files": 0, "quantities": 1, "config": 2, "runs": 3, "analysis": 4, "claims": 5, "report": 6,
+               "registries": 7}
+
+
+def _study_part(module: str) -> str | None:
+    parts = module.split(".")
+    return parts[2] if len(parts) > 2 and parts[1] == "study" else None
+
+
+def test_the_study_has_the_sub_layers_it_is_tested_for():
+    parts = {_study_part(m) for m in MODULES} - {None}
+    assert parts == set(STUDY_LAYER), f"study's parts {sorted(parts)} differ from {sorted(STUDY_LAYER)}"
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if _study_part(m) is not None))
+def test_no_import_runs_up_the_study_sub_layers(module):
+    mine = _study_part(module)
+    for target in sorted(GRAPH[module]):
+        theirs = _study_part(target)
+        if theirs is not None:
+            assert STUDY_LAYER[theirs] <= STUDY_LAYER[mine], f"{module} imports {target}: {theirs} is above {mine}"
