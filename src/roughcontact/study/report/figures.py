@@ -99,21 +99,23 @@ class Inputs:
     radius: float
     seed: int
 
+    def _fitted(self, hurst) -> float:
+        """ζ(H) of the ζ table at *hurst*; NaN where it has none (no row, no fit, not a number)."""
+        if "zeta" not in self.zeta or "hurst" not in self.zeta:
+            return math.nan
+        try:
+            return float(dict(zip(self.zeta["hurst"], self.zeta["zeta"])).get(hurst, math.nan))
+        except (TypeError, ValueError):
+            return math.nan
+
     def zeta_fitted(self, hurst) -> bool:
         """Whether ζ(H) was fitted at *hurst* (a finite ``zeta`` in the ζ table)."""
-        if "zeta" not in self.zeta or "hurst" not in self.zeta:
-            return False
-        z = dict(zip(self.zeta["hurst"], self.zeta["zeta"])).get(hurst, math.nan)
-        try:
-            return math.isfinite(float(z))
-        except (TypeError, ValueError):
-            return False
+        return math.isfinite(self._fitted(hurst))
 
     def zeta_used(self, hurst):
         """Fitted ζ(H), or 1.7/(H+1) (eq. 13) where none was fitted."""
-        if self.zeta_fitted(hurst):
-            return float(dict(zip(self.zeta["hurst"], self.zeta["zeta"]))[hurst])
-        return float(paper.zeta_estimate(hurst))
+        z = self._fitted(hurst)
+        return z if math.isfinite(z) else float(paper.zeta_estimate(hurst))
 
     def zeta_label(self, hurst) -> str:
         """The legend's name of :meth:`zeta_used`: "fitted ζ = …" only where ζ was fitted."""

@@ -16,7 +16,7 @@ from ..config.settings import StudySettings
 from ..files import provenance
 from ..runs import naming as runs
 from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
-from .tables import write_html_table
+from .tables import not_measured, write_html_table
 
 __all__ = ["scorecard_lead", "scorecard_figure", "run_models"]
 
@@ -113,7 +113,7 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, out_csv, reason=empty_reason(study))
     write_groups(out_nc, curves, attrs)
-    absent = "" if len(table) else f"Not measured, because {empty_reason(study)}. "
+    absent = "" if len(table) else f"{not_measured(empty_reason(study))} "
     write_html_table(table, out_html, title="Model scorecard", lead=absent + scorecard_lead(table),
                      above=decision.matrix_html(table, list(registry.models())),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",

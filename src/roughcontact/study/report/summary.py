@@ -18,12 +18,14 @@ import html
 import math
 
 from ..analysis import decision
+from ..analysis.verdicts import NO_SPHERE
+from ..claims import NO_CLAIM
 from ..config import axes
 from ..analysis.statistics import VERDICTS
 from ..files import provenance
 from ..files.io import NO_ROW, REASON, read_csv
 from . import answer
-from .tables import DIGITS, VERDICT_COLOURS, stamp, verdict_cell
+from .tables import DIGITS, VERDICT_COLOURS, not_measured, stamp, verdict_cell
 
 __all__ = ["DIGITS", "NO_RECOMMENDATION", "fmt", "summary_html", "write_summary", "recommended_models"]
 
@@ -75,12 +77,6 @@ def _combination(row, length: float = 1.0) -> str:
     return html.escape(", ".join(parts))
 
 
-def verdict_counts(claims):
-    """Per comparison (claim letter and statement): the letter, the statement and the count of each
-    verdict word (:func:`roughcontact.study.report.answer.comparisons`)."""
-    return [(c.claim, c.statement, c.counts) for c in answer.comparisons(claims)]
-
-
 #: the model column of a combination whose scorecard recommends no model (no scored row)
 NO_RECOMMENDATION = "none (no scored model)"
 
@@ -124,7 +120,7 @@ def _png_data_uri(path) -> str:
 
 def _absent(text: str) -> str:
     """A table that has no row: "Not measured, because …" in place of the table."""
-    return f'<p class="rc-absent"><i>Not measured, because {html.escape(text)}.</i></p>'
+    return f'<p class="rc-absent"><i>{html.escape(not_measured(text))}</i></p>'
 
 
 def _branches_scored(row) -> bool:
@@ -159,7 +155,7 @@ def _why_empty(kind: str, size, table=None) -> str:
         return str(reason)
     if kind in ("crossover", "models"):
         if size is not None and not size.spheres:
-            return "the sweep has no sphere (every radius is .inf): no crossover and no model scorecard"
+            return NO_SPHERE
         return "no sphere combination has a resolved load on either branch"
     if size is not None and not size.flats:
         return "the sweep has no nominally flat surface and no sphere's fractal branch gave a fit of ζ"
@@ -191,7 +187,7 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
                      "it is tested on.</p>")
         parts.append(_table(["claim", "comparison"] + shown, rows))
     else:
-        parts.append(_absent("the sweep tests none of the paper's claims"))
+        parts.append(_absent(NO_CLAIM))
     # 2. Fig. 3
     if fig3_png is not None:
         parts.append(f"<h2>Fig. 3: stiffness against force{html.escape(fig3_title)}</h2>")

@@ -138,6 +138,11 @@ TABLE_PAGES = {
 }
 
 
+def not_measured(reason: str) -> str:
+    """What a table without a row says instead: ``Not measured, because <reason>.``"""
+    return f"Not measured, because {reason}."
+
+
 def csv_to_html(csv_path, html_path, table: str) -> None:
     """The CSV table *csv_path* as the report's page *html_path* (:func:`write_html_table`,
     title and lead of :data:`TABLE_PAGES` [*table*]); the CSV stays as it is. A table without a row
@@ -147,7 +152,7 @@ def csv_to_html(csv_path, html_path, table: str) -> None:
     rows = read_csv(csv_path, keep_default_na=False, na_values=[""])
     title, lead = TABLE_PAGES[table]
     if not len(rows):
-        lead = f"Not measured, because {rows.attrs[REASON]}. {lead}"
+        lead = f"{not_measured(rows.attrs[REASON])} {lead}"
     verdicts = tuple(c for c in rows.columns if str(c) == "verdict" or str(c).endswith("_verdict")
                      or str(c).startswith("verdict_"))
     write_html_table(rows, html_path, title=title, lead=lead, verdict_columns=verdicts)
