@@ -101,7 +101,7 @@ def test_an_unknown_quantity_is_refused_in_one_line():
 
 
 def test_a_quantity_an_adhesive_run_cannot_give_is_refused():
-    with pytest.raises(ConfigError, match="'fields'"):
+    with pytest.raises(ConfigError, match="'fields.quantities'"):
         resolve_config({**_cfg(quantities=["mean_gap"]), "work_of_adhesion": [1e-3]})
 
 
