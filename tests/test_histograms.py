@@ -24,7 +24,7 @@ from roughcontact.study import quantities
 from roughcontact.study.config import resolve_config
 from roughcontact.study.config.companions import coarse_config
 from roughcontact.study.config.units import study_units
-from roughcontact.study.files import io, runfile
+from roughcontact.study.files import io
 from roughcontact.study.quantities.histograms import histogram, load_histograms
 from roughcontact.study.runs import indent, jobs, naming
 

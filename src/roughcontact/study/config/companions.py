@@ -62,7 +62,8 @@ def fine_config(cfg) -> dict:
     it is finer still, else the fine grid's own), at the loads of the sphere load path up to
     ``grid.fine_to`` (the same loads: a log grid cut short), counting their contact patches (the
     single-asperity regime, :mod:`roughcontact.study.analysis.fine_reference`), without contact
-    fields, opt-in quantities, histograms, grid-error companions or the tangential axes. ``ValueError`` without ``grid.fine``."""
+    fields, opt-in quantities, histograms, grid-error companions or the tangential axes.
+    ``ValueError`` without ``grid.fine``."""
     import numpy as np
 
     grid = dict(cfg["grid"])

@@ -15,7 +15,8 @@ import numpy as np
 
 __all__ = ["Variable", "FIELD_VARIABLES",
            "TANGENTIAL_VARIABLES", "SLIP_VARIABLES", "SLIP_COORDS", "slip_fractions", "FIELD_GROUP", "RETRACT_VARIABLES",
-           "PULL_OFF_VARIABLES", "HISTOGRAM_VARIABLES", "HISTOGRAM_COORDS", "HISTOGRAM_DIMS", "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
+           "PULL_OFF_VARIABLES", "HISTOGRAM_VARIABLES", "HISTOGRAM_COORDS", "HISTOGRAM_DIMS",
+           "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
            "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)

@@ -10,9 +10,10 @@ counts sum to the contact cells and to the free cells, and a histogram over cell
 kept with the counts), so the ensemble keeps no mean histogram.
 
 Closed forms that test it (``tests/test_histograms.py``): under Hertz's pressure
-``p(r) = p₀ √(1 − r²/a²)`` (Hertz; K. L. Johnson, Contact Mechanics, 1985, §3.9) the share of the contact area with ``p < x``
-is ``(x/p₀)²``; out of contact the gap is Hertz's ``g(r) = r²/2R − d + u(r)`` (ibid., §3.9), which grows
-with ``r``, so the area with ``0 < g < x`` is the annulus ``π (r(x)² − a²)``.
+``p(r) = p₀ √(1 − r²/a²)`` (Hertz; K. L. Johnson, Contact Mechanics, 1985, §3.9) the share of the
+contact area with ``p < x`` is ``(x/p₀)²``; out of contact the gap is Hertz's
+``g(r) = r²/2R − d + u(r)`` (ibid., §3.9), which grows with ``r``, so the area with ``0 < g < x`` is
+the annulus ``π (r(x)² − a²)``.
 """
 from __future__ import annotations
 
