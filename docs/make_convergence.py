@@ -113,7 +113,8 @@ def make_page(workdirs) -> Path:
         "interpolation between loads; `extrapolated` with the first two loads' slope when the first load already "
         "has more); the grid error of the mean is at most 6 % from 20 cells on and below 1 % from 150 "
         "(docs/guide/pipeline.md). decades_below_Ftr = log10(F_tr/force_resolved), F_tr measured (eq. 16 with "
-        "free prefactors): the decades of force of the fractal branch that the grid resolves.",
+        "free prefactors): the decades of force of the fractal branch that the grid resolves; "
+        "decades_below_Ftr_eq17 the same below eq. 17's F_tr with ζ = 1.7/(H+1), one value for every grid.",
         "",
         _table(resolved),
         "",

@@ -160,18 +160,22 @@ def resolved_range(studies, *, cells=RESOLVED_CELLS):
     cells (:data:`RESOLVED_CELLS`), the force ``F_c`` at which the ensemble's mean contact reaches
     it (:func:`_force_at_cells`; ``extrapolated`` below the study's first load), the measured
     crossover ``F_tr`` of eq. 16 (crossover.csv) and ``decades_below_Ftr = log10(F_tr/F_c)``, the
-    decades of force of the fractal branch that the grid resolves (negative: not even the crossover)."""
+    decades of force of the fractal branch that the grid resolves (negative: not even the crossover);
+    the same below eq. 17's ``F_tr`` with ζ = 1.7/(H+1) (``Ftr_eq17``, one value for every grid of the
+    same sphere, so the column compares the grids without the scatter of the measured crossover)."""
     import pandas as pd
 
     rows = []
     for study in map(Path, studies):
         ds, n = _sphere(study)
         crossover = StudyDirectory(study).table("crossover").iloc[0]
-        ftr = float(crossover["Ftr_measured"])
+        ftr, ftr_eq17 = float(crossover["Ftr_measured"]), float(crossover["Ftr_pred_estimate"])
         force, mean_cells = ds["force"].values, ds["contact_cells"].values.mean(0)
         for threshold in cells:
             f_c, extrapolated = _force_at_cells(force, mean_cells, float(threshold))
             rows.append({"study": study.name, "n": n, "seeds": ds.sizes["seed"], "cells": int(threshold),
                          "force_resolved": f_c, "extrapolated": extrapolated, "Ftr_measured": ftr,
-                         "decades_below_Ftr": math.log10(ftr / f_c) if f_c > 0 else math.nan})
+                         "decades_below_Ftr": math.log10(ftr / f_c) if f_c > 0 else math.nan,
+                         "Ftr_eq17": ftr_eq17,
+                         "decades_below_Ftr_eq17": math.log10(ftr_eq17 / f_c) if f_c > 0 else math.nan})
     return pd.DataFrame(rows)
