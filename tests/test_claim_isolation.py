@@ -32,7 +32,7 @@ def _study(**extra):
     return StudySettings.of(resolve_config({
         "grid": {"n": 129}, "hurst": [HURST], "radius": list(RADII), "h_rms": [H_RMS], "seeds": len(SCALES),
         "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 9}},
-        "fit": {"zeta": {"min_cells": 20, "bootstrap": 200}, "slopes": {"high_min_ratio": 3.0}}, **extra}))
+        "fit": {"resolved_cells": 20, "bootstrap": 200, "slopes": {"high_min_ratio": 3.0}}, **extra}))
 
 
 def _groups(extra_axis=None) -> dict:

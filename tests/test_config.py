@@ -200,8 +200,8 @@ def test_a_config_of_only_the_sweep_axes_takes_every_default_of_the_schema():
     resolved = config.resolve_config(minimal)
     root = schema.load_schema(None)
     for path in (["grid", "n"], ["grid", "length"], ["e_star"], ["forces", "sphere"], ["forces", "flat"],
-                 ["solver", "tol"], ["solver", "stiffness"], ["solver", "rel_step"], ["fit", "zeta", "min_cells"],
-                 ["fit", "zeta", "max_area_fraction"], ["fit", "zeta", "bootstrap"], ["fit", "slopes", "window"],
+                 ["solver", "tol"], ["solver", "stiffness"], ["solver", "rel_step"], ["fit", "resolved_cells"],
+                 ["fit", "zeta", "max_area_fraction"], ["fit", "bootstrap"], ["fit", "confidence"], ["fit", "slopes", "window"],
                  ["exponent"], ["rolloff"], ["cutoff"], ["hardness"]):
         value = resolved
         for key in path:

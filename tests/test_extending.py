@@ -39,7 +39,7 @@ BASE = {"grid": {"n": 65, "length": 1.0, "coarse": None}, "e_star": 1.0, "hurst"
         "h_rms": [2.0e-2], "seeds": 2,
         "forces": {"sphere": {"from": 1.0e-5, "to": 1.0e-2, "count": 8}},
         "solver": {"tol": 1.0e-8, "stiffness": "punch"},
-        "fit": {"zeta": {"min_cells": 10, "bootstrap": 100}}}
+        "fit": {"resolved_cells": 10, "bootstrap": 100}}
 #: the same with the example axis at its paper value (null) and one other
 WITH_AXIS = {**BASE, AXIS: [None, 1.0]}
 
@@ -210,13 +210,13 @@ WORN_CHANGE = 0.02
 
 def test_the_worn_runs_change_k_at_the_resolved_loads(with_axis):
     """The example axis acts: at every load resolved in both runs (ensemble-mean contact cells
-    >= ``fit.zeta.min_cells``), k of the worn surface is compared with k of the unworn run of the
+    >= ``fit.resolved_cells``), k of the worn surface is compared with k of the unworn run of the
     same seed and radius; its largest relative change, per radius, exceeds :data:`WORN_CHANGE`."""
     from roughcontact.study.analysis.ensemble import resolved
     from roughcontact.study.files.io import read_groups
 
     sphere = read_groups(with_axis[0] / "results" / "stiffness.nc")["sphere"]
-    min_cells = WITH_AXIS["fit"]["zeta"]["min_cells"]
+    min_cells = WITH_AXIS["fit"]["resolved_cells"]
     for radius in WITH_AXIS["radius"]:
         worn, unworn = (sphere.sel({"radius": radius, AXIS: value}).squeeze().transpose("seed", "force")
                         for value in (1.0, np.inf))

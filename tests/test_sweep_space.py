@@ -118,7 +118,7 @@ def test_no_sphere_tables_have_their_columns():
 # --------------------------------------------------------------------------
 # the drawn sweeps
 # --------------------------------------------------------------------------
-FIT = {"zeta": {"min_cells": 4, "bootstrap": 50}}
+FIT = {"resolved_cells": 4, "bootstrap": 50}
 
 
 def _base(shape="sphere", *, n=33, seeds=2, count=5, hurst=(0.7,), h_rms=(0.01,)) -> dict:
@@ -262,10 +262,10 @@ def shrink(cfg: dict, base_dir: Path) -> dict:
             cfg[name] = values[:2]
     for rng in cfg.get("forces", {}).values():
         rng["count"] = min(int(rng["count"]), 4)
-    fit = cfg.setdefault("fit", {}).setdefault("zeta", {})
+    fit = cfg.setdefault("fit", {})
     fit["bootstrap"] = min(int(fit.get("bootstrap", 1000)), 50)
     if "topography" not in cfg:
-        fit["min_cells"] = min(int(fit.get("min_cells", 20)), 4)
+        fit["resolved_cells"] = min(int(fit.get("resolved_cells", 20)), 4)
     if "tangential" in cfg:
         tangential = cfg["tangential"]
         if isinstance(tangential.get("at"), list):

@@ -104,8 +104,8 @@ class VerdictWindows:
     @classmethod
     def of(cls, fit) -> "VerdictWindows":
         """The windows of a study's :class:`~roughcontact.study.config.settings.FitSettings`."""
-        return cls(min_cells=fit.zeta.min_cells, low_max_ratio=fit.slopes.low_max_ratio,
-                   high_min_ratio=fit.slopes.high_min_ratio, level=fit.zeta.confidence)
+        return cls(min_cells=fit.resolved_cells, low_max_ratio=fit.slopes.low_max_ratio,
+                   high_min_ratio=fit.slopes.high_min_ratio, level=fit.confidence)
 
 
 def sphere_verdicts(force, stiffness, contact_cells, *, case: SphereCase, zeta_fit: float,
@@ -276,7 +276,7 @@ def crossover_table(groups: dict, zeta_df, study):
     ds = groups["sphere"]
     L, E = study.grid.length, study.e_star
     windows = VerdictWindows.of(study.fit)
-    resamples = study.fit.zeta.bootstrap
+    resamples = study.fit.bootstrap
     indices = bootstrap_indices(ds.sizes["seed"], resamples)
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]

@@ -196,7 +196,7 @@ def _g(inputs):
     """F_tr ∝ R^((H+1)/(2−H)) h^(3/(2−H)) (eq. 17), exponents fitted per H."""
     cross, reps, study = _paper_spheres(inputs), inputs.replicates, inputs.study
     out = []
-    level = study.fit.zeta.confidence
+    level = study.fit.confidence
     for hurst in study.hurst:
         sub = cross[(cross["hurst"] == hurst) & np.isfinite(cross["Ftr_ci_low"])] if len(cross) else cross
         for axis, theory_value in (("radius", (hurst + 1) / (2 - hurst)), ("h_rms", 3 / (2 - hurst))):
