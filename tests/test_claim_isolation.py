@@ -21,7 +21,7 @@ from roughcontact.study.claims import Claim, register, row
 from roughcontact.study.claims.exponents import exponent_rows
 from roughcontact.study.config.resolve import resolve_config
 from roughcontact.study.config.settings import StudySettings
-from roughcontact.study.analysis.verdicts import crossover_table
+from roughcontact.study.analysis.crossover import crossover_table
 
 HURST, H_RMS, ZETA, RADII = 0.7, 9e-3, 1.05, (0.5, 1.0)
 FORCE = np.geomspace(1e-6, 1e-2, 9)

@@ -103,13 +103,13 @@ def test_no_sphere_tables_have_their_columns():
     """crossover.csv and models.csv of a sweep without a sphere: the sweep axes and the tables' columns."""
     import pandas as pd
 
-    from roughcontact.study.analysis import scorecard, verdicts
+    from roughcontact.study.analysis import crossover, scorecard
     from roughcontact.study.config import resolve
     from roughcontact.study.runs import naming as runs
 
     cfg = resolve.resolve_config(_base("flat"))
-    cross, reps = verdicts.crossover_table({}, pd.DataFrame(), cfg)
-    assert list(cross.columns) == [*runs.AXES["sphere"], *verdicts.CROSSOVER_COLUMNS] and not len(cross)
+    cross, reps = crossover.crossover_table({}, pd.DataFrame(), cfg)
+    assert list(cross.columns) == [*runs.AXES["sphere"], *crossover.CROSSOVER_COLUMNS] and not len(cross)
     models, curves = scorecard.scorecard({}, pd.DataFrame(), cfg)
     assert {"model", "combination", "max_rel_dev", *runs.AXES["sphere"]} <= set(models.columns) and not curves
     assert "no sphere" in scorecard.empty_reason(cfg)

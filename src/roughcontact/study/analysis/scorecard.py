@@ -64,7 +64,7 @@ from ..runs import naming as runs
 from . import not_modelled as unmodelled
 from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval, verdict
-from .verdicts import NO_SPHERE
+from .crossover import NO_SPHERE
 from ..config.settings import StudySettings
 
 __all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_reason"]

@@ -234,7 +234,7 @@ def _h(inputs):
                     untested(NOT_SWEPT, f"the sweep's smallest H is {min(study.hurst):g} (needs H <= 0.2 with "
                                         "spheres)"))]
     from ...models.greenwood_tripp import self_affine_sphere_curve
-    from ..analysis.verdicts import fit_eq16
+    from ..analysis.crossover import fit_eq16
 
     out = []
     hurst = min(small)

@@ -32,7 +32,7 @@ class ClaimInputs:
     ----------
     cross : pandas.DataFrame
         ``crossover.csv``: per sphere combination, eq. 16 fitted with free prefactors, the slopes
-        and their intervals (:mod:`roughcontact.study.analysis.verdicts`); empty without spheres.
+        and their intervals (:mod:`roughcontact.study.analysis.crossover`); empty without spheres.
     replicates : xarray.Dataset
         Bootstrap replicates of the crossover force (``crossover.nc``).
     zeta : pandas.DataFrame

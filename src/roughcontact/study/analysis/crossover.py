@@ -1,7 +1,7 @@
-"""Estimates with 95 % intervals and verdicts: the crossover force of eq. 17
-(eq. 16 fitted with free prefactors), the asymptotic slopes and the deviation
-from eq. 16, per sphere combination (``crossover.csv``); the claims table built
-from them is :mod:`roughcontact.study.claims`.
+"""The crossover table (``crossover.csv``, rule ``crossover``): per sphere combination, the
+crossover force of eq. 17 (eq. 16 fitted with free prefactors), the asymptotic slopes and the
+deviation from eq. 16, each with its 95 % interval and verdicts; the claims table built from them
+is :mod:`roughcontact.study.claims`.
 
 Every measured quantity carries a percentile bootstrap interval over seeds
 (Efron & Tibshirani, *An Introduction to the Bootstrap*, 1993, ch. 13): the
@@ -83,7 +83,7 @@ class SphereCase:
 
 @dataclasses.dataclass(frozen=True)
 class VerdictWindows:
-    """Which loads the verdicts use (``fit.zeta`` and ``fit.slopes`` of the configuration).
+    """Which loads the verdicts use (``fit.resolved_cells``, ``fit.confidence`` and ``fit.slopes`` of the configuration).
 
     Attributes
     ----------
