@@ -152,7 +152,7 @@ def test_lint_is_clean(tmp_path):
 
 def test_snakefmt_is_clean():
     """The workflow catalog's second check: every Snakemake file formatted by snakefmt."""
-    files = [ROOT / "Snakefile", *sorted((ROOT / "workflow/rules").glob("*.smk"))]
+    files = [ROOT / "Snakefile", *sorted((ROOT / "workflow/rules").rglob("*.smk"))]   # workflow/rules/extra/ too
     proc = subprocess.run([sys.executable, "-m", "snakefmt", "--check", *map(str, files)],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stdout + proc.stderr

@@ -26,7 +26,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
-from examples import EXAMPLES, module_of
+from examples import EXAMPLES, module_of, target_of
 
 #: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
 pytestmark = pytest.mark.workflow
@@ -126,10 +126,18 @@ def _list(where: Path, registry: str) -> list:
 
 def test_every_example_names_its_module():
     """Each worked example's first line names the new module it becomes (the per-load quantity's
-    example is run by tests/test_quantity_example.py)."""
+    example is run by tests/test_quantity_example.py, the rule's and the claim with a table of its
+    own by tests/test_rule_example.py)."""
     names = sorted(p.name for p in EXAMPLES.glob("*_example.py"))
-    assert names == ["axis_example.py", "claim_example.py", "model_example.py", "quantity_example.py"], names
+    assert names == ["axis_example.py", "claim_example.py", "model_example.py", "quantity_example.py",
+                     "rule_example.py", "table_claim_example.py"], names
     assert all(module_of(p).startswith("roughcontact.") for p in EXAMPLES.glob("*_example.py"))
+
+
+def test_every_workflow_example_names_its_file():
+    """The rule example's Snakemake file and script name where they go in the workflow."""
+    targets = sorted(str(target_of(p)) for p in (*EXAMPLES.glob("*_example.smk"), *EXAMPLES.glob("*_example_*.py")))
+    assert targets == ["workflow/rules/extra/resolved_loads.smk", "workflow/scripts/resolved_loads.py"], targets
 
 
 @pytest.mark.parametrize("registry, name", [("axes", AXIS), ("models", MODEL), ("claims", CLAIM)])
