@@ -50,7 +50,11 @@ def table():
 
 
 def test_every_registered_claim_has_rows(table):
-    assert set(claims.claims()) <= set(table["claim"]), sorted(set(claims.claims()) - set(table["claim"]))
+    """Every claim whose inputs the table was given (a claim that reads a table of its own, an
+    InputTable such as the guide's (y), is run by its own test)."""
+    own = set(claims.input_tables())
+    expected = {letter for letter, claim in claims.claims().items() if not own & set(claim.needed)}
+    assert expected <= set(table["claim"]), sorted(expected - set(table["claim"]))
 
 
 def test_no_claim_fails(table):
