@@ -32,7 +32,7 @@ def stiffening(combination):
     untested (unresolved) with fewer than two resolved loads."""
     fit = combination.study.fit                                    # the study's resolved-load and bootstrap settings
     cells = combination.data["contact_cells"].values.mean(0)       # (force,), ensemble-mean contact cells
-    k = combination.data["stiffness"].values[:, resolved(cells, fit.resolved_cells)]   # (seed, resolved force), k/(E* L)
+    k = combination.data["stiffness"].values[:, resolved(cells, fit.resolved_cells)]  # (seed, resolved force), k/(E* L)
     note = f"measured: min over the resolved loads (>= {fit.resolved_cells} contact cells) of k(F_i+1)/k(F_i) - 1"
     if k.shape[1] < 2:
         return row("x", STATEMENT, math.nan, math.nan, math.nan, 0.0,

@@ -20,7 +20,7 @@ from ..config.units import to_metres
 from .conductance import conductance_variables
 from ..runs import naming as runs
 from .ensemble import ensemble
-from ..files.io import check_run, declaration, open_run, read_run, stale, write_groups
+from ..files.io import check_run, declaration, open_run, read_run, rerun_hint, stale, write_groups
 from ..runs.jobs import JobSettings, options_of, shared_settings
 from ..config.settings import StudySettings
 
@@ -182,12 +182,12 @@ def read_declared(path, row: dict, shared: dict):
         job = JobSettings.from_record(declaration(path, ds))
     except (KeyError, TypeError, ValueError) as exc:
         raise MergeError(f"{path}: foreign NetCDF file (its 'config' attribute is no job record of an indent run: "
-                         f"{type(exc).__name__}: {exc}); delete {path} and rerun snakemake to recompute it") from exc
+                         f"{type(exc).__name__}: {exc}); {rerun_hint(path)}") from exc
     for name in runfile.SCALARS:   # the run its name says
         got, want = getattr(job, name), row[name]
         if not float(got) == float(want):
             raise MergeError(f"{path}: holds {name} = {float(got):g}, expected {float(want):g} from its name; "
-                             f"delete {path} and rerun snakemake to recompute it")
+                             f"{rerun_hint(path)}")
     check_run(path, ds, job.file_spec())
     stale(path, {**{key: getattr(job, key) for key in shared}, "options": job.options},
           {**shared, "options": options_of(row)})

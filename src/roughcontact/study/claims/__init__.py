@@ -43,7 +43,8 @@ from __future__ import annotations
 
 from ..._registry import import_modules
 from ..config.settings import StudySettings
-from .registry import CLAIMS, TABLES, Claim, ClaimInputs, Combination, InputTable, register, register_table, row, table_rows
+from .registry import (CLAIMS, TABLES, Claim, ClaimInputs, Combination, InputTable, register, register_table, row,
+                       table_rows)
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "InputTable", "TABLES", "register", "register_table", "row",
            "claims", "claims_table", "failed", "input_tables", "EQ16_TOLERANCE", "prl2012_exponent", "CLAIMS_COLUMNS",

@@ -18,7 +18,8 @@ from ..config import axes
 from ..config.axes import AXES, optional_axes
 from ..analysis.statistics import OFF_PAPER, split_verdict, untested
 
-__all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "InputTable", "TABLES", "register", "register_table", "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
+__all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "InputTable", "TABLES", "register", "register_table",
+           "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
            "combinations", "table_rows", "sphere", "flat", "with_crossover", "paper_setting", "at_theory", "all_of",
            "describe", "off_theory", "flat_zeta_rows"]
 

@@ -17,7 +17,7 @@ from . import provenance, runfile
 from .provenance import write_netcdf
 
 __all__ = ["NO_ROW", "REASON", "check_run", "declaration", "empty_reason", "open_run", "read_csv", "read_run",
-           "reason_path", "read_groups", "stale", "write_csv", "write_groups", "write_netcdf"]
+           "reason_path", "read_groups", "rerun_hint", "stale", "write_csv", "write_groups", "write_netcdf"]
 
 
 #: the column of an empty table's sidecar (:func:`reason_path`): why the table has no row
@@ -119,7 +119,8 @@ def read_run(path, expected=None):
     return ds
 
 
-def _hint(path) -> str:
+def rerun_hint(path) -> str:
+    """What to do about the bad or stale run file *path*: the end of every :class:`MergeError` about it."""
     return f"delete {path} and rerun snakemake to recompute it"
 
 
@@ -137,7 +138,7 @@ def open_run(path):
             return ds.load()
     except Exception as exc:
         raise MergeError(f"{path}: not a readable NetCDF file ({type(exc).__name__}: {exc}); "
-                         f"it may be truncated; {_hint(path)}") from exc
+                         f"it may be truncated; {rerun_hint(path)}") from exc
 
 
 def declaration(path, ds) -> dict:
@@ -151,9 +152,10 @@ def declaration(path, ds) -> dict:
     except ValueError:
         record = None
     if not isinstance(record, dict):
-        raise MergeError(f"{path}: foreign NetCDF file (no job record in its 'config' attribute); {_hint(path)}")
+        raise MergeError(f"{path}: foreign NetCDF file (no job record in its 'config' attribute); {rerun_hint(path)}")
     if ds.attrs.get("config_hash") != provenance.config_hash(record):
-        raise MergeError(f"{path}: its 'config' attribute is not the one its config_hash was made of; {_hint(path)}")
+        raise MergeError(f"{path}: its 'config' attribute is not the one its config_hash was made of; "
+                         f"{rerun_hint(path)}")
     return record
 
 
@@ -161,7 +163,7 @@ def check_run(path, ds, spec: runfile.RunFileSpec | None) -> None:
     """Check the run file *ds* (read from *path*) against *spec* (``None``: only that it is a
     generated or adhesive run file): :func:`read_run` without the reading."""
     path = str(path)
-    hint = _hint(path)
+    hint = rerun_hint(path)
     title = spec.title if spec is not None else runfile.TITLE
     required = spec.variables if spec is not None else ("force", *runfile.SCALARS)
     missing = [v for v in required if v not in ds.variables]
@@ -201,7 +203,7 @@ def stale(path, recorded: dict, current: dict) -> None:
     now = json.loads(provenance.canonical_json(current))
     then = json.loads(provenance.canonical_json(recorded))
     if then != now:
-        raise MergeError(f"{path}: was computed with other settings{_differences(then, now)}; {_hint(path)} "
+        raise MergeError(f"{path}: was computed with other settings{_differences(then, now)}; {rerun_hint(path)} "
                          f"or run snakemake with --rerun-triggers params")
 
 
