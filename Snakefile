@@ -1,6 +1,8 @@
 # roughcontact parameter study (Pohrt & Popov 2013): `snakemake --cores 2`
 # Sweep: config.yaml (or --configfile presets/*.yaml); output: results/; report:
 # `snakemake --report results/report.html`.  See README.md.
+from pathlib import Path
+
 from snakemake.utils import min_version
 
 min_version("9.0")
@@ -29,6 +31,13 @@ include: "workflow/rules/adhesion.smk"
 include: "workflow/rules/stickiness.smk"
 include: "workflow/rules/tangential.smk"
 include: "workflow/rules/histograms.smk"
+
+
+# rules of your own: every file of workflow/rules/extra/, by name (docs/guide/package.md, "Adding a rule")
+EXTRA_RULES = Path(workflow.basedir, "workflow", "rules", "extra")
+for extra_rules in sorted(EXTRA_RULES.glob("*.smk")):
+
+    include: extra_rules
 
 
 localrules:

@@ -2,7 +2,7 @@
 
 Reads a finished sweep (``results/stiffness.nc`` and ``results/zeta.csv`` of a directory run
 with one sphere combination, e.g. ``presets/crossover.yaml``, 400 seeds) and recomputes the
-crossover estimate of ``crossover.csv`` (:func:`roughcontact.verdicts.crossover_table`: eq. 16
+crossover estimate of ``crossover.csv`` (:func:`roughcontact.crossover.crossover_table`: eq. 16
 with free prefactors, percentile bootstrap over seeds) on
 
 * the first N seeds, N = 25, 50, 100, … up to all of them: the half-width of the interval
@@ -31,16 +31,16 @@ import pandas as pd
 
 from roughcontact.study.config import resolve as config
 from roughcontact.study.files import io as study_io
-from roughcontact.study.analysis import verdicts
+from roughcontact.study.analysis import crossover
 
 COLUMNS = ["Ftr_measured", "Ftr_ci_low", "Ftr_ci_high", "Ftr_pred_fit", "verdict_fit",
            "Ftr_pred_estimate", "verdict_estimate"]
 
 
 def estimate(groups: dict, zeta: pd.DataFrame, cfg: dict, seeds: np.ndarray) -> dict:
-    """The crossover row of :func:`~roughcontact.verdicts.crossover_table` on the seeds ``seeds``."""
+    """The crossover row of :func:`~roughcontact.crossover.crossover_table` on the seeds ``seeds``."""
     subset = {kind: ds.isel(seed=seeds) for kind, ds in groups.items()}
-    table, _ = verdicts.crossover_table(subset, zeta, cfg)
+    table, _ = crossover.crossover_table(subset, zeta, cfg)
     if len(table) != 1:
         raise SystemExit(f"expected one sphere combination, found {len(table)}")
     row = table.iloc[0]

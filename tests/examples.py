@@ -36,15 +36,27 @@ def module_of(example: Path) -> str:
 
 
 def registries() -> dict:
-    """``{"axes": AXES, "models": MODELS, "claims": CLAIMS}``, the registries' own dicts, each with
-    every module of its package imported (the built-ins and whatever else is there)."""
+    """``{"axes": AXES, "models": MODELS, "claims": CLAIMS, "claim tables": TABLES}``, the
+    registries' own dicts, each with every module of its package imported (the built-ins and
+    whatever else is there)."""
     from roughcontact.models import scorecard
     from roughcontact.study import claims
     from roughcontact.study.config import axes
 
     scorecard.models()
     claims.claims()
-    return {"axes": axes.AXES, "models": scorecard.MODELS, "claims": claims.CLAIMS}
+    return {"axes": axes.AXES, "models": scorecard.MODELS, "claims": claims.CLAIMS, "claim tables": claims.TABLES}
+
+
+def target_of(example: Path) -> Path:
+    """The file an example becomes, relative to the checkout: a module's (``# module: ...``,
+    :func:`module_of`) under ``src/``, or the path a workflow file's first line names
+    (``# file: workflow/<path>``)."""
+    first = example.read_text().splitlines()[0].strip()
+    match = re.fullmatch(r"# file: (workflow/[\w./-]+)", first)
+    if match:
+        return Path(match.group(1))
+    return Path("src", *module_of(example).split(".")).with_suffix(".py")
 
 
 def _forget_schema() -> None:
@@ -86,16 +98,19 @@ def in_order(expected, registered) -> bool:
 
 
 @contextlib.contextmanager
-def loaded(name: str, registry: dict, key: str):
+def loaded(name: str, registry: dict, key: str, *, also: tuple = ()):
     """Import the example *name* (``model_example.py``) as its module, which registers one entry
     *key* in *registry*; yield the module; afterwards the registries and the module table are as
     before. Where the example is in the package already (copied in, as the guide says), its
-    entry is replaced by the guide's text for the scope: loading it twice is no error."""
+    entry is replaced by the guide's text for the scope: loading it twice is no error. *also*:
+    further ``(registry, key)`` the example registers (a claim's input table)."""
     path = EXAMPLES / name
     module = module_of(path)
     before = sys.modules.get(module)
     with scoped_registries():
         registry.pop(key, None)
+        for other, other_key in also:
+            other.pop(other_key, None)
         spec = importlib.util.spec_from_file_location(module, path)
         loaded_module = importlib.util.module_from_spec(spec)
         sys.modules[module] = loaded_module

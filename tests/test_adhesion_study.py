@@ -211,7 +211,7 @@ def test_workflow_end_to_end(tmp_path):
     config = {"grid": {"n": 65}, "hurst": [0.7], "radius": [0.5], "h_rms": [1e-5, 5e-3],
               "work_of_adhesion": [0.0, 3e-3], "seeds": 2,
               "forces": {"sphere": {"from": 1e-4, "to": 1.6e-2, "count": 3}},
-              "fit": {"zeta": {"min_cells": 10, "bootstrap": 200}},
+              "fit": {"resolved_cells": 10, "bootstrap": 200},
               "stickiness": {"n": 64, "cutoff": 4, "seeds": 2, "number": [0.3, 1000.0], "steps": 12}}
     (tmp_path / "c.yaml").write_text(yaml.safe_dump(config))
     proc = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--cores", "2", "-q",

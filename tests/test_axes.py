@@ -29,7 +29,7 @@ CONFIG = {
     "exponent": [2.0, 4.0], "cutoff": [None, 0.05], "hardness": [None, 0.05], "seeds": 2,
     "forces": {"sphere": {"from": 1.0e-4, "to": 5.0e-3, "count": 6}},
     "solver": {"tol": 1.0e-8, "stiffness": "punch"},
-    "fit": {"zeta": {"min_cells": 10, "max_area_fraction": 0.1, "bootstrap": 100},
+    "fit": {"resolved_cells": 10, "bootstrap": 100, "zeta": {"max_area_fraction": 0.1},
             "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 3.0}},
 }
 

@@ -25,7 +25,7 @@ GOOD = {
     "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 6},
                "flat": {"from": 1e-5, "to": 1e-4, "count": 4}},
     "solver": {"tol": 1e-8, "stiffness": "punch"},
-    "fit": {"zeta": {"min_cells": 5, "max_area_fraction": 0.1},
+    "fit": {"resolved_cells": 5, "zeta": {"max_area_fraction": 0.1},
             "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 5.0}},
 }
 
@@ -80,7 +80,7 @@ BAD = [
     ("tol-zero", "solver.tol", 0.0, "solver.tol"),
     ("stiffness-unknown", "solver.stiffness", "secant", "solver.stiffness"),
     ("maxiter-zero", "solver.maxiter", 0, "solver.maxiter"),
-    ("min-cells-zero", "fit.zeta.min_cells", 0, "fit.zeta.min_cells"),
+    ("resolved-cells-zero", "fit.resolved_cells", 0, "fit.resolved_cells"),
     ("area-fraction-above-one", "fit.zeta.max_area_fraction", 1.5, "fit.zeta.max_area_fraction"),
 ]
 

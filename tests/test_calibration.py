@@ -33,7 +33,7 @@ def _made_up(tmp_path, hurst, constants, scatter=(0.9, 1.0, 1.1)):
                     coords={"hurst": hurst, "radius": [0.5], "h_rms": [1e-2], "seed": [0, 1, 2], "force": FORCES})
     cfg = resolve_config({"grid": {"n": 129}, "hurst": hurst, "radius": [0.5], "h_rms": [1e-2], "seeds": 3,
                           "forces": {"sphere": {"from": float(FORCES[0]), "to": float(FORCES[-1]),
-                                                "count": len(FORCES)}}, "fit": {"zeta": {"min_cells": 20}}})
+                                                "count": len(FORCES)}}, "fit": {"resolved_cells": 20}})
     (tmp_path / "results").mkdir()
     write_groups(tmp_path / "results" / "stiffness.nc", {"sphere": ds}, {"config": canonical_json(cfg)})
     return tmp_path

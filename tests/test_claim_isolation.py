@@ -21,7 +21,7 @@ from roughcontact.study.claims import Claim, register, row
 from roughcontact.study.claims.exponents import exponent_rows
 from roughcontact.study.config.resolve import resolve_config
 from roughcontact.study.config.settings import StudySettings
-from roughcontact.study.analysis.verdicts import crossover_table
+from roughcontact.study.analysis.crossover import crossover_table
 
 HURST, H_RMS, ZETA, RADII = 0.7, 9e-3, 1.05, (0.5, 1.0)
 FORCE = np.geomspace(1e-6, 1e-2, 9)
@@ -32,7 +32,7 @@ def _study(**extra):
     return StudySettings.of(resolve_config({
         "grid": {"n": 129}, "hurst": [HURST], "radius": list(RADII), "h_rms": [H_RMS], "seeds": len(SCALES),
         "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 9}},
-        "fit": {"zeta": {"min_cells": 20, "bootstrap": 200}, "slopes": {"high_min_ratio": 3.0}}, **extra}))
+        "fit": {"resolved_cells": 20, "bootstrap": 200, "slopes": {"high_min_ratio": 3.0}}, **extra}))
 
 
 def _groups(extra_axis=None) -> dict:

@@ -163,7 +163,7 @@ HURST, RADIUS, H_RMS, ZETA = 1.4, 0.5, 9e-3, 0.8
 CFG = StudySettings.of(resolve_config({
     "grid": {"n": 129}, "hurst": [HURST], "radius": [RADIUS], "h_rms": [H_RMS], "seeds": 4,
     "forces": {"sphere": {"from": 1e-5, "to": 1e-2, "count": 6}},
-    "fit": {"zeta": {"min_cells": 20, "bootstrap": 200}, "slopes": {"high_min_ratio": 3.0}}}))
+    "fit": {"resolved_cells": 20, "bootstrap": 200, "slopes": {"high_min_ratio": 3.0}}}))
 
 
 def _table(hurst, g=None):

@@ -26,7 +26,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
-from examples import EXAMPLES, module_of
+from examples import EXAMPLES, module_of, target_of
 
 #: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
 pytestmark = pytest.mark.workflow
@@ -39,7 +39,7 @@ BASE = {"grid": {"n": 65, "length": 1.0, "coarse": None}, "e_star": 1.0, "hurst"
         "h_rms": [2.0e-2], "seeds": 2,
         "forces": {"sphere": {"from": 1.0e-5, "to": 1.0e-2, "count": 8}},
         "solver": {"tol": 1.0e-8, "stiffness": "punch"},
-        "fit": {"zeta": {"min_cells": 10, "bootstrap": 100}}}
+        "fit": {"resolved_cells": 10, "bootstrap": 100}}
 #: the same with the example axis at its paper value (null) and one other
 WITH_AXIS = {**BASE, AXIS: [None, 1.0]}
 
@@ -126,10 +126,18 @@ def _list(where: Path, registry: str) -> list:
 
 def test_every_example_names_its_module():
     """Each worked example's first line names the new module it becomes (the per-load quantity's
-    example is run by tests/test_quantity_example.py)."""
+    example is run by tests/test_quantity_example.py, the rule's and the claim with a table of its
+    own by tests/test_rule_example.py)."""
     names = sorted(p.name for p in EXAMPLES.glob("*_example.py"))
-    assert names == ["axis_example.py", "claim_example.py", "model_example.py", "quantity_example.py"], names
+    assert names == ["axis_example.py", "claim_example.py", "model_example.py", "quantity_example.py",
+                     "rule_example.py", "table_claim_example.py"], names
     assert all(module_of(p).startswith("roughcontact.") for p in EXAMPLES.glob("*_example.py"))
+
+
+def test_every_workflow_example_names_its_file():
+    """The rule example's Snakemake file and script name where they go in the workflow."""
+    targets = sorted(str(target_of(p)) for p in (*EXAMPLES.glob("*_example.smk"), *EXAMPLES.glob("*_example_*.py")))
+    assert targets == ["workflow/rules/extra/resolved_loads.smk", "workflow/scripts/resolved_loads.py"], targets
 
 
 @pytest.mark.parametrize("registry, name", [("axes", AXIS), ("models", MODEL), ("claims", CLAIM)])
@@ -210,13 +218,13 @@ WORN_CHANGE = 0.02
 
 def test_the_worn_runs_change_k_at_the_resolved_loads(with_axis):
     """The example axis acts: at every load resolved in both runs (ensemble-mean contact cells
-    >= ``fit.zeta.min_cells``), k of the worn surface is compared with k of the unworn run of the
+    >= ``fit.resolved_cells``), k of the worn surface is compared with k of the unworn run of the
     same seed and radius; its largest relative change, per radius, exceeds :data:`WORN_CHANGE`."""
     from roughcontact.study.analysis.ensemble import resolved
     from roughcontact.study.files.io import read_groups
 
     sphere = read_groups(with_axis[0] / "results" / "stiffness.nc")["sphere"]
-    min_cells = WITH_AXIS["fit"]["zeta"]["min_cells"]
+    min_cells = WITH_AXIS["fit"]["resolved_cells"]
     for radius in WITH_AXIS["radius"]:
         worn, unworn = (sphere.sel({"radius": radius, AXIS: value}).squeeze().transpose("seed", "force")
                         for value in (1.0, np.inf))

@@ -39,7 +39,7 @@ def warnings_are_errors(monkeypatch):
 def _study(**extra):
     return StudySettings.of(config.resolve_config({
         "grid": {"n": 33, "length": 1.0}, "e_star": 1.0, "hurst": [0.7], "radius": [0.5, math.inf],
-        "h_rms": [0.01], "seeds": 2, "fit": {"zeta": {"min_cells": 10}}, **extra}))
+        "h_rms": [0.01], "seeds": 2, "fit": {"resolved_cells": 10}, **extra}))
 
 
 def _ensemble(study, *, resolved: bool):

@@ -27,7 +27,7 @@ REPO = Path(__file__).resolve().parents[1]
 
 GOOD = {"grid": {"n": 97, "length": 1.0, "coarse": 49, "fine": 193}, "hurst": [0.7], "radius": [0.5],
         "h_rms": [9e-3], "seeds": 4, "forces": {"sphere": {"from": 1e-5, "to": 1e-2, "count": 10}},
-        "fit": {"zeta": {"min_cells": 10, "bootstrap": 200}}}
+        "fit": {"resolved_cells": 10, "bootstrap": 200}}
 
 
 def _with(grid=None, **changes):

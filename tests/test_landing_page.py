@@ -16,7 +16,7 @@ from browser import needs_chromium, report_page
 pytestmark = pytest.mark.workflow
 
 ROOT = Path(__file__).resolve().parents[1]
-_COMMON = "grid: {n: 33, length: 1.0, coarse: null}\nsolver: {tol: 1.0e-8}\nfit: {zeta: {min_cells: 4, bootstrap: 50}}\n"
+_COMMON = "grid: {n: 33, length: 1.0, coarse: null}\nsolver: {tol: 1.0e-8}\nfit: {resolved_cells: 4, bootstrap: 50}\n"
 SWEEPS = {
     "sphere-only": _COMMON + "hurst: [0.7]\nradius: [0.5]\nh_rms: [9.0e-3]\nseeds: 2\n"
                              "forces: {sphere: {from: 1.0e-4, to: 1.0e-2, count: 5}}\n",

@@ -13,7 +13,7 @@ from roughcontact.study.analysis.measured_scorecard import measured_scorecard, r
 from roughcontact.study.config.resolve import load_config, study_settings
 
 ROOT = Path(__file__).resolve().parents[1]
-FIT = study_settings(load_config(ROOT / "presets" / "tiny.yaml")).fit.zeta   # 200 resamples, 95 %
+FIT = study_settings(load_config(ROOT / "presets" / "tiny.yaml")).fit   # 200 resamples, 95 %
 #: the tiles' scatter about k = 1 (relative, per tile and load) and the model's k
 SCATTER, MODEL_K = 0.1, 1.2
 

@@ -60,7 +60,7 @@ def _cfg(**extra):
     base = {"units": UNITS, "e_star": E_STAR, "radius": [20.0, float("inf")], "tile": 32,
             "forces": {"sphere": {"from": 1e-5, "to": 3e-3, "count": 4},
                        "flat": {"from": 1e-3, "to": 1e-2, "count": 3}},
-            "fit": {"zeta": {"bootstrap": 200}, "spectrum": {"band": [1.6, 0.25]}}}
+            "fit": {"bootstrap": 200, "spectrum": {"band": [1.6, 0.25]}}}
     return {**base, **extra}
 
 

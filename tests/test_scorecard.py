@@ -17,7 +17,7 @@ from roughcontact.study.config.settings import StudySettings
 CFG = StudySettings.of(resolve_config({
     "grid": {"n": 129}, "hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 4,
     "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 9}},
-    "fit": {"zeta": {"min_cells": 20, "bootstrap": 200}, "slopes": {"high_min_ratio": 3.0}}}))
+    "fit": {"resolved_cells": 20, "bootstrap": 200, "slopes": {"high_min_ratio": 3.0}}}))
 HURST, RADIUS, H_RMS, ZETA = 0.7, 0.5, 9e-3, 1.05
 FORCE = np.geomspace(1e-6, 1e-2, 9)
 

@@ -48,7 +48,7 @@ TINY = {
     "forces": {"sphere": {"from": 1e-6, "to": 1e-2, "count": 6},
                "flat": {"from": 1e-5, "to": 1e-4, "count": 4}},
     "solver": {"tol": 1e-8, "stiffness": "punch"},
-    "fit": {"zeta": {"min_cells": 5, "max_area_fraction": 0.1},
+    "fit": {"resolved_cells": 5, "zeta": {"max_area_fraction": 0.1},
             "slopes": {"low_max_ratio": 0.3, "high_min_ratio": 5.0}},
     "jobs": {"batch": 1},   # one SLURM job per run (the setting for clusters), run by its seed wildcard
 }

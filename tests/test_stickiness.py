@@ -93,7 +93,7 @@ def test_more_seeds_or_numbers_leave_a_runs_settings_and_hash_unchanged():
         assert other.job("H0.8_N0.5", 1) == run, other
         assert provenance.config_hash(other.job("H0.8_N0.5", 1).record()) == provenance.config_hash(run.record())
     bootstrap = StickinessSettings.of(resolve_config({**TINY, "stickiness": {"hurst": [0.8], "number": [0.5]},
-                                                      "fit": {"zeta": {"bootstrap": 17}}}))
+                                                      "fit": {"bootstrap": 17}}))
     assert bootstrap.job("H0.8_N0.5", 1) == run, "the merge's bootstrap is no setting of a run"
 
 

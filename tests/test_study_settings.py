@@ -63,7 +63,7 @@ def test_values_are_those_of_the_resolved_config(study):
     assert study.grid.n == cfg["grid"]["n"], "grid.n"
     assert study.forces["sphere"] == ForceRange(cfg["forces"]["sphere"]["from"], cfg["forces"]["sphere"]["to"],
                                                 cfg["forces"]["sphere"]["count"]), "forces.sphere"
-    assert study.fit.zeta.min_cells == cfg["fit"]["zeta"]["min_cells"], "fit.zeta.min_cells"
+    assert study.fit.resolved_cells == cfg["fit"]["resolved_cells"], "fit.resolved_cells"
     assert study.seeds == tuple(cfg["seeds"]), "seeds"
 
 

@@ -103,13 +103,13 @@ def test_no_sphere_tables_have_their_columns():
     """crossover.csv and models.csv of a sweep without a sphere: the sweep axes and the tables' columns."""
     import pandas as pd
 
-    from roughcontact.study.analysis import scorecard, verdicts
+    from roughcontact.study.analysis import crossover, scorecard
     from roughcontact.study.config import resolve
     from roughcontact.study.runs import naming as runs
 
     cfg = resolve.resolve_config(_base("flat"))
-    cross, reps = verdicts.crossover_table({}, pd.DataFrame(), cfg)
-    assert list(cross.columns) == [*runs.AXES["sphere"], *verdicts.CROSSOVER_COLUMNS] and not len(cross)
+    cross, reps = crossover.crossover_table({}, pd.DataFrame(), cfg)
+    assert list(cross.columns) == [*runs.AXES["sphere"], *crossover.CROSSOVER_COLUMNS] and not len(cross)
     models, curves = scorecard.scorecard({}, pd.DataFrame(), cfg)
     assert {"model", "combination", "max_rel_dev", *runs.AXES["sphere"]} <= set(models.columns) and not curves
     assert "no sphere" in scorecard.empty_reason(cfg)
@@ -118,7 +118,7 @@ def test_no_sphere_tables_have_their_columns():
 # --------------------------------------------------------------------------
 # the drawn sweeps
 # --------------------------------------------------------------------------
-FIT = {"zeta": {"min_cells": 4, "bootstrap": 50}}
+FIT = {"resolved_cells": 4, "bootstrap": 50}
 
 
 def _base(shape="sphere", *, n=33, seeds=2, count=5, hurst=(0.7,), h_rms=(0.01,)) -> dict:
@@ -262,10 +262,10 @@ def shrink(cfg: dict, base_dir: Path) -> dict:
             cfg[name] = values[:2]
     for rng in cfg.get("forces", {}).values():
         rng["count"] = min(int(rng["count"]), 4)
-    fit = cfg.setdefault("fit", {}).setdefault("zeta", {})
+    fit = cfg.setdefault("fit", {})
     fit["bootstrap"] = min(int(fit.get("bootstrap", 1000)), 50)
     if "topography" not in cfg:
-        fit["min_cells"] = min(int(fit.get("min_cells", 20)), 4)
+        fit["resolved_cells"] = min(int(fit.get("resolved_cells", 20)), 4)
     if "tangential" in cfg:
         tangential = cfg["tangential"]
         if isinstance(tangential.get("at"), list):

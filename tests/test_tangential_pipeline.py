@@ -29,7 +29,7 @@ CONFIG = {
     "seeds": 2,
     "forces": {"sphere": {"from": 1e-5, "to": 5e-3, "count": 8}},
     "tangential": {"at": [1e-4, 3e-3], "steps": 4},
-    "fit": {"zeta": {"min_cells": 10, "bootstrap": 200}},
+    "fit": {"resolved_cells": 10, "bootstrap": 200},
 }
 
 

@@ -195,7 +195,7 @@ def _claims(groups):
     from roughcontact.study.claims import claims
     from roughcontact.study.claims.registry import ClaimInputs, table_rows
 
-    study = StudySettings.of(config.resolve_config(_with(seeds=6, **{"fit": {"zeta": {"bootstrap": 200}}})))
+    study = StudySettings.of(config.resolve_config(_with(seeds=6, **{"fit": {"bootstrap": 200}})))
     cross = pd.DataFrame([{"hurst": 0.7, "radius": 0.5, "h_rms": 1e-3, "exponent": 2.0, "Ftr_measured": 1e-6,
                            "Ftr_pred_estimate": 1e-6}])
     inputs = ClaimInputs(cross=cross, replicates=None, zeta=None, study=study, tangential=groups)

@@ -197,6 +197,7 @@ rule claims:
         pull_off=pull_off_table,
         stickiness=stickiness_table,
         tangential=tangential_file,
+        tables=claim_tables,
     output:
         csv="results/claims.csv",
         html=report(

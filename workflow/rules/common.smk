@@ -132,6 +132,14 @@ def adhesive_run_files(wildcards):
     return [study_runs.run_path(run, RUN_PATTERN) for run in ADHESIVE_RUNS]
 
 
+def claim_tables(wildcards):
+    """The tables the registered claims read beyond the built-in inputs, each made by a rule of
+    its own: their paths, in the order of roughcontact.study.claims.input_tables."""
+    from roughcontact.study.claims import input_tables
+
+    return [table.path for table in input_tables().values()]
+
+
 def pull_off_table(wildcards):
     """The pull-off table where the study has adhesive runs (the claims rule's optional input)."""
     return rules.adhesion.output.csv if ADHESIVE_RUNS else []

@@ -1,6 +1,6 @@
 """Snakemake `crossover` job: stiffness + zeta -> results/crossover.csv (eq. 16 fitted, F_tr with a 95 % interval)."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.analysis.verdicts import run_crossover
+from roughcontact.study.analysis.crossover import run_crossover
 from roughcontact.study.report.tables import csv_to_html
 
 snakemake = globals()["snakemake"]

@@ -4,7 +4,7 @@
 An elastic contact stiffens as it is pressed (more and larger contacts): a property every model
 of the scorecard has, tested here on the BEM ensemble of each sphere combination, whatever its
 axes, at its resolved loads (:func:`roughcontact.study.analysis.ensemble.resolved`: the loads
-whose ensemble-mean contact has at least ``fit.zeta.min_cells`` cells; below them one or two cells
+whose ensemble-mean contact has at least ``fit.resolved_cells`` cells; below them one or two cells
 carry the load and k does not follow it). The registry loops over the combinations (the rule
 ``sphere``) and runs the claim in isolation; the estimator sees one combination.
 """
@@ -30,10 +30,10 @@ def stiffening(combination):
     """The smallest relative rise of the mean k between neighbouring resolved loads of one
     combination, with its bootstrap-over-seeds interval; consistent when the interval lies above 0,
     untested (unresolved) with fewer than two resolved loads."""
-    fit = combination.study.fit.zeta                               # the study's resolved-load and bootstrap settings
+    fit = combination.study.fit                                    # the study's resolved-load and bootstrap settings
     cells = combination.data["contact_cells"].values.mean(0)       # (force,), ensemble-mean contact cells
-    k = combination.data["stiffness"].values[:, resolved(cells, fit.min_cells)]   # (seed, resolved force), k/(E* L)
-    note = f"measured: min over the resolved loads (>= {fit.min_cells} contact cells) of k(F_i+1)/k(F_i) - 1"
+    k = combination.data["stiffness"].values[:, resolved(cells, fit.resolved_cells)]  # (seed, resolved force), k/(E* L)
+    note = f"measured: min over the resolved loads (>= {fit.resolved_cells} contact cells) of k(F_i+1)/k(F_i) - 1"
     if k.shape[1] < 2:
         return row("x", STATEMENT, math.nan, math.nan, math.nan, 0.0,
                    untested(UNRESOLVED, f"{k.shape[1]} resolved load(s), two needed"), note=note, **combination.axes)

@@ -14,8 +14,8 @@ By role, bottom up (subpackages of ``roughcontact.study``):
 * ``files``: ``runfile`` (the run file's data model), ``io`` (reading and writing), ``provenance``
   and ``logs``;
 * ``analysis``: ``merge``, ``ensemble`` (statistics over seeds and the one ``resolved()`` rule),
-  ``statistics`` (bootstrap and verdict rules), ``zeta`` (ζ(H) and its law), ``verdicts`` (eq. 16
-  fits, crossover), ``exponents``, ``grid_error``, ``convergence``, ``calibration``, ``scorecard``
+  ``statistics`` (bootstrap and verdict rules), ``zeta`` (ζ(H) and its law), ``crossover`` (the
+  crossover table: eq. 16 fits, F_tr, slopes, verdicts), ``exponents``, ``grid_error``, ``convergence``, ``calibration``, ``scorecard``
   (every model of :mod:`roughcontact.models.scorecard` against the ensembles; ``not_modelled`` the
   rows it does not score, ``decision`` its rule), the adhesive and stickiness tables
   (``adhesion``, ``stickiness``) and the measured surfaces' merge, spectrum, models and scorecard

@@ -5,7 +5,7 @@ One group per surface kind over the sweep's axes (``work_of_adhesion`` > 0 only)
 row per adhesive combination:
 
 * ``pull_off`` — the ensemble mean of the pull-off force ``F/(E* L²)`` (negative: tensile), with
-  its percentile bootstrap interval over seeds (``fit.zeta.bootstrap``, ``fit.zeta.confidence``);
+  its percentile bootstrap interval over seeds (``fit.bootstrap``, ``fit.confidence``);
 * ``pull_off_jkr`` — the smooth sphere's ``−(3/2)πwR`` (Johnson, Kendall & Roberts 1971), and
   ``pull_off_ratio = pull_off/pull_off_jkr`` with its interval (spheres);
 * ``johnson_parameter`` — ``h_rms/δ_c``, ``δ_c = (3/4)(π²w²R/E*²)^(1/3)`` (Johnson's sphere form
@@ -125,14 +125,14 @@ def pull_off_table(groups: dict, study):
 
     study = StudySettings.of(study)
     E, L, n = study.e_star, study.grid.length, study.grid.n
-    zeta = study.fit.zeta
+    fit = study.fit
     rows = []
     for kind, ds in groups.items():
-        indices = bootstrap_indices(ds.sizes["seed"], zeta.bootstrap)
+        indices = bootstrap_indices(ds.sizes["seed"], fit.bootstrap)
         for combo, sub in combinations(ds, "pull_off_force", ("seed",)):
             force = sub["pull_off_force"].values / (E * L**2)   # (seed,)
             mean = float(force.mean())
-            low, high = interval(force[indices].mean(1), zeta.confidence) if force.size > 1 else (math.nan, math.nan)
+            low, high = interval(force[indices].mean(1), fit.confidence) if force.size > 1 else (math.nan, math.nan)
             w, radius = combo["work_of_adhesion"], combo.get("radius", math.inf)
             row = {"kind": kind, **combo, "pull_off": mean, "pull_off_ci_low": low, "pull_off_ci_high": high,
                    "sticky_fraction": float(np.mean(force < 0)), "n_seeds": int(force.size)}

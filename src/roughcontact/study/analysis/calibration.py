@@ -13,7 +13,7 @@ linear in H, ``c = c₀ + c₁ H`` and ``p = p₀ + p₁ H`` (four numbers); the
 ``k̄_BEM`` the ensemble mean over seeds, ``s`` its relative standard error (at least 1 %),
 over the sphere combinations at the paper's setting (paraboloid, no roll-off or cutoff,
 elastic) of every study given, loads resolved as in the scorecard (mean contact cells ≥
-``fit.zeta.min_cells``). Run it as
+``fit.resolved_cells``). Run it as
 
     python -m roughcontact.study.analysis.calibration [--form hurst|tail] [--bootstrap N] STUDY_DIR [STUDY_DIR ...]
 
@@ -88,7 +88,7 @@ def ensemble_points(study) -> list[dict]:
         if not axes.paper_setting(combo, length):
             continue
         k = sub["stiffness"].values
-        use = resolved(sub["contact_cells"].values.mean(0), study_of_file.fit.zeta.min_cells)
+        use = resolved(sub["contact_cells"].values.mean(0), study_of_file.fit.resolved_cells)
         mean, error = _mean_and_error(k[:, use])
         out.append({"study": Path(study).name, "source": str(Path(study).resolve()), "hurst": combo["hurst"],
                     "radius": combo["radius"], "h_rms": combo["h_rms"], "length": length, "e_star": e_star,

@@ -14,7 +14,7 @@ __all__ = ["ensemble", "resolved", "combinations"]
 
 def resolved(contact_cells, min_cells: int):
     """Whether each load is resolved: its (ensemble-mean) number of contact cells is at least
-    ``fit.zeta.min_cells`` (*min_cells*). The one rule every fit, verdict, figure and score
+    ``fit.resolved_cells`` (*min_cells*). The one rule every fit, verdict, figure and score
     applies before trusting a load; *contact_cells* an array or DataArray of mean cells."""
     return contact_cells >= min_cells
 

@@ -1,7 +1,7 @@
 """Local stiffness exponents ``d ln k/d ln F`` of every combination, with intervals (claim (l)).
 
 At every load whose ``fit.slopes.window`` neighbours (centred on it) are all resolved (mean contact
-cells ≥ ``fit.zeta.min_cells``), the local exponent is the least-squares slope of ``ln k̄`` against
+cells ≥ ``fit.resolved_cells``), the local exponent is the least-squares slope of ``ln k̄`` against
 ``ln F`` over the window, ``k̄`` the ensemble mean; its 95 % interval comes from the same fit on
 every bootstrap-over-seeds resample of the mean. A power law ``k ∝ F^β`` has the exponent β at
 every load: the fractal law of eq. 11 has β = 1/(H+1), Hertz 1/3, an interfacial stiffness
@@ -73,7 +73,7 @@ def empty_reason(study) -> str:
     """Why exponents.csv has no row: no load window of ``fit.slopes.window`` consecutive resolved loads."""
     study = StudySettings.of(study)
     return (f"no combination has {study.fit.slopes.window} consecutive loads with at least "
-            f"{study.fit.zeta.min_cells} contact cells (fit.slopes.window, fit.zeta.min_cells)")
+            f"{study.fit.resolved_cells} contact cells (fit.slopes.window, fit.resolved_cells)")
 
 
 def exponent_table(groups: dict, study):
@@ -86,12 +86,12 @@ def exponent_table(groups: dict, study):
     fit = study.fit
     rows = []
     for kind, ds in groups.items():
-        indices = bootstrap_indices(ds.sizes["seed"], fit.zeta.bootstrap)
+        indices = bootstrap_indices(ds.sizes["seed"], fit.bootstrap)
         force = ds["force"].values / (E * L**2)
         for combo, sub in combinations(ds):
             beta, low, high = local_exponents(
                 force, sub["stiffness"].values, sub["contact_cells"].values, window=fit.slopes.window,
-                min_cells=fit.zeta.min_cells, indices=indices, level=fit.zeta.confidence)
+                min_cells=fit.resolved_cells, indices=indices, level=fit.confidence)
             for i in np.flatnonzero(np.isfinite(beta)):
                 rows.append({"kind": kind, **combo, "force": float(force[i]), "local_exponent": beta[i],
                              "ci_low": low[i], "ci_high": high[i]})

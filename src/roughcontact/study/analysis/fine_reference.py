@@ -138,7 +138,7 @@ def run_fine_reference(study, stiffness_nc, fine_nc, out_csv, coarse_nc=None) ->
     from ..files.io import read_groups, write_csv
 
     study = StudySettings.of(study)
-    zeta = study.fit.zeta
+    fit = study.fit
     groups, fine = read_groups(stiffness_nc), read_groups(fine_nc)
     reason = empty_reason(groups, fine)
     if reason:
@@ -148,8 +148,8 @@ def run_fine_reference(study, stiffness_nc, fine_nc, out_csv, coarse_nc=None) ->
     else:
         coarse = read_groups(coarse_nc)["sphere"] if coarse_nc else None
         table = fine_reference(groups["sphere"], fine["sphere"], coarse, n=study.grid.n, n_fine=study.grid.fine,
-                               n_coarse=study.grid.coarse, min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
-                               confidence=zeta.confidence)
+                               n_coarse=study.grid.coarse, min_cells=fit.resolved_cells, bootstrap=fit.bootstrap,
+                               confidence=fit.confidence)
     write_csv(table, out_csv, reason=reason)
     log.info("fine reference on %d²: %d loads of %d sphere combinations; single-asperity loads: %d", study.grid.fine,
              len(table), len(table.groupby([c for c in ("hurst", "radius", "h_rms") if c in table])) if len(table) else 0,

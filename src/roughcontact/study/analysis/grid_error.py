@@ -172,18 +172,18 @@ def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: floa
 def run_study_grid_error(study, fine_nc, coarse_nc, out_csv) -> None:
     """``grid_error`` rule: the study's ``stiffness.nc`` (*fine_nc*) against its companion's on
     ``grid.coarse`` (*coarse_nc*, the same surfaces) -> ``grid_error.csv`` (an empty table without
-    sphere runs), with the study's fit windows (``fit.zeta``)."""
+    sphere runs), with the study's fit windows (``fit``)."""
     import pandas as pd
 
     from ..files.io import read_groups, write_csv
 
     study = StudySettings.of(study)
-    zeta = study.fit.zeta
+    fit = study.fit
     fine, coarse = read_groups(fine_nc), read_groups(coarse_nc)
     reason = empty_reason(fine, coarse)
     table = (pd.DataFrame(columns=[*runs.AXES["sphere"], *GRID_ERROR_COLUMNS]) if reason else
-             grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
-                        confidence=zeta.confidence, ratio=study.grid.n / study.grid.coarse))
+             grid_error(coarse["sphere"], fine["sphere"], min_cells=fit.resolved_cells, bootstrap=fit.bootstrap,
+                        confidence=fit.confidence, ratio=study.grid.n / study.grid.coarse))
     write_csv(table, out_csv, reason=reason)
 
 
@@ -216,14 +216,14 @@ def run_grid_error(coarse_results, fine_results, out_csv, *, fraction: float = G
     if "sphere" not in coarse or "sphere" not in fine:
         raise MergeError(f"{coarse_results} and {fine_results}: the grid error needs sphere runs in both studies")
     with xr.open_datatree(Path(fine_results) / "stiffness.nc", engine="netcdf4") as tree:
-        zeta = StudySettings.of(json.loads(tree.attrs["config"])).fit.zeta
+        fit = StudySettings.of(json.loads(tree.attrs["config"])).fit
         n_fine = int(tree.attrs["grid_n"])
     with xr.open_datatree(Path(coarse_results) / "stiffness.nc", engine="netcdf4") as tree:
         n_coarse = int(tree.attrs["grid_n"])
     if n_coarse >= n_fine:
         raise MergeError(f"{coarse_results} ({n_coarse}²) is not on a coarser grid than {fine_results} ({n_fine}²)")
-    table = grid_error(coarse["sphere"], fine["sphere"], min_cells=zeta.min_cells, bootstrap=zeta.bootstrap,
-                       confidence=zeta.confidence, ratio=n_fine / n_coarse, fraction=fraction)
+    table = grid_error(coarse["sphere"], fine["sphere"], min_cells=fit.resolved_cells, bootstrap=fit.bootstrap,
+                       confidence=fit.confidence, ratio=n_fine / n_coarse, fraction=fraction)
     write_csv(table, out_csv)
 
 

@@ -11,7 +11,7 @@ of the study against the reference). Per sphere combination and load :func:`comp
 * ``order``: the observed order ``ln(g/(−e))/ln r`` of the three grids where both differences
   have the sign of a monotone sequence (Richardson's, :func:`~roughcontact.study.analysis.grid_error.richardson`),
   NaN otherwise;
-* ``cell_resolved``: the study's mean contact has at least ``fit.zeta.min_cells`` cells;
+* ``cell_resolved``: the study's mean contact has at least ``fit.resolved_cells`` cells;
   ``resolved``: the study calls the load resolved (``cell_resolved`` and ``grid_resolved`` of its
   table, ``ê`` at most half the band), the loads its scorecard counts as resolved by the grid.
 

@@ -30,8 +30,8 @@ def merge_surface(study, source: str, name: str, run_files, output, surface_file
     :func:`roughcontact.study.files.io.read_run` against its :func:`job_of` (a
     :class:`~roughcontact.errors.MergeError` names a missing, foreign or stale one). Each group
     holds the per-run variables over ``(radius,) tile|seed, force`` and, over ``(radius,)
-    force``, ``k_mean`` with the percentile bootstrap interval (``fit.zeta.bootstrap``
-    resamples of the tiles or seeds, level ``fit.zeta.confidence``) as ``k_ci_low``,
+    force``, ``k_mean`` with the percentile bootstrap interval (``fit.bootstrap``
+    resamples of the tiles or seeds, level ``fit.confidence``) as ``k_ci_low``,
     ``k_ci_high`` (N/m; NaN with one tile).
     """
     import xarray as xr
@@ -60,7 +60,7 @@ def merge_surface(study, source: str, name: str, run_files, output, surface_file
                   "force_normalized": ("force", first["force_normalized"], runs_of.attrs["force_normalized"])}
         ds = xr.Dataset({v: (dims, runs_of.data[v], runs_of.attrs[v]) for v in variables if v not in coords},
                         coords=coords)
-        _add_interval(ds, ens, study.fit.zeta)
+        _add_interval(ds, ens, study.fit)
         if study.conductance:   # k in N/m over E* in Pa: k/E* in m
             ds = ds.assign(conductance_variables(ds["stiffness"] / (study.e_star * to_pascals(study.units.e_star)),
                                                  metres_per_unit=1.0, settings=study.conductance))

@@ -2,7 +2,7 @@
 
 For each kind (sphere radii, the flat tile) and model of :mod:`roughcontact.models.scorecard`
 (the predictions of :func:`roughcontact.study.analysis.measured_spectrum.run_spectrum`), over the
-resolved loads (mean contact cells over the tiles ≥ ``fit.zeta.min_cells``, the study's one
+resolved loads (mean contact cells over the tiles ≥ ``fit.resolved_cells``, the study's one
 rule :func:`roughcontact.study.analysis.ensemble.resolved`) where the model has a value:
 
 * ``max_rel_dev = max_F |k_model/k_mean − 1|`` and ``rms_rel_dev``, against the mean over tiles;
@@ -10,8 +10,8 @@ rule :func:`roughcontact.study.analysis.ensemble.resolved`) where the model has 
   interval of the mean over tiles (``k_ci_low ≤ k_model ≤ k_ci_high``; NaN with one tile);
 * ``max_rel_dev_ci_low/high`` and ``rms_rel_dev_ci_low/high``: their percentile intervals over the
   tiles, as the generated scorecard's over seeds (:mod:`roughcontact.study.analysis.scorecard`): the
-  mean over tiles recomputed on every bootstrap resample of the tiles (``fit.zeta.bootstrap``
-  resamples, level ``fit.zeta.confidence``, :mod:`roughcontact.study.analysis.statistics`; the model
+  mean over tiles recomputed on every bootstrap resample of the tiles (``fit.bootstrap``
+  resamples, level ``fit.confidence``, :mod:`roughcontact.study.analysis.statistics`; the model
   is deterministic); NaN with one tile or without the fit settings.
 
 ``not_modelled`` (:mod:`roughcontact.study.analysis.not_modelled`): the optional axes at which the

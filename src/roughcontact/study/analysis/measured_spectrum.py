@@ -53,7 +53,7 @@ def fit_scan(study, surface_file):
     band = study.fit.spectrum_band
     q_band = None if band is None else (2 * math.pi / band[0], 2 * math.pi / band[1])
     fit = fit_spectrum(blocks, length=length, band=q_band, window="hann", detrend="height",
-                       resamples=study.fit.zeta.bootstrap, confidence=study.fit.zeta.confidence)
+                       resamples=study.fit.bootstrap, confidence=study.fit.confidence)
     return fit, length, tile
 
 

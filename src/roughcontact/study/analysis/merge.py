@@ -20,12 +20,12 @@ from ..config.units import study_units, to_metres
 from .conductance import conductance_variables
 from ..runs import naming as runs
 from .ensemble import ensemble
-from ..files.io import read_run, write_groups
-from ..runs.jobs import job_settings
+from ..files.io import check_run, declaration, open_run, read_run, rerun_hint, stale, write_groups
+from ..runs.jobs import JobSettings, options_of, shared_settings
 from ..config.settings import StudySettings
 
-__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "layout_of", "force_coords", "merge_runs", "run_merge",
-           "with_units"]
+__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "layout_of", "force_coords", "merge_runs", "place",
+           "read_declared", "run_merge", "with_units"]
 
 
 log = logging.getLogger(__name__)
@@ -127,16 +127,21 @@ class Gathered:
 def gather(layout: KindLayout, expected_of, variables: dict, value=None) -> Gathered:
     """Read every run of *layout* with :func:`roughcontact.study.files.io.read_run` against its job record
     ``expected_of(row)`` and place the *variables* (``{name: NetCDF dtype}``) of each at its
-    coordinates (:meth:`KindLayout.index`): the shared part of every merge (generated runs, the
-    adhesive runs' pull-off, the stickiness runs).
+    coordinates (:func:`place`): the shared part of the merges of the adhesive runs' pull-off, the
+    tangential, stickiness and measured runs.
 
-    *value*: ``value(ds, name)`` the values of *name* in the run *ds* (default ``ds[name].values``),
-    e.g. a generated elastic run's loading stiffness where it has none. Raises
-    :class:`~roughcontact.errors.MergeError` (from :func:`~roughcontact.study.files.io.read_run`) naming a
-    missing, foreign or stale run file."""
+    *value*: ``value(ds, name)`` the values of *name* in the run *ds* (default ``ds[name].values``).
+    Raises :class:`~roughcontact.errors.MergeError` (from :func:`~roughcontact.study.files.io.read_run`)
+    naming a missing, foreign or stale run file."""
+    return place(layout, [read_run(path, expected_of(row)) for row, path in layout.rows], variables, value)
+
+
+def place(layout: KindLayout, datasets: list, variables: dict, value=None) -> Gathered:
+    """Place the *variables* (``{name: NetCDF dtype}``) of the runs *datasets* (read, one per row of
+    *layout*, in its order) at their coordinates (:meth:`KindLayout.index`); *value* as for
+    :func:`gather`."""
     data, attrs, commits, first = {}, {}, set(), None
-    for row, path in layout.rows:
-        ds = read_run(path, expected_of(row))
+    for (row, _), ds in zip(layout.rows, datasets):
         first = dict(ds.attrs) if first is None else first
         at = layout.index(row)
         for name, dtype in variables.items():
@@ -158,6 +163,37 @@ def _generated_value(ds, name):
     return ds["stiffness"].values if name == "loading_stiffness" else np.zeros(ds.sizes["force"])
 
 
+def read_declared(path, row: dict, shared: dict):
+    """Read the run file *path* of the run *row* (a dict of :func:`runs.runs`) and check it against
+    its own declaration, then the declaration against the study: the merge's reader.
+
+    The file's ``config`` attribute is the job record it was computed from
+    (:func:`roughcontact.study.files.io.declaration`, checked against its ``config_hash``); typed
+    (:meth:`~roughcontact.study.runs.jobs.JobSettings.from_record`), it says what the file holds
+    (its quantities, the retract path of an adhesive run, the partial-slip path of a sliding
+    one: :func:`roughcontact.study.files.io.check_run`). Its surface and seed must be those of
+    its name (*row*), and its other settings the study's for its surface kind, *shared*
+    (:func:`~roughcontact.study.runs.jobs.shared_settings`, computed once per kind).
+
+    Returns ``(ds, kept)``: the run, loaded, and the names of the per-load quantities it keeps.
+    Raises :class:`~roughcontact.errors.MergeError` naming *path*, what is wrong and what to do."""
+    ds = open_run(path)
+    try:
+        job = JobSettings.from_record(declaration(path, ds))
+    except (KeyError, TypeError, ValueError) as exc:
+        raise MergeError(f"{path}: foreign NetCDF file (its 'config' attribute is no job record of an indent run: "
+                         f"{type(exc).__name__}: {exc}); {rerun_hint(path)}") from exc
+    for name in runfile.SCALARS:   # the run its name says
+        got, want = getattr(job, name), row[name]
+        if not float(got) == float(want):
+            raise MergeError(f"{path}: holds {name} = {float(got):g}, expected {float(want):g} from its name; "
+                             f"{rerun_hint(path)}")
+    check_run(path, ds, job.file_spec())
+    stale(path, {**{key: getattr(job, key) for key in shared}, "options": job.options},
+          {**shared, "options": options_of(row)})
+    return ds, quantities.recorded(job)
+
+
 def merge_runs(study, paths) -> dict:
     """Merge the run files *paths* (one per run of :func:`runs.runs`, in its order) of the
     study (:class:`~roughcontact.study.config.settings.StudySettings` or a resolved
@@ -177,17 +213,17 @@ def merge_runs(study, paths) -> dict:
     groups = {}
     for layout in kind_layouts(study, table, paths):
         kind, axes, coords = layout.kind, layout.axes, layout.coords
-        # the quantities any run of the kind keeps (a hardness on some runs: their plastic ones too)
-        jobs = [job_settings(study, row) for row, _ in layout.rows]
-        kept = [quantities.recorded(job) for job in jobs]
-        names = tuple(name for name in quantities.names() if any(name in k for k in kept))
+        shared = shared_settings(study, kind)
+        declared = [read_declared(path, row, shared) for row, path in layout.rows]
+        # the quantities any run of the kind declares (a hardness on some runs: their plastic ones too)
+        names = tuple(name for name in quantities.names() if any(name in kept for _, kept in declared))
         # fields.histograms: every run of the kind keeps them at the same loads
         histograms = {n: v for n, v in runfile.HISTOGRAM_VARIABLES.items() if n != "histogram_force"}
-        loads = list(jobs[0].histogram_loads)
-        runs_of = gather(layout, lambda row: job_settings(study, row),
-                         {**{n: quantities.QUANTITIES[n].dtype for n in names},
-                          **({n: v.dtype for n, v in histograms.items()} if loads else {})},
-                         value=_generated_value)
+        loads = list(shared["histogram_loads"])
+        runs_of = place(layout, [ds for ds, _ in declared],
+                        {**{n: quantities.QUANTITIES[n].dtype for n in names},
+                         **({n: v.dtype for n, v in histograms.items()} if loads else {})},
+                        value=_generated_value)
         dims = (*axes, "seed", "force")
         forces = force_coords(study, kind)
         variables = {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names}

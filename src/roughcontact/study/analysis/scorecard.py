@@ -3,7 +3,7 @@
 Each model of the registry (:mod:`roughcontact.models.scorecard`) predicts the stiffness ``k(F)`` of a rough sphere from what the
 configuration says about the surface (H, h_rms, R, the body exponent m, L, n) and, for
 ``eq16_fitted``, the ζ(H) fitted on the same study. It is scored on the resolved loads of the
-ensemble mean (mean contact cells ≥ ``fit.zeta.min_cells``, as for the verdicts) by
+ensemble mean (mean contact cells ≥ ``fit.resolved_cells``, as for the verdicts) by
 
 * ``max_rel_dev = max_F |k_model/k_BEM − 1|`` with a 95 % bootstrap-over-seeds interval (the
   ensemble mean recomputed on every resample; the model is deterministic), and
@@ -64,7 +64,7 @@ from ..runs import naming as runs
 from . import not_modelled as unmodelled
 from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval, verdict
-from .verdicts import NO_SPHERE
+from .crossover import NO_SPHERE
 from ..config.settings import StudySettings
 
 __all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_reason"]
@@ -218,7 +218,7 @@ def empty_reason(study) -> str:
     works = [w for w in study.work_of_adhesion if w is not None]
     if works and all(w > 0 for w in works):
         return "every sphere of the sweep is adhesive (work_of_adhesion > 0) and the scored models are elastic"
-    return f"no sphere combination has a load with at least {study.fit.zeta.min_cells} contact cells that a model predicts"
+    return f"no sphere combination has a load with at least {study.fit.resolved_cells} contact cells that a model predicts"
 
 
 def scorecard(groups: dict, zeta_df, study, grid_error=None):
@@ -235,9 +235,9 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
     study = StudySettings.of(study)
     ds = groups["sphere"]
     L, E = study.grid.length, study.e_star
-    min_cells = study.fit.zeta.min_cells
-    level = study.fit.zeta.confidence
-    indices = bootstrap_indices(ds.sizes["seed"], study.fit.zeta.bootstrap)
+    min_cells = study.fit.resolved_cells
+    level = study.fit.confidence
+    indices = bootstrap_indices(ds.sizes["seed"], study.fit.bootstrap)
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
     force_norm = ds["force"].values / (E * L**2)
     rows, curves = [], {}

@@ -6,7 +6,7 @@ its contact passes ``stickiness.area`` and so has a length of its own, stays in 
 (``results/stickiness_run/``). The table has one row per (H, N):
 
 * ``loading_slope`` — the mean over seeds of ``dF/dA`` in units of ``h′E*`` (negative: sticky), with
-  its percentile bootstrap interval over seeds (``fit.zeta.bootstrap``, ``fit.zeta.confidence``);
+  its percentile bootstrap interval over seeds (``fit.bootstrap``, ``fit.confidence``);
 * ``sticky_fraction`` — the fraction of seeds with a negative slope;
 * ``pastewka_robbins_number``, ``range_ratio`` (``Δr/g₀``), ``interaction_range``, ``work_of_adhesion``,
   ``rms_curvature`` — means over seeds (the number is the sweep's own at every seed);

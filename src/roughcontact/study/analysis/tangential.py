@@ -122,7 +122,7 @@ class Branches:
     source : str
         ``"measured"``, ``"eq. 17"`` or ``""``.
     fractal, hertz : numpy.ndarray
-        Boolean masks over the loads: resolved (``fit.zeta.min_cells``) and below / above ``F_tr``.
+        Boolean masks over the loads: resolved (``fit.resolved_cells``) and below / above ``F_tr``.
     """
 
     crossover: float
@@ -153,7 +153,7 @@ def combination_branches(stick, cross, where: dict, study) -> Branches:
     """:func:`branches` of one combination of the ``full_stick`` group (*stick*, dims ``(seed, force)``)
     with its row of ``crossover.csv`` (*cross*, :func:`crossover_row`)."""
     return branches(stick["force_normalized"].values, stick["contact_cells"].mean("seed").values,
-                    crossover_row(cross, where), StudySettings.of(study).fit.zeta.min_cells)
+                    crossover_row(cross, where), StudySettings.of(study).fit.resolved_cells)
 
 
 def slip_combinations(groups: dict):
@@ -197,10 +197,10 @@ def _estimate(per_seed_fn, n_seeds: int, study: StudySettings) -> Estimate:
     if not finite.any():
         return _NONE
     value = float(items[finite].mean())
-    zeta = study.fit.zeta
+    fit = study.fit
     reps = np.array([np.nanmean(np.where(finite, per_seed_fn(idx), np.nan))
-                     for idx in bootstrap_indices(n_seeds, zeta.bootstrap)])
-    low, high = interval(reps, zeta.confidence)
+                     for idx in bootstrap_indices(n_seeds, fit.bootstrap)])
+    low, high = interval(reps, fit.confidence)
     return Estimate(value, low, high, (float(items[finite].min()), float(items[finite].max())), int(finite.sum()))
 
 

@@ -33,7 +33,8 @@ combinations), registered by a module of
 this package: :mod:`roughcontact.study.claims.paper` (a)-(h), :mod:`roughcontact.study.claims.zeta_law` (c'), :mod:`roughcontact.study.claims.effects` (i)-(k),
 :mod:`roughcontact.study.claims.exponents` (l), (m), :mod:`roughcontact.study.claims.adhesion` (n)-(q),
 :mod:`roughcontact.study.claims.tangential` (r)-(t). :func:`claims_table` loops over the registry; a new claim is one
-object in one module (worked example in the package guide, ``docs/guide/package.md``). A claim
+object in one module (worked example in the package guide, ``docs/guide/package.md``); a claim
+that reads a table of its own registers it (:class:`InputTable`, made by a rule of the user's). A claim
 that raises gives rows with the verdict ``error`` and the exception as the reason; the others'
 rows are kept. The ``claims`` rule's files, ``claims.csv`` and its page, are written by
 :mod:`roughcontact.study.report.claims`: this package estimates and imports nothing of the report.
@@ -42,10 +43,12 @@ from __future__ import annotations
 
 from ..._registry import import_modules
 from ..config.settings import StudySettings
-from .registry import CLAIMS, Claim, ClaimInputs, Combination, register, row, table_rows
+from .registry import (CLAIMS, TABLES, Claim, ClaimInputs, Combination, InputTable, register, register_table, row,
+                       table_rows)
 
-__all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "claims", "claims_table", "failed",
-           "EQ16_TOLERANCE", "prl2012_exponent", "CLAIMS_COLUMNS", "NO_CLAIM"]
+__all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "InputTable", "TABLES", "register", "register_table", "row",
+           "claims", "claims_table", "failed", "input_tables", "EQ16_TOLERANCE", "prl2012_exponent", "CLAIMS_COLUMNS",
+           "NO_CLAIM"]
 
 #: the modules of the claims of Pohrt & Popov (2013) and the studies that extend them, in the order
 #: they are imported (each registers its claims); further modules of this package follow by name
@@ -60,6 +63,14 @@ def claims() -> dict[str, Claim]:
         import_modules(__name__, __path__, _ORDER)
         _loaded.append(True)
     return dict(sorted(CLAIMS.items()))
+
+
+def input_tables() -> dict[str, InputTable]:
+    """``{name: InputTable}`` of every table a registered claim may read beyond the built-in inputs
+    (every module of this package imported once), in registration order: the ``claims`` rule's
+    ``tables`` input."""
+    claims()
+    return dict(TABLES)
 
 
 def __getattr__(name: str):
@@ -79,21 +90,22 @@ def __getattr__(name: str):
 
 
 def claims_table(cross, reps, zeta_df, study, groups: dict | None = None, exponents=None,
-                 zeta_replicates=None, adhesion=None, stickiness=None, tangential=None):
+                 zeta_replicates=None, adhesion=None, stickiness=None, tangential=None, tables=None):
     """``claims.csv``: one row per quantitative claim (every registered :class:`Claim` whose
     inputs are given) and per combination it is tested on, with the measured value, its 95 %
     interval, the paper's value, the verdict and the sweep and loads it rests on; ordered by
     the claim's letter, then as each claim gives its rows. Each claim runs in isolation
     (:func:`~roughcontact.study.claims.registry.table_rows`): one that raises has ``error`` rows
-    with the exception as the reason, and every other row is kept."""
+    with the exception as the reason, and every other row is kept. *tables*: ``{name: DataFrame}``
+    of the registered input tables (:func:`input_tables`; ``None`` for one without a row)."""
     import pandas as pd
 
     inputs = ClaimInputs(cross=cross, replicates=reps, zeta=zeta_df, study=StudySettings.of(study), groups=groups,
                          exponents=exponents, zeta_replicates=zeta_replicates, adhesion=adhesion,
-                         stickiness=stickiness, tangential=tangential)
+                         stickiness=stickiness, tangential=tangential, tables=dict(tables or {}))
     rows = []
     for claim in claims().values():
-        if all(getattr(inputs, need) is not None for need in claim.needed):
+        if all(inputs.get(need) is not None for need in claim.needed):
             rows += table_rows(claim, inputs)
     if not rows:
         return pd.DataFrame(columns=CLAIMS_COLUMNS)

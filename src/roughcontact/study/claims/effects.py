@@ -73,10 +73,10 @@ def _pair(axis, where, baseline, with_, without, crossover, study):
     baseline's row of ``crossover.csv`` (or ``None``)."""
     claim, statement = _STATEMENTS[axis]
     L, E = study.grid.length, study.e_star
-    level, paper, value = study.fit.zeta.confidence, _paper_value(axis), where[axis]
-    indices = bootstrap_indices(with_.sizes["seed"], study.fit.zeta.bootstrap)
+    level, paper, value = study.fit.confidence, _paper_value(axis), where[axis]
+    indices = bootstrap_indices(with_.sizes["seed"], study.fit.bootstrap)
     force = with_["force"].values / (E * L**2)
-    min_cells = study.fit.zeta.min_cells
+    min_cells = study.fit.resolved_cells
     both = (resolved(with_["contact_cells"].mean("seed"), min_cells)
             & resolved(without["contact_cells"].mean("seed"), min_cells)).values
     sweep = (f"sphere H = {where['hurst']:g}, R = {where['radius']:g}, h_rms = {where['h_rms']:g}, {axis} = {value:g} "

@@ -196,7 +196,7 @@ def _g(inputs):
     """F_tr ∝ R^((H+1)/(2−H)) h^(3/(2−H)) (eq. 17), exponents fitted per H."""
     cross, reps, study = _paper_spheres(inputs), inputs.replicates, inputs.study
     out = []
-    level = study.fit.zeta.confidence
+    level = study.fit.confidence
     for hurst in study.hurst:
         sub = cross[(cross["hurst"] == hurst) & np.isfinite(cross["Ftr_ci_low"])] if len(cross) else cross
         for axis, theory_value in (("radius", (hurst + 1) / (2 - hurst)), ("h_rms", 3 / (2 - hurst))):
@@ -234,7 +234,7 @@ def _h(inputs):
                     untested(NOT_SWEPT, f"the sweep's smallest H is {min(study.hurst):g} (needs H <= 0.2 with "
                                         "spheres)"))]
     from ...models.greenwood_tripp import self_affine_sphere_curve
-    from ..analysis.verdicts import fit_eq16
+    from ..analysis.crossover import fit_eq16
 
     out = []
     hurst = min(small)

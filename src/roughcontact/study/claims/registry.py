@@ -1,4 +1,5 @@
-"""The claim registry: what a claim is (:class:`Claim`), what it may read (:class:`ClaimInputs`),
+"""The claim registry: what a claim is (:class:`Claim`), what it may read (:class:`ClaimInputs`; a
+table made by a rule of its own: :class:`InputTable`),
 the combinations a claim is estimated on (:func:`combinations`, :class:`Combination`) with the
 rules of which apply (:func:`sphere`, :func:`at_theory`, ...), the row every claim writes
 (:func:`row`) and the loop that runs a claim in isolation (:func:`table_rows`). The paper's setting
@@ -17,7 +18,8 @@ from ..config import axes
 from ..config.axes import AXES, optional_axes
 from ..analysis.statistics import OFF_PAPER, split_verdict, untested
 
-__all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "register", "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
+__all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "InputTable", "TABLES", "register", "register_table",
+           "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
            "combinations", "table_rows", "sphere", "flat", "with_crossover", "paper_setting", "at_theory", "all_of",
            "describe", "off_theory", "flat_zeta_rows"]
 
@@ -32,7 +34,7 @@ class ClaimInputs:
     ----------
     cross : pandas.DataFrame
         ``crossover.csv``: per sphere combination, eq. 16 fitted with free prefactors, the slopes
-        and their intervals (:mod:`roughcontact.study.analysis.verdicts`); empty without spheres.
+        and their intervals (:mod:`roughcontact.study.analysis.crossover`); empty without spheres.
     replicates : xarray.Dataset
         Bootstrap replicates of the crossover force (``crossover.nc``).
     zeta : pandas.DataFrame
@@ -67,6 +69,42 @@ class ClaimInputs:
     adhesion: object = None
     stickiness: object = None
     tangential: object = None
+    tables: dict = dataclasses.field(default_factory=dict)
+
+    def get(self, need: str):
+        """The input *need* (a field of this class, or the name of a registered :class:`InputTable`:
+        its rows from :attr:`tables`); ``None`` where the study has none."""
+        if need in TABLES:
+            return self.tables.get(need)
+        return getattr(self, need)
+
+
+@dataclasses.dataclass(frozen=True)
+class InputTable:
+    """A table some claim reads beyond the built-in inputs of :class:`ClaimInputs`: made by a rule
+    of the workflow (a user's rule, ``workflow/rules/extra/``), given to the ``claims`` rule as an
+    input and to the claims as ``inputs.tables[name]`` (a DataFrame; ``None`` without a row).
+
+    Attributes
+    ----------
+    name : str
+        What a :attr:`Claim.needs` names it by.
+    path : str
+        The file the rule writes, relative to the study's directory (``results/<name>.csv``): the
+        ``claims`` rule asks for it, so Snakemake runs the rule that makes it first.
+    """
+
+    name: str
+    path: str
+
+
+#: every registered input table, by name, in registration order (the ``claims`` rule's ``tables``)
+TABLES: dict[str, InputTable] = {}
+
+
+def register_table(table: InputTable) -> InputTable:
+    """Add *table* to :data:`TABLES` (``ValueError`` for a name registered already)."""
+    return add(TABLES, table.name, table, "input table")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -157,8 +195,9 @@ class Claim:
         ``rows(inputs) -> list of dict``: the rows estimated from the whole study (each a
         :func:`row`), first among the claim's rows.
     needs : tuple of str
-        The fields of :class:`ClaimInputs` it reads besides ``study``; without one of them
-        (``None``) the claim has no rows.
+        The fields of :class:`ClaimInputs` it reads besides ``study``, or the names of registered
+        :class:`InputTable` (:meth:`ClaimInputs.get`); without one of them (``None``) the claim
+        has no rows.
     estimate : callable or None
         ``estimate(combination) -> dict or list of dict``: the rows of one :class:`Combination`
         (a :func:`row` each; ``[]`` for none), for every combination of ``inputs.groups``

@@ -32,7 +32,7 @@ def _c_prime(inputs):
                              f"{len(flat)} H value(s) with flat runs and a zeta interval (a law needs {MIN_HURST})"))]
     hurst = flat["hurst"].to_numpy(float)
     law = fit_zeta_law(hurst, flat["zeta"], flat["zeta_ci_low"], flat["zeta_ci_high"],
-                       inputs.zeta_replicates.sel(hurst=hurst).values, level=inputs.study.fit.zeta.confidence)
+                       inputs.zeta_replicates.sel(hurst=hurst).values, level=inputs.study.fit.confidence)
     aic = ", ".join(f"{form} {value:.1f}" for form, value in sorted(law.aic.items(), key=lambda kv: kv[1]))
     sweep = (f"flat H = {hurst.min():g}...{hurst.max():g} ({hurst.size} values), "
              f"{int(flat['n_seeds'].iloc[0])} seeds, n = {n}")

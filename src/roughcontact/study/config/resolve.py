@@ -42,6 +42,7 @@ from .companions import coarse_config, default_coarse
 from .limits import full_contact_slope
 from .measured import resolve_inputs
 from .records import force_grid
+from .renamed import refuse_renamed
 from .settings import StudySettings
 from .coerce import coerce
 from .schema import check_finite, fill_defaults, key_text, load_schema, printable, schema_error
@@ -116,6 +117,7 @@ def _resolve(raw, schema, base_dir) -> dict:
     import jsonschema
 
     root = load_schema(schema)
+    refuse_renamed(raw)   # an old key: one line naming its new name, before the schema's "unknown key"
     cfg = coerce(copy.deepcopy(raw))
     # JSON-schema bounds compare false against NaN: every number must be finite (radius may be +inf).
     # Keys the schema knows first (a NaN is the cause, not a duplicate or a bound) ...

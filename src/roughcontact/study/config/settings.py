@@ -5,7 +5,7 @@ defaults (the schema, ``config.schema.yaml``, is the one home of every default);
 plain mapping because that is what Snakemake's ``config`` and the run files' provenance hold.
 :meth:`StudySettings.of` turns that mapping into a :class:`StudySettings` once, and everything
 after resolution reads typed attributes (``study.grid.n``, ``study.forces["sphere"].count``,
-``study.fit.zeta.min_cells``), never string keys. :func:`roughcontact.study.config.resolve.study_settings`
+``study.fit.resolved_cells``), never string keys. :func:`roughcontact.study.config.resolve.study_settings`
 does both steps.
 
 The sweep axes of :data:`roughcontact.study.config.axes.AXES` are attributes too
@@ -26,6 +26,7 @@ import numpy as np
 
 from . import axes
 from .records import force_grid
+from .renamed import current_layout
 
 __all__ = [
     "force_grid",
@@ -129,11 +130,8 @@ class ConductanceSettings:
 class ZetaFitSettings:
     """The ``ζ(H)`` fit of eq. 11 (``fit.zeta``)."""
 
-    min_cells: int                  #: fewest contact cells a load needs to enter any fit
     max_area_fraction: float        #: largest ``A/L²`` of a flat load in the fit
     sphere_max_force_ratio: float   #: sphere loads below this multiple of eq. 17's crossover
-    bootstrap: int                  #: bootstrap resamples over seeds
-    confidence: float               #: level of the interval (0.95)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -147,8 +145,11 @@ class SlopeFitSettings:
 
 @dataclasses.dataclass(frozen=True)
 class FitSettings:
-    """The fit windows of the analysis (``fit``)."""
+    """The fit windows of the analysis (``fit``) and the study-wide rules of every fit."""
 
+    resolved_cells: int             #: fewest mean contact cells of a resolved load (every fit, verdict, score)
+    bootstrap: int                  #: bootstrap resamples over seeds (tiles) of every interval
+    confidence: float               #: level of every interval (0.95)
     zeta: ZetaFitSettings
     slopes: SlopeFitSettings
     spectrum_band: tuple[float, float] | None = None   #: ``fit.spectrum.band`` (longest, shortest)
@@ -276,11 +277,13 @@ class StudySettings:
         """*cfg* typed: a :class:`StudySettings` is returned as it is, a mapping from
         :func:`~roughcontact.study.config.resolve.resolve_config` (defaults filled; also as a file's
         ``config`` attribute records it, :func:`roughcontact.study.files.provenance.canonical_json`) is
-        read once."""
+        read once; one recorded before a key was renamed is read in the current layout
+        (:func:`~roughcontact.study.config.renamed.current_layout`)."""
         if isinstance(cfg, cls):
             return cfg
         from .stickiness import StickinessSettings
 
+        cfg = current_layout(cfg)   # a configuration recorded before a key was renamed
         grid, solver, fit = cfg["grid"], cfg["solver"], cfg["fit"]
         zeta, slopes = fit["zeta"], fit["slopes"]
         band = (fit.get("spectrum") or {}).get("band")
@@ -305,10 +308,10 @@ class StudySettings:
                                   rel_step=float(solver["rel_step"]),
                                   maxiter=None if solver.get("maxiter") is None else int(solver["maxiter"])),
             fit=FitSettings(
-                zeta=ZetaFitSettings(min_cells=int(zeta["min_cells"]),
-                                     max_area_fraction=float(zeta["max_area_fraction"]),
-                                     sphere_max_force_ratio=float(zeta["sphere_max_force_ratio"]),
-                                     bootstrap=int(zeta["bootstrap"]), confidence=float(zeta["confidence"])),
+                resolved_cells=int(fit["resolved_cells"]), bootstrap=int(fit["bootstrap"]),
+                confidence=float(fit["confidence"]),
+                zeta=ZetaFitSettings(max_area_fraction=float(zeta["max_area_fraction"]),
+                                     sphere_max_force_ratio=float(zeta["sphere_max_force_ratio"])),
                 slopes=SlopeFitSettings(low_max_ratio=float(slopes["low_max_ratio"]),
                                         high_min_ratio=float(slopes["high_min_ratio"]),
                                         window=int(slopes["window"])),

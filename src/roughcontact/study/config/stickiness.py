@@ -6,6 +6,7 @@ from collections.abc import Mapping
 
 from .defaults import capped_tol
 from .records import RunRecord
+from .renamed import current_layout
 
 __all__ = ["StickinessRun", "StickinessSettings"]
 
@@ -19,7 +20,7 @@ class StickinessRun(RunRecord):
     :func:`roughcontact.study.config.defaults.capped_tol`) with the surface and the approach path
     of this kind. The ``stickiness_run`` rule's ``params`` and the ``config`` (and ``config_hash``)
     its run file records, so that another seed, number or Hurst exponent in the sweep, or a change
-    of the merge's interval (``fit.zeta``), reruns no finished run. Built by
+    of the merge's interval (``fit.confidence``, ``fit.bootstrap``), reruns no finished run. Built by
     :meth:`StickinessSettings.run`.
 
     Attributes
@@ -94,7 +95,7 @@ class StickinessSettings:
     tol, confidence, bootstrap :
         The solver's tolerance (``solver.tol``, capped by
         :func:`~roughcontact.study.config.defaults.capped_tol`) and the interval of the merged table
-        (``fit.zeta.confidence``, ``fit.zeta.bootstrap``).
+        (``fit.confidence``, ``fit.bootstrap``).
     """
 
     n: int
@@ -125,15 +126,15 @@ class StickinessSettings:
         section = cfg.get("stickiness")
         if section is None:
             return None
-        zeta = cfg["fit"]["zeta"]
+        fit = current_layout(cfg)["fit"]   # a recorded configuration from before the rename too
         return cls(n=int(section["n"]), length=float(cfg["grid"]["length"]), e_star=float(cfg["e_star"]),
                    hurst=tuple(sorted(float(h) for h in section["hurst"])),
                    number=tuple(sorted(float(x) for x in section["number"])),
                    rms_slope=float(section["rms_slope"]), cutoff=float(section["cutoff"]),
                    range_ratio=float(section["range_ratio"]), seeds=int(section["seeds"]),
                    area=float(section["area"]), steps=int(section["steps"]),
-                   tol=capped_tol(float(cfg["solver"]["tol"])), confidence=float(zeta["confidence"]),
-                   bootstrap=int(zeta["bootstrap"]))
+                   tol=capped_tol(float(cfg["solver"]["tol"])), confidence=float(fit["confidence"]),
+                   bootstrap=int(fit["bootstrap"]))
 
     def run(self, *, hurst: float, number: float, seed: int) -> StickinessRun:
         """The :class:`StickinessRun` of the surface (*hurst*, *seed*) at the number *number*: the

@@ -16,8 +16,8 @@ from ...errors import MergeError
 from . import provenance, runfile
 from .provenance import write_netcdf
 
-__all__ = ["NO_ROW", "REASON", "empty_reason", "read_csv", "read_run", "reason_path", "read_groups", "write_csv",
-           "write_groups", "write_netcdf"]
+__all__ = ["NO_ROW", "REASON", "check_run", "declaration", "empty_reason", "open_run", "read_csv", "read_run",
+           "reason_path", "read_groups", "rerun_hint", "stale", "write_csv", "write_groups", "write_netcdf"]
 
 
 #: the column of an empty table's sidecar (:func:`reason_path`): why the table has no row
@@ -114,19 +114,56 @@ def read_run(path, expected=None):
         Naming *path*, what is wrong and what to do: a missing, truncated or foreign file, or a
         stale one (computed with other settings: the differing settings are named).
     """
+    ds = open_run(path)
+    check_run(path, ds, expected.file_spec() if expected is not None else None)
+    return ds
+
+
+def rerun_hint(path) -> str:
+    """What to do about the bad or stale run file *path*: the end of every :class:`MergeError` about it."""
+    return f"delete {path} and rerun snakemake to recompute it"
+
+
+def open_run(path):
+    """The run file *path* loaded in memory, unchecked (:func:`read_run` checks it).
+    :class:`~roughcontact.errors.MergeError` naming *path* for a missing or unreadable
+    (truncated) file."""
     import xarray as xr
 
     path = str(path)
-    hint = f"delete {path} and rerun snakemake to recompute it"
     if not os.path.exists(path):
         raise MergeError(f"{path}: run file is missing; rerun snakemake to compute it")
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
-            ds = ds.load()
+            return ds.load()
     except Exception as exc:
         raise MergeError(f"{path}: not a readable NetCDF file ({type(exc).__name__}: {exc}); "
-                         f"it may be truncated; {hint}") from exc
-    spec = expected.file_spec() if expected is not None else None
+                         f"it may be truncated; {rerun_hint(path)}") from exc
+
+
+def declaration(path, ds) -> dict:
+    """The job record the run file *ds* (read from *path*) declares: its ``config`` attribute
+    (JSON, :func:`roughcontact.study.files.provenance.provenance_attrs`), whose hash its
+    ``config_hash`` must be. :class:`~roughcontact.errors.MergeError` naming *path* where it has
+    none, or one that is not its own (not JSON, or not of its ``config_hash``)."""
+    text = ds.attrs.get("config")
+    try:
+        record = json.loads(text) if isinstance(text, str) else None
+    except ValueError:
+        record = None
+    if not isinstance(record, dict):
+        raise MergeError(f"{path}: foreign NetCDF file (no job record in its 'config' attribute); {rerun_hint(path)}")
+    if ds.attrs.get("config_hash") != provenance.config_hash(record):
+        raise MergeError(f"{path}: its 'config' attribute is not the one its config_hash was made of; "
+                         f"{rerun_hint(path)}")
+    return record
+
+
+def check_run(path, ds, spec: runfile.RunFileSpec | None) -> None:
+    """Check the run file *ds* (read from *path*) against *spec* (``None``: only that it is a
+    generated or adhesive run file): :func:`read_run` without the reading."""
+    path = str(path)
+    hint = rerun_hint(path)
     title = spec.title if spec is not None else runfile.TITLE
     required = spec.variables if spec is not None else ("force", *runfile.SCALARS)
     missing = [v for v in required if v not in ds.variables]
@@ -144,7 +181,6 @@ def read_run(path, expected=None):
                          f"{hint}")
     if spec is not None:
         _check_settings(path, ds, spec, hint)
-    return ds
 
 
 def _check_hash(path: str, ds, spec: runfile.RunFileSpec, hint: str, missing=()) -> None:
@@ -176,11 +212,22 @@ def _check_settings(path: str, ds, spec: runfile.RunFileSpec, hint: str) -> None
             raise MergeError(f"{path}: its force grid differs from the current config; {hint}")
 
 
+def stale(path, recorded: dict, current: dict) -> None:
+    """:class:`~roughcontact.errors.MergeError` naming *path* and each setting that differs where
+    the settings the run file *path* was computed with (*recorded*) are not the *current* ones
+    (both ``{name: value}`` of the same names)."""
+    now = json.loads(provenance.canonical_json(current))
+    then = json.loads(provenance.canonical_json(recorded))
+    if then != now:
+        raise MergeError(f"{path}: was computed with other settings{_differences(then, now)}; {rerun_hint(path)} "
+                         f"or run snakemake with --rerun-triggers params")
+
+
 def _differences(recorded, current: dict) -> str:
     """``"; differs in n: 64 in the file, 256 now"``: the settings a stale file was computed
     with that differ from *current* (its ``config`` attribute, JSON); empty where it has none."""
     try:
-        recorded = json.loads(recorded) if recorded else None
+        recorded = json.loads(recorded) if isinstance(recorded, str) and recorded else recorded
     except ValueError:
         return ""
     if not isinstance(recorded, dict):

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import logging
 
-from ..claims import NO_CLAIM, claims_table, failed
+from ..claims import NO_CLAIM, claims_table, failed, input_tables
 from .tables import write_html_table
 
 __all__ = ["CLAIMS_LEAD", "run_claims"]
@@ -40,13 +40,14 @@ def _rows_or_none(path):
 
 
 def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_nc, exponents_csv, out_csv, out_html,
-               pull_off_csv=None, stickiness_csv=None, tangential_nc=None):
+               pull_off_csv=None, stickiness_csv=None, tangential_nc=None, tables=()):
     """``claims`` rule: crossover.csv, its replicates, zeta.csv and zeta.nc (its replicates), the
     runs, the local exponents, the adhesive runs' pull-off table (*pull_off_csv*, or ``None``
     without adhesive runs) and the stickiness table (*stickiness_csv*, or ``None`` without the
     config's ``stickiness`` section), the tangential runs (*tangential_nc*, or ``None`` without the
-    axis ``poisson``) -> claims.csv and the same table as an HTML page for the report
-    (:mod:`roughcontact.study.report.tables`)."""
+    axis ``poisson``) and the registered input tables (*tables*: their paths, in the order of
+    :func:`roughcontact.study.claims.input_tables`) -> claims.csv and the same table as an HTML
+    page for the report (:mod:`roughcontact.study.report.tables`)."""
     import pandas as pd
     import xarray as xr
 
@@ -58,7 +59,8 @@ def run_claims(study, crossover_csv, crossover_nc, zeta_csv, zeta_nc, stiffness_
         table = claims_table(cross, reps.load(), pd.read_csv(zeta_csv), study, read_groups(stiffness_nc), exponents,
                              zds["zeta_replicates"].load(),
                              adhesion=_rows_or_none(pull_off_csv), stickiness=_rows_or_none(stickiness_csv),
-                             tangential=read_groups(tangential_nc) if tangential_nc else None)
+                             tangential=read_groups(tangential_nc) if tangential_nc else None,
+                             tables={name: _rows_or_none(path) for name, path in zip(input_tables(), tables)})
     write_csv(table, out_csv, reason=NO_CLAIM)
     write_html_table(table, out_html, title="Claims of the paper", lead=CLAIMS_LEAD,
                      first=("claim", "statement", "verdict", "untested_because", "measured", "ci_low", "ci_high",

@@ -177,7 +177,7 @@ def fig3(plt, inputs: Inputs, key):
     F = sub["force"].values / (E * L**2)
     k = sub["k_mean"].values / (E * L)
     err = np.nan_to_num(sub["k_sem"].values / (E * L))
-    res = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
+    res = resolved(sub["contact_cells_mean"].values, study.fit.resolved_cells)
     zf = inputs.zeta_used(hurst)
     plastic = "loading_k_mean" in sub and math.isfinite(combo["hardness"])
     beyond = plastic or axes.paper_setting(combo, L)  # a second panel: the curves beyond the paper
@@ -190,7 +190,7 @@ def fig3(plt, inputs: Inputs, key):
                         label=f"BEM mean of {inputs.ensemble.attrs['n_seeds']} seeds")
         if (~res).any():
             target.errorbar(F[~res], k[~res], yerr=err[~res], fmt="o", mfc="none", color="C3", ms=4, capsize=2,
-                            label=f"< {study.fit.zeta.min_cells} contact cells (unresolved)")
+                            label=f"< {study.fit.resolved_cells} contact cells (unresolved)")
     if beyond:
         other.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf, exponent=m) / (E * L),
                    "k-", lw=1.5, label=f"eq. 16, {inputs.zeta_label(hurst)}")
@@ -325,13 +325,13 @@ def collapse(plt, inputs: Inputs, _key):
             ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
             ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
             sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
-            ok = resolved(sub["contact_cells_mean"].values, study.fit.zeta.min_cells)
+            ok = resolved(sub["contact_cells_mean"].values, study.fit.resolved_cells)
             label = f"R = {combo['radius']:g}, h_rms = {combo['h_rms']:g}" + (f", {combo['variant']}" if combo["variant"] else "")
             ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{i % 10}",
                     alpha=0.8, label=label)
         ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr", title=f"H = {hurst:g}")
         ax.legend(fontsize=6)
-    fig.suptitle("all sphere runs (ensemble means, >= min_cells) over eq. 16", fontsize=9)
+    fig.suptitle("all sphere runs (ensemble means, >= fit.resolved_cells contact cells) over eq. 16", fontsize=9)
     fig.tight_layout()
     return fig
 

@@ -166,7 +166,7 @@ def make_figures(study, name: str, surface_file, merged_file, output, spectrum_f
         ax.set_title(f"{name}: power spectrum over the tiles and its self-affine fit", fontsize=9)
         _save(fig, output.psd)
     fig = draw_stiffness(plt, merged_file, study, spectrum_file)
-    level = 100 * study.fit.zeta.confidence
+    level = 100 * study.fit.confidence
     fig.suptitle(f"{name}: mean over tiles, {level:g} % bootstrap band", fontsize=9)
     _save(fig, output.kf)
 
@@ -176,7 +176,7 @@ def make_spectrum_figure(study, name: str, merged_file, output) -> None:
     study = StudySettings.of(study)
     plt = pyplot()
     fig = draw_stiffness(plt, merged_file, study)
-    level = 100 * study.fit.zeta.confidence
+    level = 100 * study.fit.confidence
     fig.suptitle(f"{name}: mean over {len(study.seeds)} seeds, {level:g} % bootstrap band", fontsize=9)
     _save(fig, output.kf)
 
@@ -193,8 +193,8 @@ def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv
     study = StudySettings.of(study)
     predicted = read_groups(spectrum_file)
     table = measured_scorecard(read_groups(merged_file), predicted, name=name,
-                               min_cells=study.fit.zeta.min_cells, fit=study.fit.zeta)
-    write_csv(table, out_csv, reason=f"no load of the scan {name} has at least {study.fit.zeta.min_cells} contact "
+                               min_cells=study.fit.resolved_cells, fit=study.fit)
+    write_csv(table, out_csv, reason=f"no load of the scan {name} has at least {study.fit.resolved_cells} contact "
                                      "cells and a model's prediction")
     spectrum = predicted.get("spectrum")
     note = range_note(table, spectrum.attrs if spectrum is not None else {})

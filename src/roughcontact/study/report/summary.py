@@ -18,7 +18,7 @@ import html
 import math
 
 from ..analysis import decision
-from ..analysis.verdicts import NO_SPHERE
+from ..analysis.crossover import NO_SPHERE
 from ..claims import NO_CLAIM
 from ..config import axes
 from ..analysis.statistics import VERDICTS

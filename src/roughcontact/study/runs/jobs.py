@@ -21,7 +21,8 @@ from ..config.defaults import solver_maxiter
 from ..config.records import ForcePathRecord
 from ..config.settings import StudySettings
 
-__all__ = ["SLIP_COMPONENTS", "JobSettings", "job_settings", "nearest_loads", "options_of", "settings_from_wildcards"]
+__all__ = ["SLIP_COMPONENTS", "JobSettings", "job_settings", "nearest_loads", "options_of", "run_settings",
+           "settings_from_wildcards", "shared_settings"]
 
 
 #: traction components of a run's partial-slip path (:func:`roughcontact.bem.partial_slip`,
@@ -184,6 +185,24 @@ class JobSettings(ForcePathRecord):
                                    scalars={name: getattr(self, name) for name in runfile.SCALARS},
                                    force_variable="force", forces=self.forces())
 
+    @classmethod
+    def from_record(cls, record) -> "JobSettings":
+        """The settings a run file declares: the inverse of :meth:`record` (its ``config``
+        attribute, read back from JSON), so that ``JobSettings.from_record(s.record()) == s``.
+        ``KeyError``/``TypeError``/``ValueError`` for a mapping that is no job record."""
+        values = dict(record)
+        values.pop("kind")
+        values.pop("periodic")
+        values.pop("slip_components", None)
+        options = tuple((spec.name, float(values.pop(spec.name))) for spec in axes.optional_axes()
+                        if spec.name in values)
+        for name in ("quantities", "field_loads", "slip_loads"):
+            if name in values:
+                values[name] = tuple(values[name])
+        for name in ("hurst", "radius", "h_rms", "length", "e_star", "force_from", "force_to", "tol", "rel_step"):
+            values[name] = float(values[name])   # "inf": a flat run's radius as JSON records it
+        return cls(**values, options=options)
+
     def describe(self) -> str:
         """One line naming the run, for logs and error messages."""
         r = "inf (flat, periodic)" if not math.isfinite(self.radius) else f"{self.radius:g}"
@@ -207,28 +226,49 @@ def job_settings(study, run: dict) -> JobSettings:
     of the study (:class:`~roughcontact.study.config.settings.StudySettings` or a resolved configuration)."""
     study = StudySettings.of(study)
     radius = float(run["radius"])
-    rng = study.forces[kind_of(radius)]
-    solver = study.solver
+    kind = kind_of(radius)
     sliding = float(run.get("friction", 0.0) or 0.0) > 0
+    return JobSettings(**shared_settings(study, kind), **run_settings(study, kind, run, sliding=sliding))
+
+
+def shared_settings(study: StudySettings, kind: str) -> dict:
+    """The fields of :class:`JobSettings` that every normal run of the surface *kind* (``sphere``,
+    ``flat``) of the study has alike: its grid, ``E*``, load path, solver and what it keeps.
+    :func:`job_settings` adds those of one run (:func:`run_settings`); the merge checks each run
+    file's declaration against them (:func:`roughcontact.study.analysis.merge.read_declared`)."""
+    rng = study.forces[kind]
+    solver = study.solver
+    shared = dict(n=study.grid.n, length=study.grid.length, e_star=study.e_star,
+                  force_from=rng.start, force_to=rng.stop, force_count=rng.count,
+                  tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
+                  maxiter=solver_maxiter(solver.maxiter), realization_of=study.grid.realization_of,
+                  patches=study.fields.patches, quantities=study.fields.quantities,
+                  field_loads=nearest_loads(rng.normalized(), study.fields.at), **_histograms(study, rng))
+    # the opt-in quantities the kind's runs keep (one of a run kind only, e.g. a flat run's: that kind's
+    # runs alone rerun when it is added), in the registry's order (the list's order changes nothing)
+    probe = JobSettings(**shared, **run_settings(study, kind, {"hurst": 0.5, "h_rms": 1.0, "seed": 0,
+                                                               "radius": math.inf if kind == "flat" else 1.0}))
+    kept = quantities.recorded(probe)
+    return {**shared, "quantities": tuple(q for q in quantities.optional() if q in kept)}
+
+
+def _histograms(study: StudySettings, rng) -> dict:
+    """``histogram_loads`` and ``histogram_bins`` of a load path *rng* (``fields.histograms``)."""
+    histograms = study.fields.histograms
+    loads = nearest_loads(rng.normalized(), histograms.at)
+    return dict(histogram_loads=loads, histogram_bins=histograms.bins if loads else 0)
+
+
+def run_settings(study: StudySettings, kind: str, run: dict, *, sliding: bool = False) -> dict:
+    """The fields of :class:`JobSettings` of the one *run* (a dict of
+    :func:`roughcontact.study.runs.naming.runs`): its surface, seed, optional axes and, where it
+    slides (*sliding*: friction > 0), its partial-slip path."""
+    rng = study.forces[kind]
     slip_loads = ((tuple(range(rng.count)) if study.tangential.at is None
                    else nearest_loads(rng.normalized(), study.tangential.at)) if sliding else ())
-    histograms = study.fields.histograms
-    histogram_loads = nearest_loads(rng.normalized(), histograms.at)
-    job = JobSettings(
-        hurst=float(run["hurst"]), radius=radius, h_rms=float(run["h_rms"]), seed=int(run["seed"]),
-        n=study.grid.n, length=study.grid.length, e_star=study.e_star,
-        force_from=rng.start, force_to=rng.stop, force_count=rng.count,
-        tol=solver.tol, stiffness_method=solver.stiffness, rel_step=solver.rel_step,
-        maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
-        realization_of=study.grid.realization_of, patches=study.fields.patches,
-        quantities=study.fields.quantities,
-        field_loads=nearest_loads(rng.normalized(), study.fields.at), histogram_loads=histogram_loads,
-        histogram_bins=histograms.bins if histogram_loads else 0, slip_loads=slip_loads,
-        slip_steps=study.tangential.steps if sliding else 0)
-    # the opt-in quantities this run keeps, in the registry's order (one of a run kind only, e.g. a
-    # flat run's: that kind's runs alone rerun when it is added; the list's order changes nothing)
-    kept = quantities.recorded(job)
-    return dataclasses.replace(job, quantities=tuple(q for q in quantities.optional() if q in kept))
+    return dict(hurst=float(run["hurst"]), radius=float(run["radius"]), h_rms=float(run["h_rms"]),
+                seed=int(run["seed"]), options=options_of(run), slip_loads=slip_loads,
+                slip_steps=study.tangential.steps if sliding else 0)
 
 
 def nearest_loads(forces, at) -> tuple:

@@ -85,7 +85,7 @@ def _zeta_points(groups, study: StudySettings, hurst):
                     sub = sub.sel(radius=radius)
                 F = sub["force"].values
                 k = sub["stiffness"].values
-                ok = resolved(sub["contact_cells"].values, zc.min_cells)
+                ok = resolved(sub["contact_cells"].values, study.fit.resolved_cells)
                 if math.isfinite(radius):
                     m = float(sub["exponent"]) if "exponent" in sub.coords else 2.0
                     f_tr = paper.crossover_force(radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=paper.zeta_estimate(hurst), exponent=m)
@@ -126,7 +126,7 @@ def fit_zeta(groups, study):
     """ζ(H) from eq. 11 (exponent fixed to 1/(H+1)) and the free exponent, with
     bootstrap-over-seeds confidence intervals.  Returns (DataFrame, Dataset).
 
-    Fit window: loads with at least ``fit.zeta.min_cells`` contact cells and,
+    Fit window: loads with at least ``fit.resolved_cells`` contact cells and,
     for flat surfaces, a contact area fraction at most
     ``fit.zeta.max_area_fraction``.  Without flat runs the sphere loads below
     ``fit.zeta.sphere_max_force_ratio`` × F_tr (eq. 17, ζ = 1.7/(H+1)) are used
@@ -136,8 +136,8 @@ def fit_zeta(groups, study):
 
     study = StudySettings.of(study)
     zc = study.fit.zeta
-    n_boot = zc.bootstrap
-    level = zc.confidence
+    n_boot = study.fit.bootstrap
+    level = study.fit.confidence
     rows, replicates = [], []
     for hurst in study.hurst:
         points, source = _zeta_points(groups, study, hurst)
@@ -170,7 +170,7 @@ def fit_zeta(groups, study):
             "force_max": float(f_all.max()) if f_all.size else math.nan,
             "confidence": level,
             "source": source if f_all.size else f"no loads in the fit window ({source})",
-            "window": (f"contact cells >= {zc.min_cells}, "
+            "window": (f"contact cells >= {study.fit.resolved_cells}, "
                        + (f"A/L^2 <= {zc.max_area_fraction}" if flat
                           else f"F <= {zc.sphere_max_force_ratio} F_tr(eq. 17, zeta = 1.7/(H+1))")),
         })

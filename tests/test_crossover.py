@@ -9,15 +9,15 @@ import pytest
 
 from roughcontact.models import paper
 from roughcontact.study.analysis import statistics
-from roughcontact.study.analysis import verdicts
+from roughcontact.study.analysis import crossover
 
 # The paper's Fig. 3 (R = 0.5, H = 0.7, h_rms = 9e-3, L = E* = 1, zeta = 1): F_tr = 8.0e-5 E* L^2 (eq. 17).
 RADIUS, HURST, H_RMS, LENGTH = 0.5, 0.7, 9e-3, 1.0
 # presets/paper.yaml's loads that touch >= 20 contact cells on 513^2 (1e-5 ... 1e-2, 13 loads)
 FORCES = np.geomspace(1e-7, 1e-2, 21)[8:]
 #: the combination and the windows of the tests: 20 cells, slopes below 0.3 F_tr and above 5 F_tr (the defaults)
-CASE = verdicts.SphereCase(hurst=HURST, radius=RADIUS, h_rms=H_RMS, length=LENGTH)
-WINDOWS = verdicts.VerdictWindows(min_cells=20, low_max_ratio=0.3, high_min_ratio=5.0)
+CASE = crossover.SphereCase(hurst=HURST, radius=RADIUS, h_rms=H_RMS, length=LENGTH)
+WINDOWS = crossover.VerdictWindows(min_cells=20, low_max_ratio=0.3, high_min_ratio=5.0)
 # Per-seed scatter of k measured on the paper preset (50 seeds, 2026-11-23): relative standard deviation
 # 0.22 at F = 1e-5 falling to 0.05 at 1e-2, and correlation 0.9 between neighbouring loads of one seed.
 SCATTER = 0.22 * (FORCES / 1e-5) ** -0.21
@@ -37,7 +37,7 @@ def _ensemble(rng, seeds, k_true):
 def test_exact_eq16_gives_its_prefactors_and_eq17():
     """Noise-free eq. 16: A = L/(6R), B = (h/L) zeta^-(H+1) and F_tr of eq. 17, to round-off."""
     k = paper.stiffness_from_force(FORCES, radius=RADIUS, hurst=HURST, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=1.0)
-    fit = verdicts.fit_eq16(FORCES, k, HURST)
+    fit = crossover.fit_eq16(FORCES, k, HURST)
     assert float(fit.hertz_coefficient) == pytest.approx(LENGTH / (6 * RADIUS), rel=1e-9), "A != L/(6R)"
     assert float(fit.rough_coefficient) == pytest.approx(H_RMS / LENGTH, rel=1e-9), "B != h/L (zeta = 1)"
     f_tr = paper.crossover_force(RADIUS, hurst=HURST, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=1.0)
@@ -50,7 +50,7 @@ def test_exact_eq16_other_prefactors(zeta, radius):
     f_tr = paper.crossover_force(radius, hurst=HURST, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=zeta)
     forces = f_tr * np.geomspace(0.05, 100, 15)
     k = paper.stiffness_from_force(forces, radius=radius, hurst=HURST, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=zeta)
-    fit = verdicts.fit_eq16(forces, k, HURST)
+    fit = crossover.fit_eq16(forces, k, HURST)
     assert float(fit.crossover_force) == pytest.approx(f_tr, rel=1e-9), "F_tr != eq. 17"
 
 
@@ -66,8 +66,8 @@ def test_crossover_estimator_bias_and_coverage():
     log_errors, covered = [], 0
     for _ in range(200):
         k = _ensemble(rng, 50, k_true)
-        log_errors.append(math.log(float(verdicts.fit_eq16(FORCES, k.mean(0), HURST).crossover_force) / f_true))
-        low, high = statistics.interval(verdicts.fit_eq16(FORCES, k[indices].mean(1), HURST).crossover_force, 0.95)
+        log_errors.append(math.log(float(crossover.fit_eq16(FORCES, k.mean(0), HURST).crossover_force) / f_true))
+        low, high = statistics.interval(crossover.fit_eq16(FORCES, k[indices].mean(1), HURST).crossover_force, 0.95)
         covered += low <= f_true <= high
     bias = math.exp(np.mean(log_errors)) - 1
     assert abs(bias) <= 0.05, f"bias of the F_tr estimate {bias:+.3f}"
@@ -75,7 +75,7 @@ def test_crossover_estimator_bias_and_coverage():
 
 
 def _verdicts_of(forces, k_seeds, cells=100):
-    return verdicts.sphere_verdicts(
+    return crossover.sphere_verdicts(
         forces, k_seeds, np.full(k_seeds.shape, cells), case=CASE, zeta_fit=1.0,
         indices=statistics.bootstrap_indices(k_seeds.shape[0], 200), windows=WINDOWS)
 
@@ -94,7 +94,7 @@ def test_unresolved_loads_are_left_out():
     """Loads with fewer contact cells than min_cells do not enter the fit: 3 resolved loads are too few."""
     k = paper.stiffness_from_force(FORCES, radius=RADIUS, hurst=HURST, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=1.0)
     cells = np.where(np.arange(FORCES.size) < FORCES.size - 3, 5, 100)
-    row = verdicts.sphere_verdicts(
+    row = crossover.sphere_verdicts(
         FORCES, np.tile(k, (4, 1)), np.tile(cells, (4, 1)), case=CASE, zeta_fit=1.0,
         indices=statistics.bootstrap_indices(4, 50), windows=WINDOWS).row
     assert row["n_loads_resolved"] == 3, row["n_loads_resolved"]
@@ -131,9 +131,9 @@ def test_slopes_of_a_body_shallower_than_the_roughness():
     zeta = float(paper.zeta_estimate(1.4))
     forces = np.geomspace(1e-5, 5e-3, 12)
     k = paper.stiffness_from_force(forces, radius=RADIUS, hurst=1.4, h_rms=H_RMS, length=LENGTH, e_star=1.0, zeta=zeta, exponent=1.0)
-    row = verdicts.sphere_verdicts(
+    row = crossover.sphere_verdicts(
         forces, np.tile(k, (4, 1)), np.full((4, forces.size), 100),
-        case=verdicts.SphereCase(hurst=1.4, radius=RADIUS, h_rms=H_RMS, length=LENGTH, exponent=1.0), zeta_fit=zeta,
+        case=crossover.SphereCase(hurst=1.4, radius=RADIUS, h_rms=H_RMS, length=LENGTH, exponent=1.0), zeta_fit=zeta,
         indices=statistics.bootstrap_indices(4, 50), windows=WINDOWS).row
     assert row["slope_low_theory"] == pytest.approx(1 / 2), "low-force asymptote of m < H"
     assert row["slope_high_theory"] == pytest.approx(1 / 2.4), "high-force asymptote of m < H"

@@ -1,7 +1,7 @@
-"""Estimates with 95 % intervals and verdicts: the crossover force of eq. 17
-(eq. 16 fitted with free prefactors), the asymptotic slopes and the deviation
-from eq. 16, per sphere combination (``crossover.csv``); the claims table built
-from them is :mod:`roughcontact.study.claims`.
+"""The crossover table (``crossover.csv``, rule ``crossover``): per sphere combination, the
+crossover force of eq. 17 (eq. 16 fitted with free prefactors), the asymptotic slopes and the
+deviation from eq. 16, each with its 95 % interval and verdicts; the claims table built from them
+is :mod:`roughcontact.study.claims`.
 
 Every measured quantity carries a percentile bootstrap interval over seeds
 (Efron & Tibshirani, *An Introduction to the Bootstrap*, 1993, ch. 13): the
@@ -83,7 +83,7 @@ class SphereCase:
 
 @dataclasses.dataclass(frozen=True)
 class VerdictWindows:
-    """Which loads the verdicts use (``fit.zeta`` and ``fit.slopes`` of the configuration).
+    """Which loads the verdicts use (``fit.resolved_cells``, ``fit.confidence`` and ``fit.slopes`` of the configuration).
 
     Attributes
     ----------
@@ -104,8 +104,8 @@ class VerdictWindows:
     @classmethod
     def of(cls, fit) -> "VerdictWindows":
         """The windows of a study's :class:`~roughcontact.study.config.settings.FitSettings`."""
-        return cls(min_cells=fit.zeta.min_cells, low_max_ratio=fit.slopes.low_max_ratio,
-                   high_min_ratio=fit.slopes.high_min_ratio, level=fit.zeta.confidence)
+        return cls(min_cells=fit.resolved_cells, low_max_ratio=fit.slopes.low_max_ratio,
+                   high_min_ratio=fit.slopes.high_min_ratio, level=fit.confidence)
 
 
 def sphere_verdicts(force, stiffness, contact_cells, *, case: SphereCase, zeta_fit: float,
@@ -276,7 +276,7 @@ def crossover_table(groups: dict, zeta_df, study):
     ds = groups["sphere"]
     L, E = study.grid.length, study.e_star
     windows = VerdictWindows.of(study.fit)
-    resamples = study.fit.zeta.bootstrap
+    resamples = study.fit.bootstrap
     indices = bootstrap_indices(ds.sizes["seed"], resamples)
     zeta_of = dict(zip(zeta_df["hurst"], zeta_df["zeta"])) if len(zeta_df) else {}
     axes = [d for d in ds["stiffness"].dims if d not in ("seed", "force")]
