@@ -28,6 +28,7 @@ include: "workflow/rules/measured.smk"
 include: "workflow/rules/adhesion.smk"
 include: "workflow/rules/stickiness.smk"
 include: "workflow/rules/tangential.smk"
+include: "workflow/rules/area.smk"
 
 
 localrules:
@@ -38,6 +39,7 @@ localrules:
     exponents,
     claims,
     models,
+    area,
     figures,
     summary,
     merge_coarse,
@@ -72,6 +74,7 @@ rule all:
                 rules.exponents.output,
                 rules.claims.output,
                 rules.models.output,
+                rules.area.output,
                 rules.figures.output,
                 rules.summary.output,
             ]

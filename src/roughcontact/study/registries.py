@@ -29,6 +29,7 @@ ANALYSIS_CODE = {
     "models": ("roughcontact.study.report.scorecard", "roughcontact.study.report.measured",
                "roughcontact.study.analysis.measured_spectrum"),
     "claims": ("roughcontact.study.report.claims",),
+    "area": ("roughcontact.study.report.area",),
     "figures": ("roughcontact.study.report.figures",),
     "summary": ("roughcontact.study.report.summary",),
     "grid_error": ("roughcontact.study.analysis.grid_error",),

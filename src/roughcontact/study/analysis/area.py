@@ -141,8 +141,9 @@ def _systematic(a_model, mean, a_boot, use, level) -> tuple:
 
 def area_scorecard(groups: dict, study):
     """The area scorecard (module docstring): a DataFrame of :data:`AREA_COLUMNS` and per
-    combination the curves ``{label: {"force", "area", "band_low", "band_high", "resolved", model: A}}``
-    (areas in length², forces in force units) for the figure."""
+    combination the curves for the figure, ``{label: {"force", "area" (the ensemble mean), "band_low",
+    "band_high", "resolved", "crossover_force", "min_cells", "rms_slope", "radius", "models": {name: A}}}``
+    (areas in length², forces in force units)."""
     import pandas as pd
 
     study = StudySettings.of(study)
@@ -168,7 +169,8 @@ def area_scorecard(groups: dict, study):
         predicted = area_models.predict(force, context.surface)
         curves[label] = {"force": force, "area": mean, "band_low": band[0], "band_high": band[1],
                          "resolved": context.resolved, "crossover_force": context.crossover_force,
-                         "min_cells": context.min_cells, **predicted}
+                         "min_cells": context.min_cells, "rms_slope": context.rms_slope,
+                         "radius": context.surface.radius, "models": predicted}
         use_all = context.resolved & (mean > 0)
         combo_rows = []
         for name, a_model in predicted.items():
