@@ -84,8 +84,8 @@ def summary_lines(rows, tolerance: float):
         yield (f"{e['n']:5d} {e['cells_per_wavelength']:14.1f} {e['force']:10.3g} {e['cells']:9.1f} "
                f"{e['cells_per_patch']:11.1f} {e['error']:+15.3f}")
     for w in sorted({e["cells_per_wavelength"] for e in errors}):
-        sub = [e for e in errors if e["cells_per_wavelength"] >= w - 1e-9]
-        yield (f"cells per cutoff wavelength >= {w:.1f}: |error| <= {tolerance:g} from "
+        sub = [e for e in errors if abs(e["cells_per_wavelength"] - w) < 1e-9]
+        yield (f"cells per cutoff wavelength {w:.1f}: |error| <= {tolerance:g} from "
                f"{threshold(sub, 'cells', tolerance):.0f} contact cells, from "
                f"{threshold(sub, 'cells_per_patch', tolerance):.1f} cells per patch "
                f"(largest |error| there: {max((abs(e['error']) for e in sub), default=float('nan')):.3f})")

@@ -127,3 +127,20 @@ def test_scorecard_ranks_the_law_the_ensemble_follows_first():
     assert joined["rank"] == 1, "the exact model ranks first"
     assert persson["max_rel_dev"] >= 1 - math.sqrt(8 / math.pi) / 2 - 1e-6, "Persson's kappa is 1.6, not 2"
     assert set(curves) == {joined["combination"]}, "one curve per combination"
+
+
+def test_area_rule_writes_its_table_page_and_figure(tmp_path):
+    """run_area on a merged file: area_models.csv with one row per area model, the HTML page and
+    a PNG of the A(F) figure."""
+    from roughcontact.study.files.io import read_csv, write_groups
+    from roughcontact.study.report.area import run_area
+
+    merged = tmp_path / "stiffness.nc"
+    write_groups(merged, _groups(_joined(H_LINEAR), H_LINEAR), {})
+    out = tmp_path / "area"
+    out.mkdir()
+    run_area(_study(H_LINEAR), merged, out / "area_models.csv", out / "area_models.html", out / "area.png")
+    table = read_csv(out / "area_models.csv")
+    assert sorted(table["model"]) == ["linear_hertz", "persson_area"], "one row per area model"
+    assert "<title>Real contact area: model scorecard</title>" in (out / "area_models.html").read_text(), "its title"
+    assert (out / "area.png").read_bytes()[:4] == b"\x89PNG", "the figure is a PNG"

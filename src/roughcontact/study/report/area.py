@@ -54,7 +54,7 @@ def area_figure(path, curves: dict, study) -> None:
         area = np.asarray(c["area"], dtype=float)
         ax.loglog(force[ok] / norm_f, area[ok] / norm_a, "o", color="k", ms=4, label="BEM, area-resolved")
         ax.loglog(force[~ok] / norm_f, area[~ok] / norm_a, "o", mfc="none", color="0.5", ms=4,
-                  label=f"BEM, < {c['min_cells']:g} contact cells")
+                  label="BEM, area under-resolved")
         fine = np.geomspace(force.min(), force.max(), 200)
         ax.loglog(fine / norm_f, hertz_area(fine, radius=c["radius"], e_star=study.e_star) / norm_a, "--",
                   color="C0", label="Hertz pi a^2")
@@ -64,7 +64,7 @@ def area_figure(path, curves: dict, study) -> None:
             ax.loglog(force / norm_f, np.asarray(predicted) / norm_a, "-", lw=1, color=f"C{i + 2}", label=name)
         if math.isfinite(c["crossover_force"]):
             ax.axvline(c["crossover_force"] / norm_f, color="0.7", lw=0.8)
-        ax.set(title=label, xlabel="F/(E* L^2)", ylabel="A/L^2")
+        ax.set(title=f"{label} (resolved: >= {c['min_cells']:g} cells)", xlabel="F/(E* L^2)", ylabel="A/L^2")
         ax.title.set_fontsize(8)
     panels[0].legend(fontsize=6)
     fig.tight_layout()
