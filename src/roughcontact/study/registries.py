@@ -80,7 +80,8 @@ def listing(kind: str) -> list[dict]:
 
 #: the packages whose modules are imported by discovery (the registries), not by name: every module
 #: of their folder counts where the package is imported
-DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.config.axes",
+DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.models.area", "roughcontact.study.claims",
+              "roughcontact.study.config.axes",
               "roughcontact.study.quantities")
 
 #: the folder of the ``roughcontact`` package (this file is ``roughcontact/study/registries.py``)

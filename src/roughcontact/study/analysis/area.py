@@ -95,7 +95,7 @@ class AreaContext:
 
 
 def _surface(where: dict, study: StudySettings):
-    from ...models.scorecard import Surface
+    from ...models.scorecard.registry import Surface
 
     length = study.grid.length
     value = {axis: runs.axis_value(axis, where[axis], length) if axis in where else None
