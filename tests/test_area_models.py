@@ -91,3 +91,14 @@ def test_area_models_registered_for_the_paraboloid_only():
     cone = Surface(hurst=0.7, h_rms=9e-3, radius=R, length=1.0, n=65, e_star=E_STAR, exponent=1.0)
     assert sorted(area.predict(force, sphere)) == ["linear_hertz", "persson_area"]
     assert area.predict(force, cone) == {}
+
+
+@pytest.mark.parametrize("ratio, expected", [(1.0, 0.654), (10.0, 0.904)])
+def test_persson_fraction_at_multiples_of_the_crossover(ratio, expected):
+    """Persson's A/(π a²) at F = ratio · F_A equals persson_area/hertz_area there (to 1e-12, any
+    h'), and the values the claims quote: 0.654 at F_A, 0.904 at 10 F_A (to the 3 digits stated)."""
+    force = ratio * laws.area_crossover_force(radius=R, e_star=E_STAR, rms_slope=0.17)
+    direct = laws.persson_area(force, radius=R, e_star=E_STAR, rms_slope=0.17) / laws.hertz_area(
+        force, radius=R, e_star=E_STAR)
+    assert float(laws.persson_fraction_at(ratio)) == pytest.approx(direct, rel=1e-12)
+    assert float(laws.persson_fraction_at(ratio)) == pytest.approx(expected, abs=5e-4)

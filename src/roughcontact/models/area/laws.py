@@ -30,7 +30,7 @@ from scipy.special import erf
 from ..paper import hertz_contact_radius
 
 __all__ = ["PERSSON_KAPPA", "SIMULATION_KAPPA", "hertz_area", "linear_area", "joined_area", "area_crossover_force",
-           "persson_area", "persson_area_fraction"]
+           "persson_area", "persson_area_fraction", "persson_fraction_at"]
 
 #: κ of Persson's theory, √(8/π) ≈ 1.596 (small-pressure limit of erf, Persson 2001)
 PERSSON_KAPPA = math.sqrt(8.0 / math.pi)
@@ -88,3 +88,11 @@ def persson_area(force, *, radius: float, e_star: float, rms_slope: float):
     with np.errstate(divide="ignore", invalid="ignore"):
         p0 = np.where(area > 0, 1.5 * force / np.where(area > 0, area, 1.0), 0.0)
     return area * persson_area_fraction(math.sqrt(2.0) * p0 / (e_star * rms_slope))
+
+
+def persson_fraction_at(ratio, kappa: float = SIMULATION_KAPPA):
+    """Persson's ``A/(π a²)`` at ``F = ratio · F_A`` (:func:`area_crossover_force` with *kappa*), the same
+    for every sphere and spectrum: there ``β = (3/√2)/κ · ratio^(1/3)`` (0.654 at the crossover, 0.904 at
+    ``10 F_A`` for κ = 2)."""
+    beta = 1.5 * math.sqrt(2.0) / kappa * np.cbrt(np.asarray(ratio, dtype=float))
+    return persson_area_fraction(np.atleast_1d(beta)).reshape(np.shape(beta))

@@ -113,9 +113,9 @@ def area_context(where: dict, data, study) -> AreaContext:
     wavelength = cells_per_wavelength(study.grid.n, study.grid.length, surface.cutoff)
     needed = min_area_cells(wavelength)
     cells = np.asarray(data["contact_cells"].values, dtype=float).mean(0)
+    scale = "no cutoff: the roughness reaches the grid scale; " if wavelength <= 2 else ""
     why = (f"area needs >= {needed:g} mean contact cells at {wavelength:g} cells per shortest wavelength "
-           f"(grid study, {MEASURED_ON}; {'no cutoff: the roughness reaches the grid scale; ' if wavelength <= 2 else ''}"
-           f"a cutoff of more cells or a larger grid.n lowers it)")
+           f"(grid study, {MEASURED_ON}; {scale}a cutoff of more cells or a larger grid.n lowers it)")
     return AreaContext(surface, slope, area_crossover_force(radius=surface.radius, e_star=surface.e_star,
                                                             rms_slope=slope, kappa=SIMULATION_KAPPA),
                        wavelength, needed, cells >= needed, why)

@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from ...models.area.laws import SIMULATION_KAPPA, hertz_area, persson_area_fraction
+from ...models.area.laws import SIMULATION_KAPPA, hertz_area, persson_fraction_at
 from ..analysis.area import AREA_TOLERANCE, area_context
 from ..analysis.statistics import (NOT_SWEPT, OFF_PAPER, UNRESOLVED, bootstrap_indices, interval, judge,
                                    log_log_slope, untested, verdict_bound)
@@ -133,7 +133,7 @@ def _v(combination):
                verdict_bound(HERTZ_TOLERANCE, dev_low, dev_high, side="below"), sweep=sweep, loads=loads,
                note=(f"measured: A/(pi a^2) at the load farthest from 1; verdict on max |A/(pi a^2) - 1| in "
                      f"[{dev_low:.3g}, {dev_high:.3g}]; Persson's theory at {HERTZ_MIN_RATIO:g} F_A: "
-                     f"{float(persson_area_fraction(np.array([1.5 * math.sqrt(2) / SIMULATION_KAPPA * HERTZ_MIN_RATIO ** (1 / 3)]))[0]):.3f}"),
+                     f"{float(persson_fraction_at(HERTZ_MIN_RATIO)):.3f}"),
                **combination.axes)
 
 
