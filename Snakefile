@@ -28,6 +28,7 @@ include: "workflow/rules/measured.smk"
 include: "workflow/rules/adhesion.smk"
 include: "workflow/rules/stickiness.smk"
 include: "workflow/rules/tangential.smk"
+include: "workflow/rules/histograms.smk"
 include: "workflow/rules/area.smk"
 
 
@@ -53,6 +54,7 @@ localrules:
     tangential,
     tangential_figures,
     partial_slip_figures,
+    histograms_figure,
     measured_surface,
     measured_merge,
     measured_spectrum,
@@ -101,4 +103,10 @@ rule all:
             else []
         ),
         ([rules.partial_slip_figures.output] if PARTIAL_SLIP else []),
+        # the pressure and gap histograms of one load (none without fields.histograms.at)
+        (
+            [rules.histograms_figure.output]
+            if STUDY.generated and STUDY.fields.histograms.at
+            else []
+        ),
         measured_targets(),

@@ -110,7 +110,7 @@ def test_batch_defaults_to_the_schemas_value():
 
 def test_batch_runtime_grows_with_the_runs():
     study = study_settings(load_config(ROOT / "config.yaml"))
-    assert naming.indent_resources(study, 60)["runtime"] > naming.indent_resources(study)["runtime"]
+    assert naming.indent_resources(study, 600)["runtime"] > naming.indent_resources(study)["runtime"]
 
 
 def test_batch_memory_is_that_of_one_run():
@@ -158,3 +158,45 @@ def test_declared_memory_follows_the_measured_peak(n, measured_gb):
                             "seeds": 1})
     declared_gb = naming.indent_resources(study)["mem_mb"] / 1000
     assert 1.3 * measured_gb <= declared_gb <= 3 * measured_gb
+
+
+@pytest.mark.parametrize("n, solve_seconds", [(2049, 68.1), (4097, 327.6), (8193, 1883.8)])
+def test_declared_runtime_follows_the_measured_wall(n, solve_seconds):
+    """An indent job's runtime (minutes) against one seed of the default sphere's 27 loads (benchmarks/RESULTS.md
+    section 11, 2026-11-29, a loaded machine): the solves took ``solve_seconds`` and the punch stiffness of every
+    state 0.43–0.66× as long again (``large_grid.py --stiffness`` on 513²–2049²). The declaration covers a day twice
+    as slow (at least 2× the slowest reading) and does not hold a cluster's slot for ever (at most 6× the fastest)."""
+    from roughcontact.study.config import resolve_config
+
+    study = resolve_config({"grid": {"n": n, "coarse": None}, "hurst": [0.7], "radius": [0.5], "h_rms": [9e-3],
+                            "seeds": 1, "forces": {"sphere": {"from": 1e-7, "to": 2e-2, "count": 27}}})
+    declared = naming.indent_resources(study)["runtime"] * 60
+    assert declared >= 2 * 1.66 * solve_seconds, "declared runtime below twice the measured wall"
+    assert declared <= 6 * 1.43 * solve_seconds, "declared runtime far above the measured wall"
+
+
+def test_a_8193_sweep_of_50_seeds_is_submitted_as_it_is(tmp_path):
+    """Issue 41 item 4: a SLURM user submits 8193² × 50 seeds without editing resources. The dry run through
+    the SLURM profile plans the 9 + 9 indent jobs (the grid and its 4097² companion, 6 seeds per job), and every
+    job's request fits a common cluster node and limit: at most 16 GB and 24 h (10.5 GB and 14.2 h; one run
+    measured 31 min and 4.67 GB on a loaded machine, benchmarks/RESULTS.md section 11)."""
+    pytest.importorskip("snakemake_executor_plugin_slurm")
+    import subprocess
+    import sys
+
+    import yaml
+
+    sweep = {"grid": {"n": 8193}, "hurst": [0.7], "radius": [0.5], "h_rms": [9e-3], "seeds": 50}
+    (tmp_path / "big.yaml").write_text(yaml.safe_dump(sweep))
+    proc = subprocess.run([sys.executable, "-m", "snakemake", "-n", "--profile", str(ROOT / "profiles" / "slurm"),
+                           "--configfile", str(tmp_path / "big.yaml"), "--directory", str(tmp_path)],
+                          cwd=ROOT, capture_output=True, text=True, timeout=300)
+    out = proc.stdout + proc.stderr
+    assert proc.returncode == 0, out[-3000:]
+    planned = [line.split() for line in out.splitlines() if line.startswith("indent")]
+    assert sum(int(count) for _, count in {tuple(p) for p in planned}) == 18, out[-3000:]
+    study = study_settings(sweep)
+    for grid in (study, study.coarse_study()):
+        request = naming.indent_resources(grid, 6)
+        assert request["mem_mb"] <= 16000, f"{request} asks more than a 16 GB node"
+        assert request["runtime"] <= 24 * 60, f"{request} asks more than 24 h"

@@ -365,6 +365,24 @@ def test_rough_warm_equals_cold(rough):
     assert np.array_equal(warm.contact, cold.contact), "warm-start contact set differs"
 
 
+@pytest.mark.parametrize("periodic", [False, True])
+def test_warm_start_in_fortran_order(periodic):
+    """A warm start in Fortran order (e.g. a transposed pressure) is an array like any other:
+    the same contact set and a depth within the solver's tolerance of the cold start
+    (the kernel's flat views of such an array once were copies, and the solve never moved)."""
+    z = surfaces.rough_sphere(64, radius=0.5, hurst=0.7, h_rms=2e-3, length=1.0, seed=3)
+    if periodic:
+        z = surfaces.self_affine(64, hurst=0.7, h_rms=2e-3, length=1.0, seed=3)
+    force = 2e-3
+    cold = bem.solve(z, force=force, length=1.0, e_star=E_STAR, periodic=periodic)
+    lower = bem.solve(z.T, force=0.7 * force, length=1.0, e_star=E_STAR, periodic=periodic)
+    warm = bem.solve(z, force=force, length=1.0, e_star=E_STAR, periodic=periodic,
+                     initial=lower.pressure.T)
+    assert warm.converged, "the Fortran-order warm start did not converge"
+    assert warm.depth == pytest.approx(cold.depth, rel=1e-7), "warm-start depth differs"
+    assert np.array_equal(warm.contact, cold.contact), "warm-start contact set differs"
+
+
 def test_rough_windowed_equals_full(rough):
     z, state = rough
     full = bem.solve(z, force=1e-3, length=1.0, e_star=E_STAR, windowed=False)

@@ -71,3 +71,19 @@ def test_against_eq16_of_eq16_itself_is_zero(tmp_path):
     write_groups(tmp_path / "results" / "stiffness.nc", {"sphere": ds}, {"grid_n": 257})
     table = convergence.against_eq16([tmp_path], resamples=50)
     assert table["k_over_eq16_minus_1"].abs().max() == pytest.approx(0.0, abs=1e-12), "eq. 16 against itself"
+
+
+@pytest.mark.parametrize("target, first", [(300.0, False), (2.0, True)])
+def test_force_at_cells_of_a_power_law(target, first):
+    """Mean contact cells c = 1000 (F/1e-4)^0.8 at F = 1e-6, 1e-5, 1e-4: the force at which c reaches the
+    target is 1e-4 (target/1000)^(1/0.8) exactly, whether it lies between the loads (log-log interpolation
+    of a power law is exact) or below the first one (extrapolated with the first two loads' slope)."""
+    cells = 1000 * (FORCES / 1e-4) ** 0.8
+    force, extrapolated = convergence._force_at_cells(FORCES, cells, target)
+    assert force == pytest.approx(1e-4 * (target / 1000) ** 1.25, rel=1e-12), "force at the target cells"
+    assert extrapolated is first, "extrapolated only below the first load"
+
+
+def test_force_at_cells_never_reached_is_nan():
+    force, _ = convergence._force_at_cells(FORCES, np.array([1.0, 2.0, 3.0]), 20.0)
+    assert np.isnan(force), "no load has 20 cells"

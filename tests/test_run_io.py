@@ -71,10 +71,11 @@ def test_a_run_of_another_seed_names_the_scalar(tmp_path):
 
 
 def test_an_elastic_file_is_no_adhesive_run(tmp_path):
-    """The adhesive run's record asks for the retract path and pull-off."""
+    """The adhesive run's record asks for the retract path and pull-off: the file was made with
+    other settings, and lacks them."""
     _generated_file(tmp_path / "r.nc", GENERATED)
     adhesive = dataclasses.replace(GENERATED, options=(("work_of_adhesion", 1e-3),))
-    with pytest.raises(MergeError, match="foreign NetCDF file .*lacks retract_depth"):
+    with pytest.raises(MergeError, match="other settings .*differs in work_of_adhesion.*lacks retract_depth"):
         read_run(tmp_path / "r.nc", adhesive)
 
 

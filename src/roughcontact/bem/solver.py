@@ -108,7 +108,8 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
     Sci. Comput. 25, 454 (2003)); the accepted state meets the stopping test
     in double precision.
     """
-    pressure = pressure * (total / pressure.sum())
+    # C order: the flat views below must share memory with the arrays they update
+    pressure = np.ascontiguousarray(pressure * (total / pressure.sum()))
     shape = pressure.shape
     flat_pressure = pressure.reshape(-1)
     support = np.flatnonzero(flat_pressure)
@@ -158,7 +159,7 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter):
         if conjugate and entered:  # the newcomers are the last cells of the contact set
             newcomers = residual[support.size - entered: support.size]
             conjugate = float(newcomers @ newcomers) <= _RESTART_SHARE * float(residual @ residual)
-        if conjugate:
+        if conjugate and slope_old > 0.0:
             candidate = values + (norm / slope_old) * flat_direction[working]
             candidate_slope = float(residual @ candidate)
             if candidate_slope > 0.0:

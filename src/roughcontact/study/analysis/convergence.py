@@ -11,7 +11,8 @@ the ensemble-mean stiffness of every grid with that of the finest grid at each c
 grids independently (the surfaces of different grids are independent realisations);
 :func:`against_eq16` compares every study's ensemble mean with eq. 16 instead, one
 deterministic reference, so that two ensembles of one grid can stand side by side. Forces
-are ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
+are ``F/(E* L²)``, stiffnesses ``k/(E* L)``. :func:`resolved_range` says how many decades of
+force below the measured crossover each grid resolves.
 """
 from __future__ import annotations
 
@@ -23,7 +24,12 @@ import numpy as np
 from ..files.directory import StudyDirectory
 from .statistics import BOOTSTRAP_SEED, interval
 
-__all__ = ["summary", "stiffness_ratios", "against_eq16"]
+__all__ = ["summary", "stiffness_ratios", "against_eq16", "resolved_range", "RESOLVED_CELLS"]
+
+#: Mean contact cells from which a load counts as resolved: the grid error of the ensemble mean is
+#: at most 6 % from 20 cells and below 1 % from 150 on (docs/guide/pipeline.md, "How the grid error
+#: falls with the contact's cells").
+RESOLVED_CELLS = (20, 150)
 
 
 def _sphere(study: Path):
@@ -130,4 +136,42 @@ def against_eq16(studies, *, resamples: int = 1000, level: float = 0.95):
             rows.append({"study": study.name, "n": n, "seeds": k.shape[0], "force": float(f),
                          "contact_cells": float(cells[j]), "k_over_eq16_minus_1": float(k[:, j].mean() / k16[j] - 1),
                          "ci_low": low, "ci_high": high})
+    return pd.DataFrame(rows)
+
+
+def _force_at_cells(force, cells, target: float) -> tuple[float, bool]:
+    """The force at which the mean contact cells reach *target*, interpolated in log-log between
+    the loads around it, or extrapolated with the slope of the first two loads when the first
+    load already has more (then ``True``: extrapolated); ``nan`` if no load reaches it."""
+    log_f, log_c = np.log(force), np.log(np.maximum(cells, 1e-300))
+    above = np.flatnonzero(cells >= target)
+    if above.size == 0:
+        return math.nan, False
+    j = int(above[0])
+    if j == 0:
+        slope = (log_c[1] - log_c[0]) / (log_f[1] - log_f[0])
+        return float(np.exp(log_f[0] + (math.log(target) - log_c[0]) / slope)), True
+    t = (math.log(target) - log_c[j - 1]) / (log_c[j] - log_c[j - 1])
+    return float(np.exp(log_f[j - 1] + t * (log_f[j] - log_f[j - 1]))), False
+
+
+def resolved_range(studies, *, cells=RESOLVED_CELLS):
+    """How much of the fractal branch each study resolves: per study and threshold of mean contact
+    cells (:data:`RESOLVED_CELLS`), the force ``F_c`` at which the ensemble's mean contact reaches
+    it (:func:`_force_at_cells`; ``extrapolated`` below the study's first load), the measured
+    crossover ``F_tr`` of eq. 16 (crossover.csv) and ``decades_below_Ftr = log10(F_tr/F_c)``, the
+    decades of force of the fractal branch that the grid resolves (negative: not even the crossover)."""
+    import pandas as pd
+
+    rows = []
+    for study in map(Path, studies):
+        ds, n = _sphere(study)
+        crossover = StudyDirectory(study).table("crossover").iloc[0]
+        ftr = float(crossover["Ftr_measured"])
+        force, mean_cells = ds["force"].values, ds["contact_cells"].values.mean(0)
+        for threshold in cells:
+            f_c, extrapolated = _force_at_cells(force, mean_cells, float(threshold))
+            rows.append({"study": study.name, "n": n, "seeds": ds.sizes["seed"], "cells": int(threshold),
+                         "force_resolved": f_c, "extrapolated": extrapolated, "Ftr_measured": ftr,
+                         "decades_below_Ftr": math.log10(ftr / f_c) if f_c > 0 else math.nan})
     return pd.DataFrame(rows)

@@ -16,7 +16,7 @@ from ...errors import MergeError
 from .. import quantities
 from ..files import provenance, runfile
 from ..config.axes import coordinate_attrs
-from ..config.units import to_metres
+from ..config.units import study_units, to_metres
 from .conductance import conductance_variables
 from ..runs import naming as runs
 from .ensemble import ensemble
@@ -24,7 +24,8 @@ from ..files.io import read_run, write_groups
 from ..runs.jobs import job_settings
 from ..config.settings import StudySettings
 
-__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "layout_of", "force_coords", "merge_runs", "run_merge"]
+__all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "layout_of", "force_coords", "merge_runs", "run_merge",
+           "with_units"]
 
 
 log = logging.getLogger(__name__)
@@ -177,16 +178,33 @@ def merge_runs(study, paths) -> dict:
     for layout in kind_layouts(study, table, paths):
         kind, axes, coords = layout.kind, layout.axes, layout.coords
         # the quantities any run of the kind keeps (a hardness on some runs: their plastic ones too)
-        kept = [quantities.recorded(job_settings(study, row)) for row, _ in layout.rows]
+        jobs = [job_settings(study, row) for row, _ in layout.rows]
+        kept = [quantities.recorded(job) for job in jobs]
         names = tuple(name for name in quantities.names() if any(name in k for k in kept))
+        # fields.histograms: every run of the kind keeps them at the same loads
+        histograms = {n: v for n, v in runfile.HISTOGRAM_VARIABLES.items() if n != "histogram_force"}
+        loads = list(jobs[0].histogram_loads)
         runs_of = gather(layout, lambda row: job_settings(study, row),
-                         {n: quantities.QUANTITIES[n].dtype for n in names},
+                         {**{n: quantities.QUANTITIES[n].dtype for n in names},
+                          **({n: v.dtype for n, v in histograms.items()} if loads else {})},
                          value=_generated_value)
         dims = (*axes, "seed", "force")
+        forces = force_coords(study, kind)
+        variables = {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names}
+        extra = {}
+        if loads:
+            variables.update({name: ((*axes, "seed", *meta.dims), runs_of.data[name], runs_of.attrs.get(name, {}))
+                              for name, meta in histograms.items()})
+            dtype, attrs = runfile.HISTOGRAM_COORDS["histogram_load"]
+            extra = {"histogram_load": ("histogram_load", np.asarray(loads, dtype=dtype), attrs),
+                     "histogram_force": ("histogram_load", forces["force"][1][loads],
+                                         {**runfile.FORCE_ATTRS, "long_name": "normal force F of the histograms"}),
+                     "histogram_force_normalized": ("histogram_load", forces["force_normalized"][1][loads],
+                                                    {"long_name": "F/(E* L^2) of the histograms", "units": "1"})}
         groups[kind] = xr.Dataset(
-            {name: (dims, runs_of.data[name], runs_of.attrs.get(name, {})) for name in names},
+            variables,
             coords={**{axis: (axis, coords[axis], coordinate_attrs(axis)) for axis in (*axes, "seed")},
-                    **force_coords(study, kind)},
+                    **forces, **extra},
             attrs={"surface_kind": kind, "half_space": layout.half_space,
                    "run_git_commits": provenance.canonical_json(runs_of.commits)},
         )
@@ -195,6 +213,20 @@ def merge_runs(study, paths) -> dict:
                 groups[kind]["stiffness"] / study.e_star, metres_per_unit=to_metres(study.units.length),
                 settings=study.conductance))
     return groups
+
+
+def with_units(ds, study: StudySettings):
+    """*ds* (a merged or ensemble group) with ``units.length`` and ``units.e_star`` in the ``units``
+    attribute of every variable and coordinate (:func:`~roughcontact.study.config.units.study_units`),
+    where ``units.length`` is set; as it is otherwise."""
+    length, pressure = study.units.length, study.units.e_star
+    if length is None:
+        return ds
+    ds = ds.copy()
+    for name in (*ds.data_vars, *ds.coords):
+        if "units" in ds[name].attrs:
+            ds[name].attrs = {**ds[name].attrs, "units": study_units(str(ds[name].attrs["units"]), length, pressure)}
+    return ds
 
 
 # --------------------------------------------------------------------------
@@ -209,7 +241,7 @@ def run_merge(study, run_files, out_stiffness, out_ensemble):
         layout="one group per surface kind (sphere, flat)", grid_n=study.grid.n, grid_length=study.grid.length,
         e_star=study.e_star, solver_tol=study.solver.tol, stiffness_method=study.solver.stiffness,
         seeds=list(study.seeds))
-    write_groups(out_stiffness, groups, attrs)
+    write_groups(out_stiffness, {kind: with_units(ds, study) for kind, ds in groups.items()}, attrs)
     attrs["title"] = "roughcontact parameter study: ensemble statistics over seeds"
-    write_groups(out_ensemble, {kind: ensemble(ds) for kind, ds in groups.items()}, attrs)
+    write_groups(out_ensemble, {kind: with_units(ensemble(ds), study) for kind, ds in groups.items()}, attrs)
     log.info("merged %d runs (%s) into %s and %s", len(run_files), ", ".join(groups), out_stiffness, out_ensemble)

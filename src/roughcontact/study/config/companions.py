@@ -28,8 +28,8 @@ def coarse_config(cfg) -> dict:
     """The resolved configuration of the companion study of the grid error of *cfg* (resolved,
     with ``grid.coarse``): ``grid.n`` = the coarse grid, ``grid.realization_of`` = the grid whose
     surfaces *cfg* presses, ``radius`` the finite radii only (the grid error is the spheres'; no
-    flat run is pressed twice), the tangential axes at their paper setting, everything else as in
-    *cfg*. ``ValueError`` without
+    flat run is pressed twice), the tangential axes at their paper setting, no opt-in quantity or
+    histogram, everything else as in *cfg*. ``ValueError`` without
     ``grid.coarse`` or without a sphere."""
     grid = dict(cfg["grid"])
     grid.pop("fine", None), grid.pop("fine_to", None)   # the companions press on the study's grid only
@@ -43,7 +43,17 @@ def coarse_config(cfg) -> dict:
     # the grid error is the normal stiffness's: the tangential axes at their paper setting
     tangential = {a.name: [a.paper] for a in axes.optional_axes(normal=False) if a.name in cfg}
     return {**cfg, **tangential, "radius": spheres,
-            "grid": {**grid, "n": int(coarse), "coarse": None, "realization_of": int(fine)}}
+            "grid": {**grid, "n": int(coarse), "coarse": None, "realization_of": int(fine)},
+            "fields": _without_outputs(cfg)}
+
+
+def _without_outputs(cfg, **fields) -> dict:
+    """The ``fields`` of a companion of *cfg*: the study's, without the opt-in quantities and the
+    histograms (outputs of the study's own runs, which the grid error does not read: adding one
+    reruns no companion), with *fields* on top."""
+    section = dict(cfg.get("fields") or {})
+    histograms = {**(section.get("histograms") or {}), "at": []}
+    return {**section, "quantities": [], "histograms": histograms, **fields}
 
 
 def fine_config(cfg) -> dict:
@@ -52,7 +62,8 @@ def fine_config(cfg) -> dict:
     it is finer still, else the fine grid's own), at the loads of the sphere load path up to
     ``grid.fine_to`` (the same loads: a log grid cut short), counting their contact patches (the
     single-asperity regime, :mod:`roughcontact.study.analysis.fine_reference`), without contact
-    fields, grid-error companions or the tangential axes. ``ValueError`` without ``grid.fine``."""
+    fields, opt-in quantities, histograms, grid-error companions or the tangential axes.
+    ``ValueError`` without ``grid.fine``."""
     import numpy as np
 
     grid = dict(cfg["grid"])
@@ -67,4 +78,4 @@ def fine_config(cfg) -> dict:
     return {**cfg, **tangential, "radius": [r for r in cfg["radius"] if math.isfinite(r)],
             "grid": {**grid, "n": int(fine), "coarse": None, "realization_of": source if source and source > fine else None},
             "forces": {"sphere": {**rng, "to": float(path[last]), "count": last + 1}},
-            "fields": {**(cfg.get("fields") or {}), "patches": True, "at": []}}
+            "fields": _without_outputs(cfg, patches=True, at=[])}

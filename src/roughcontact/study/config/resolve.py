@@ -266,23 +266,39 @@ def _check_fine_grid(cfg: dict) -> None:
 
 
 def _check_fields(cfg: dict) -> None:
-    """``fields``: kept by generated elastic and plastic runs, at loads within a load path."""
+    """``fields``: kept by generated elastic and plastic runs, at loads within a load path; an opt-in
+    quantity that only some run kinds give needs one of them in the sweep
+    (:func:`roughcontact.study.quantities.missing`)."""
+    from .. import quantities
+
     fields = cfg["fields"]
-    if not (fields["patches"] or fields["at"] or fields["quantities"]):
+    given = [key for key in ("patches", "at", "quantities") if fields[key]]
+    given += ["histograms"] if fields["histograms"]["at"] else []
+    if not given:
         return
+    key = f"fields.{given[0]}"
     if any(w > 0 for w in cfg.get("work_of_adhesion", []) if w is not None):
-        raise ConfigError("config key 'fields' is not allowed with work_of_adhesion > 0; allowed: fields on "
-                          "elastic or plastic runs (an adhesive run keeps its retract path instead)", key="fields")
+        raise ConfigError(f"config key '{key}' is not allowed with work_of_adhesion > 0; allowed: fields on "
+                          "elastic or plastic runs (an adhesive run keeps its retract path instead)", key=key)
     if cfg.get("topography") or cfg.get("spectrum"):
-        raise ConfigError("config key 'fields' is not allowed with measured inputs (topography, spectrum); allowed: "
-                          "fields on the generated surfaces of a study without measured inputs", key="fields")
+        raise ConfigError(f"config key '{key}' is not allowed with measured inputs (topography, spectrum); allowed: "
+                          "fields on the generated surfaces of a study without measured inputs", key=key)
+    for i, name in enumerate(fields["quantities"]):
+        lacks = quantities.missing(name, cfg)
+        if lacks is not None:
+            raise ConfigError(f"config key 'fields.quantities[{i}]' = {name!r} is kept by no run of this sweep: it "
+                              f"needs {lacks}; allowed: remove it, or add such runs", key=f"fields.quantities[{i}]")
     kinds = {kind_of(r) for r in cfg["radius"]}
+    ranges = {kind: cfg["forces"][kind] for kind in kinds}
+    spans = ", ".join(f"forces.{kind} {r['from']:g} ... {r['to']:g}" for kind, r in ranges.items())
     for i, force in enumerate(fields["at"]):
-        ranges = {kind: cfg["forces"][kind] for kind in kinds}
         if not any(r["from"] <= force <= r["to"] for r in ranges.values()):
-            spans = ", ".join(f"forces.{kind} {r['from']:g} ... {r['to']:g}" for kind, r in ranges.items())
             raise ConfigError(f"config key 'fields.at[{i}]' = {force:g} is outside every load path; allowed: "
                               f"a force F/(E* L^2) within {spans}", key=f"fields.at[{i}]")
+    for i, force in enumerate(fields["histograms"]["at"]):   # every kind's path reaches it: no run's is clipped
+        if not all(r["from"] <= force <= r["to"] for r in ranges.values()):
+            raise ConfigError(f"config key 'fields.histograms.at[{i}]' = {force:g} is outside a load path of the "
+                              f"sweep; allowed: a force F/(E* L^2) within {spans}", key=f"fields.histograms.at[{i}]")
 
 
 def _check_conductance(cfg: dict) -> None:

@@ -32,6 +32,7 @@ __all__ = [
     "ForceRange",
     "GridSettings",
     "SolverSettings",
+    "HistogramsSettings",
     "FieldsSettings",
     "TangentialSettings",
     "ConductanceSettings",
@@ -87,12 +88,22 @@ class SolverSettings:
 
 
 @dataclasses.dataclass(frozen=True)
+class HistogramsSettings:
+    """The pressure and gap histograms each generated run keeps at chosen loads (``fields.histograms``;
+    :mod:`roughcontact.study.quantities.histograms`)."""
+
+    at: tuple = ()   #: ``F/(E* L²)``: the loads nearest these keep them (empty: none)
+    bins: int = 50   #: equal bins of each histogram, from 0 to the largest value of the load
+
+
+@dataclasses.dataclass(frozen=True)
 class FieldsSettings:
     """What each generated run keeps beyond its per-load numbers (``fields``)."""
 
     patches: bool = False   #: per load, the number of contact patches and the largest one's cells
     at: tuple = ()          #: ``F/(E* L²)``: the loads nearest these keep their contact fields
     quantities: tuple = ()  #: the opt-in per-load quantities every run keeps (:mod:`roughcontact.study.quantities`)
+    histograms: HistogramsSettings = HistogramsSettings()   #: pressure and gap histograms at chosen loads
 
 
 @dataclasses.dataclass(frozen=True)
@@ -308,9 +319,7 @@ class StudySettings:
             tile=None if cfg.get("tile") is None else int(cfg["tile"]),
             stickiness=StickinessSettings.of(cfg),
             jobs=JobsSettings.of(cfg),
-            fields=FieldsSettings(patches=bool((cfg.get("fields") or {}).get("patches", False)),
-                                  at=tuple(sorted(float(f) for f in (cfg.get("fields") or {}).get("at", ()))),
-                                  quantities=tuple((cfg.get("fields") or {}).get("quantities", ()))),
+            fields=_fields(cfg.get("fields") or {}),
             tangential=_tangential(cfg.get("tangential") or {}),
             conductance=ConductanceSettings(**{key: None if value is None else tuple(float(v) for v in value)
                                                for key, value in (cfg.get("conductance") or {}).items()}),
@@ -353,6 +362,15 @@ class StudySettings:
             if entry.name == name:
                 return entry
         raise KeyError(f"no spectrum named {name!r}; the config lists {[e.name for e in self.spectrum]}")
+
+
+def _fields(section: dict) -> FieldsSettings:
+    histograms = section.get("histograms") or {}
+    return FieldsSettings(patches=bool(section.get("patches", False)),
+                          at=tuple(sorted(float(f) for f in section.get("at", ()))),
+                          quantities=tuple(section.get("quantities", ())),
+                          histograms=HistogramsSettings(at=tuple(sorted(float(f) for f in histograms.get("at", ()))),
+                                                        bins=int(histograms.get("bins", 50))))
 
 
 def _tangential(section: dict) -> TangentialSettings:

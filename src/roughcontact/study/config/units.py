@@ -6,7 +6,7 @@ pressures; none: normalised); these tables turn the names a user writes into SI 
 from __future__ import annotations
 
 __all__ = ["LENGTH_UNITS", "PRESSURE_UNITS", "FORCE_UNITS", "ENERGY_PER_AREA_UNITS", "plain_unit", "to_metres",
-           "to_pascals", "to_newtons", "to_joules_per_square_metre"]
+           "to_pascals", "to_newtons", "to_joules_per_square_metre", "study_units"]
 
 #: metres per length unit of ``units.length`` (and of a topography entry's ``unit``)
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}
@@ -41,3 +41,18 @@ def to_newtons(unit: str) -> float:
 def to_joules_per_square_metre(unit: str) -> float:
     """J/m² per ``unit`` (one of :data:`ENERGY_PER_AREA_UNITS`)."""
     return ENERGY_PER_AREA_UNITS[unit]
+
+
+def study_units(units: str, length: str | None, pressure: str | None = None) -> str:
+    """The CF ``units`` string *units* of a run file (in the study's normalised words ``length`` and
+    ``e_star``, e.g. ``e_star * length**2``) with the configuration's units put in: ``length`` ->
+    ``units.length`` (*length*), ``e_star`` -> ``units.e_star`` (*pressure*) where given, e.g.
+    ``e_star * um**2`` or ``MPa * um**2``. The numbers need no conversion: a configuration's
+    lengths are in ``units.length`` and its ``e_star`` in ``units.e_star``, and so are the results."""
+    import re
+
+    if length is not None:
+        units = re.sub(r"\blength\b", length, units)
+    if pressure is not None:
+        units = re.sub(r"\be_star\b", pressure, units)
+    return units

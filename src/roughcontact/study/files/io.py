@@ -130,9 +130,14 @@ def read_run(path, expected=None):
     title = spec.title if spec is not None else runfile.TITLE
     required = spec.variables if spec is not None else ("force", *runfile.SCALARS)
     missing = [v for v in required if v not in ds.variables]
-    if missing or ds.attrs.get("title") != title:
+    if ds.attrs.get("title") != title:
         what = f"lacks {', '.join(missing)}" if missing else f"is not a {title}"
         raise MergeError(f"{path}: foreign NetCDF file ({what}); {hint}")
+    if spec is not None:   # a run of another name or of other settings (e.g. made before a quantity was added)
+        _check_scalars(path, ds, spec, hint)
+        _check_hash(path, ds, spec, hint, missing)
+    if missing:
+        raise MergeError(f"{path}: foreign NetCDF file (lacks {', '.join(missing)}); {hint}")
     dims = spec.dims if spec is not None else (("force", "retract") if "retract" in ds.dims else ("force",))
     if sorted(ds.dims) != sorted(dims):
         raise MergeError(f"{path}: foreign NetCDF file (dimensions {dict(ds.sizes)}, expected {', '.join(dims)}); "
@@ -142,17 +147,28 @@ def read_run(path, expected=None):
     return ds
 
 
-def _check_settings(path: str, ds, spec: runfile.RunFileSpec, hint: str) -> None:
-    """The stale checks of :func:`read_run`: scalars, ``config_hash``, force grid."""
-    for key, want in spec.scalars.items():
-        got = float(ds[key])
-        if not (got == float(want)):
-            raise MergeError(f"{path}: holds {key} = {got:g}, expected {float(want):g} from its name; {hint}")
+def _check_hash(path: str, ds, spec: runfile.RunFileSpec, hint: str, missing=()) -> None:
+    """The file's ``config_hash`` is that of the current settings, else a :class:`MergeError` naming
+    the settings that differ (and the variables it lacks: a quantity added since it was made)."""
     want = provenance.config_hash(spec.config)
     if ds.attrs.get("config_hash") != want:
+        lacks = f"; it lacks {', '.join(missing)}" if missing else ""
         raise MergeError(f"{path}: was computed with other settings (config_hash {ds.attrs.get('config_hash')} "
-                         f"!= {want} of the current config{_differences(ds.attrs.get('config'), spec.config)}); "
-                         f"{hint} or run snakemake with --rerun-triggers params")
+                         f"!= {want} of the current config{_differences(ds.attrs.get('config'), spec.config)}"
+                         f"{lacks}); {hint} or run snakemake with --rerun-triggers params")
+
+
+def _check_scalars(path: str, ds, spec: runfile.RunFileSpec, hint: str) -> None:
+    """The scalars the file's path names (H, R, h_rms, seed) are the file's (those it holds)."""
+    for key, want in spec.scalars.items():
+        got = float(ds[key]) if key in ds.variables else float(want)
+        if not (got == float(want)):
+            raise MergeError(f"{path}: holds {key} = {got:g}, expected {float(want):g} from its name; {hint}")
+
+
+def _check_settings(path: str, ds, spec: runfile.RunFileSpec, hint: str) -> None:
+    """The stale check of :func:`read_run` after its variables and dimensions: the force grid
+    (the scalars: :func:`_check_scalars`, ``config_hash``: :func:`_check_hash`)."""
     if spec.force_variable is not None:
         forces = spec.forces
         got = ds[spec.force_variable].values

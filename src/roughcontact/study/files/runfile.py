@@ -15,7 +15,8 @@ import numpy as np
 
 __all__ = ["Variable", "FIELD_VARIABLES",
            "TANGENTIAL_VARIABLES", "SLIP_VARIABLES", "SLIP_COORDS", "slip_fractions", "FIELD_GROUP", "RETRACT_VARIABLES",
-           "PULL_OFF_VARIABLES", "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
+           "PULL_OFF_VARIABLES", "HISTOGRAM_VARIABLES", "HISTOGRAM_COORDS", "HISTOGRAM_DIMS",
+           "SCALARS", "FORCE_ATTRS", "RETRACT_ATTRS", "TITLE", "write_run",
            "STICKINESS_TITLE", "STICKINESS_VARIABLES", "STICKINESS_SCALARS", "APPROACH_ATTRS", "RunFileSpec"]
 
 #: the ``title`` attribute that marks a run file (generated or measured)
@@ -80,6 +81,30 @@ FIELD_VARIABLES = {
 }
 #: the group of the fields kept at load *i* (0-based)
 FIELD_GROUP = "fields/load{index}"
+
+#: the histograms a run keeps at chosen loads (``fields.histograms``,
+#: :mod:`roughcontact.study.quantities.histograms`): per load of the histograms (dimension
+#: ``histogram_load``, its values the 0-based load index), the pressure over the contact cells and
+#: the gap over the cells out of contact, each in equal bins from 0 to its largest value at that
+#: load (dimensions ``pressure_bin``, ``gap_bin``; the bins' edges over ``pressure_edge``,
+#: ``gap_edge``)
+HISTOGRAM_VARIABLES = {
+    "histogram_force": Variable("f8", "normal force F of the load of the histograms", "e_star * length**2",
+                                ("histogram_load",)),
+    "pressure_histogram": Variable("i8", "number of contact cells whose pressure lies in the bin", "1",
+                                   ("histogram_load", "pressure_bin")),
+    "pressure_bin_edges": Variable("f8", "edges of the pressure bins: equal bins from 0 to the largest pressure of "
+                                         "the load", "e_star", ("histogram_load", "pressure_edge")),
+    "gap_histogram": Variable("i8", "number of cells out of contact whose gap lies in the bin", "1",
+                              ("histogram_load", "gap_bin")),
+    "gap_bin_edges": Variable("f8", "edges of the gap bins: equal bins from 0 to the largest gap of the load",
+                              "length", ("histogram_load", "gap_edge")),
+}
+#: the coordinate of the histograms' loads
+HISTOGRAM_COORDS = {"histogram_load": ("i8", {"long_name": "index (0-based) of the load of the histograms",
+                                              "units": "1"})}
+#: the dimensions of a run file with histograms, beyond ``force``
+HISTOGRAM_DIMS = ("histogram_load", "pressure_bin", "pressure_edge", "gap_bin", "gap_edge")
 
 #: the force coordinate
 FORCE_ATTRS = {"long_name": "normal force F", "units": "e_star * length**2"}
@@ -274,10 +299,33 @@ def write_run(path, out: dict, *, attrs: dict, variables: dict | None = None, st
                 _put(nc, dim, dtype, (dim,), out[dim], dim_attrs)
             for name, meta in SLIP_VARIABLES.items():
                 _put(nc, name, meta.dtype, meta.dims, out[name], _meta(meta))
+        if out.get("histograms"):   # fields.histograms: per load of the histograms
+            _put_histograms(nc, out["histograms"])
         for index, kept in sorted(out.get("fields", {}).items()):   # fields.at: one group per kept load
             _put_fields(nc, index, kept)
 
     provenance.write_netcdf(fill, path)
+
+
+def _put_histograms(nc, histograms: dict) -> None:
+    """The histograms ``{load index: {"force": F, "pressure": Histogram, "gap": Histogram}}``
+    (:class:`roughcontact.study.quantities.histograms.Histogram`) as :data:`HISTOGRAM_VARIABLES`."""
+    loads = sorted(histograms)
+    first = histograms[loads[0]]
+    sizes = {"histogram_load": len(loads), "pressure_bin": len(first["pressure"].counts),
+             "pressure_edge": len(first["pressure"].edges), "gap_bin": len(first["gap"].counts),
+             "gap_edge": len(first["gap"].edges)}
+    for dim in HISTOGRAM_DIMS:
+        nc.createDimension(dim, sizes[dim])
+    dtype, attrs = HISTOGRAM_COORDS["histogram_load"]
+    _put(nc, "histogram_load", dtype, ("histogram_load",), np.asarray(loads), attrs)
+    values = {"histogram_force": [histograms[i]["force"] for i in loads],
+              "pressure_histogram": [histograms[i]["pressure"].counts for i in loads],
+              "pressure_bin_edges": [histograms[i]["pressure"].edges for i in loads],
+              "gap_histogram": [histograms[i]["gap"].counts for i in loads],
+              "gap_bin_edges": [histograms[i]["gap"].edges for i in loads]}
+    for name, meta in HISTOGRAM_VARIABLES.items():
+        _put(nc, name, meta.dtype, meta.dims, np.asarray(values[name]).astype(meta.dtype), _meta(meta))
 
 
 def _put_fields(nc, index: int, kept: dict) -> None:

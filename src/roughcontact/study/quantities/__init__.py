@@ -24,8 +24,8 @@ from typing import Callable
 from ..._registry import add, import_modules
 from ..files.runfile import Variable
 
-__all__ = ["OPT_IN", "Load", "Quantity", "QUANTITIES", "names", "opted_in", "optional", "recorded", "register",
-           "variables"]
+__all__ = ["OPT_IN", "Load", "Quantity", "QUANTITIES", "missing", "names", "opted_in", "optional", "recorded",
+           "register", "variables"]
 
 #: the configuration key that lists the opt-in quantities a study's runs keep
 OPT_IN = "fields.quantities"
@@ -86,6 +86,12 @@ class Quantity:
         The configuration key that turns it on (``fields.patches``); ``None``: the run's kind.
     family : str
         The module that registered it (``normal``, ``plastic``, ``patches``, ...).
+    needs : callable or None
+        ``needs(cfg) -> str or None`` for an opt-in quantity that only some run kinds give: what the
+        resolved configuration *cfg* lacks for any of its runs to keep it (``"a flat run (radius
+        .inf)"``), ``None`` where one does. The configuration check refuses the quantity in one line
+        naming its key ``fields.quantities[i]`` and what it needs (:func:`missing`). ``None``: every run
+        of a generated elastic or plastic study gives it.
     """
 
     name: str
@@ -96,6 +102,7 @@ class Quantity:
     records: Callable = _always
     option: str | None = None
     family: str = ""
+    needs: Callable | None = None
 
     @property
     def variable(self) -> Variable:
@@ -124,6 +131,13 @@ def opted_in(name: str) -> Callable:
 def optional() -> tuple[str, ...]:
     """The names of the opt-in quantities (:data:`OPT_IN`), in the registry's order."""
     return tuple(q.name for q in QUANTITIES.values() if q.option == OPT_IN)
+
+
+def missing(name: str, cfg) -> str | None:
+    """What the resolved configuration *cfg* lacks for any of its runs to keep the quantity *name*
+    (:attr:`Quantity.needs`); ``None`` where a run gives it."""
+    needs = QUANTITIES[name].needs
+    return None if needs is None else needs(cfg)
 
 
 def names() -> tuple[str, ...]:

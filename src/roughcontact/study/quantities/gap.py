@@ -10,7 +10,9 @@ import numpy as np
 from . import OPT_IN, Quantity, opted_in, register
 
 
-def _gap(state, load) -> np.ndarray:
+def gap_field(state, load) -> np.ndarray:
+    """The gap of *state* on the whole grid (length; :meth:`roughcontact.bem.ContactState.gap`),
+    computed once per load for every quantity and histogram that needs it."""
     if __name__ not in load.cache:
         load.cache[__name__] = state.gap()
     return load.cache[__name__]
@@ -18,13 +20,13 @@ def _gap(state, load) -> np.ndarray:
 
 def mean_gap(state, load) -> float:
     """The gap ``g = (z − min z) − d + u`` averaged over every cell of the grid (0 in contact)."""
-    return float(np.mean(_gap(state, load)))
+    return float(np.mean(gap_field(state, load)))
 
 
 def mean_free_gap(state, load) -> float:
     """The gap averaged over the cells out of contact (``nan`` in full contact)."""
     free = ~state.contact
-    return float(np.mean(_gap(state, load)[free])) if free.any() else float("nan")
+    return float(np.mean(gap_field(state, load)[free])) if free.any() else float("nan")
 
 
 def mean_contact_pressure(state, load) -> float:

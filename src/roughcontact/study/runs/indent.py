@@ -16,6 +16,7 @@ from ... import bem, surfaces
 from ...errors import DomainTooSmallError, IndentError
 from .. import quantities
 from ..files import provenance, runfile
+from ..quantities.histograms import load_histograms
 from . import tangential
 from .path import LoadPath
 from .jobs import JobSettings
@@ -75,6 +76,11 @@ class PathSettings:
         The opt-in per-load quantities kept (``fields.quantities``, :mod:`roughcontact.study.quantities`).
     field_loads : tuple of int
         Loads (0-based) whose contact fields are kept (:data:`~roughcontact.study.files.runfile.FIELD_VARIABLES`).
+    histogram_loads : tuple of int
+        Loads (0-based) whose pressure and gap histograms are kept, in *histogram_bins* bins
+        (``fields.histograms``, :mod:`roughcontact.study.quantities.histograms`).
+    histogram_bins : int
+        Bins of each histogram (0 without histograms).
     poisson : float or None
         ``ν`` of the half-space (axis ``poisson``): every load also gets its full-stick tangential
         stiffness (:mod:`roughcontact.study.runs.tangential`); ``None``: none.
@@ -98,6 +104,8 @@ class PathSettings:
     patches: bool = False
     quantities: tuple = ()
     field_loads: tuple = ()
+    histogram_loads: tuple = ()
+    histogram_bins: int = 0
     poisson: float | None = None
     friction: float = 0.0
     slip_loads: tuple = ()
@@ -129,6 +137,8 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     out["force"] = np.asarray(forces, dtype=float)
     if p.field_loads:
         out["fields"] = {}
+    if p.histogram_loads:
+        out["histograms"] = {}
     tangential.allocate(out, p, total)
 
     def record(i, state) -> str:
@@ -178,7 +188,7 @@ def path_settings(s, **where) -> PathSettings:
     fields a job record does not hold (a measured run's tile ``length``, ``periodic``,
     ``edge_hint``, ``edge_contact``)."""
     own = ({"length": s.length, "periodic": s.periodic, "patches": s.patches, "quantities": s.quantities,
-            "field_loads": s.field_loads,
+            "field_loads": s.field_loads, "histogram_loads": s.histogram_loads, "histogram_bins": s.histogram_bins,
             "poisson": s.poisson, "friction": s.friction, "slip_loads": s.slip_loads, "slip_steps": s.slip_steps,
             **s.arguments("solver")} if isinstance(s, JobSettings) else {})
     return PathSettings(e_star=s.e_star, tol=s.tol, maxiter=s.maxiter, stiffness_method=s.stiffness_method,
@@ -200,6 +210,8 @@ def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
     load = quantities.Load(settings=p, index=i, total=total, where=where, cell=cell)
     for name in quantities.recorded(p):
         out[name][i] = quantities.QUANTITIES[name].compute(state, load)
+    if i in p.histogram_loads:
+        out["histograms"][i] = load_histograms(state, load, p.histogram_bins)
     if i in p.field_loads:
         out["fields"][i] = _fields(state, cell)
     tangential.record(p, out, i, state, where)

@@ -61,6 +61,11 @@ class JobSettings(ForcePathRecord):
         :mod:`roughcontact.study.quantities`).
     field_loads : tuple of int
         The loads (0-based, of the path) that keep their contact fields (``fields.at``).
+    histogram_loads : tuple of int
+        The loads (0-based, of the path) that keep their pressure and gap histograms
+        (``fields.histograms.at``).
+    histogram_bins : int
+        Bins of each histogram (``fields.histograms.bins``; 0 without histograms).
     slip_loads : tuple of int
         With ``friction > 0``: the loads (0-based) that follow the partial-slip path
         (``tangential.at``); ``()`` otherwise.
@@ -77,6 +82,8 @@ class JobSettings(ForcePathRecord):
     patches: bool = False
     quantities: tuple = ()
     field_loads: tuple = ()
+    histogram_loads: tuple = ()
+    histogram_bins: int = 0
     slip_loads: tuple = ()
     slip_steps: int = 0
 
@@ -139,8 +146,8 @@ class JobSettings(ForcePathRecord):
         """The settings as a flat mapping of plain values: what a run file's ``config_hash``
         and attributes are made of. Optional axes at the paper's setting are left out."""
         out = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)
-               if field.name not in ("options", "realization_of", "patches", "quantities", "field_loads", "slip_loads",
-                                     "slip_steps")}
+               if field.name not in ("options", "realization_of", "patches", "quantities", "field_loads",
+                                     "histogram_loads", "histogram_bins", "slip_loads", "slip_steps")}
         # each at its default is left out: runs of a grid's own surfaces, and runs that keep nothing
         # more than their per-load numbers, keep their hash
         if self.realization_of is not None:
@@ -151,6 +158,9 @@ class JobSettings(ForcePathRecord):
             out["quantities"] = list(self.quantities)
         if self.field_loads:
             out["field_loads"] = list(self.field_loads)
+        if self.histogram_loads:
+            out["histogram_loads"] = list(self.histogram_loads)
+            out["histogram_bins"] = self.histogram_bins
         if self.slip_loads:   # friction > 0: the partial-slip path
             out["slip_loads"] = list(self.slip_loads)
             out["slip_steps"] = self.slip_steps
@@ -163,8 +173,10 @@ class JobSettings(ForcePathRecord):
         H, R, h_rms and seed, the ``config_hash`` of :meth:`record` and the force grid."""
         variables = (*quantities.recorded(self), "force", *runfile.SCALARS,
                      *(runfile.TANGENTIAL_VARIABLES if self.poisson is not None else ()),
-                     *(runfile.SLIP_VARIABLES if self.slip_loads else ()))
-        dims = ("force", *(runfile.SLIP_COORDS if self.slip_loads else ()))
+                     *(runfile.SLIP_VARIABLES if self.slip_loads else ()),
+                     *((*runfile.HISTOGRAM_COORDS, *runfile.HISTOGRAM_VARIABLES) if self.histogram_loads else ()))
+        dims = ("force", *(runfile.SLIP_COORDS if self.slip_loads else ()),
+                *(runfile.HISTOGRAM_DIMS if self.histogram_loads else ()))
         if self.work_of_adhesion > 0:
             variables += (*runfile.RETRACT_VARIABLES, *runfile.PULL_OFF_VARIABLES)
             dims = ("force", "retract")
@@ -200,7 +212,9 @@ def job_settings(study, run: dict) -> JobSettings:
     sliding = float(run.get("friction", 0.0) or 0.0) > 0
     slip_loads = ((tuple(range(rng.count)) if study.tangential.at is None
                    else nearest_loads(rng.normalized(), study.tangential.at)) if sliding else ())
-    return JobSettings(
+    histograms = study.fields.histograms
+    histogram_loads = nearest_loads(rng.normalized(), histograms.at)
+    job = JobSettings(
         hurst=float(run["hurst"]), radius=radius, h_rms=float(run["h_rms"]), seed=int(run["seed"]),
         n=study.grid.n, length=study.grid.length, e_star=study.e_star,
         force_from=rng.start, force_to=rng.stop, force_count=rng.count,
@@ -208,8 +222,13 @@ def job_settings(study, run: dict) -> JobSettings:
         maxiter=solver_maxiter(solver.maxiter), options=options_of(run),
         realization_of=study.grid.realization_of, patches=study.fields.patches,
         quantities=study.fields.quantities,
-        field_loads=nearest_loads(rng.normalized(), study.fields.at), slip_loads=slip_loads,
+        field_loads=nearest_loads(rng.normalized(), study.fields.at), histogram_loads=histogram_loads,
+        histogram_bins=histograms.bins if histogram_loads else 0, slip_loads=slip_loads,
         slip_steps=study.tangential.steps if sliding else 0)
+    # the opt-in quantities this run keeps, in the registry's order (one of a run kind only, e.g. a
+    # flat run's: that kind's runs alone rerun when it is added; the list's order changes nothing)
+    kept = quantities.recorded(job)
+    return dataclasses.replace(job, quantities=tuple(q for q in quantities.optional() if q in kept))
 
 
 def nearest_loads(forces, at) -> tuple:

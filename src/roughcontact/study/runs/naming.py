@@ -194,12 +194,30 @@ def run_paths(study, pattern: str) -> list[str]:
 
 #: peak bytes per grid cell of an indent job's load path (measured, see :func:`indent_resources`)
 INDENT_BYTES_PER_CELL = 100
+#: seconds of one load (its solve and its punch stiffness) on 513² on one core, and the power of
+#: ``n/513`` by which it grows (measured, see :func:`indent_resources`)
+INDENT_SECONDS_PER_LOAD = 0.136
+INDENT_SECONDS_POWER = 2.4
+#: declared runtime over the estimate: a machine twice as slow on a busy day, with room to spare
+INDENT_RUNTIME_MARGIN = 3.0
+
+
+def indent_seconds(n: int, loads: int) -> float:
+    """Estimated seconds of one indent run of *loads* loads on an ``n × n`` grid on one core:
+    :data:`INDENT_SECONDS_PER_LOAD` ``· (n/513)^``:data:`INDENT_SECONDS_POWER` per load.
+
+    Fitted to one seed of the default sphere's 27 loads (``benchmarks/large_grid.py``, the
+    preconditioned solver, 2026-11-29, a loaded machine): the solves took 4.0, 14.4, 68, 328 and
+    1884 s on 513², 1025², 2049², 4097² and 8193² (a power of 2.2–2.5 per doubling; the FFT's
+    own ``n² log n`` is 2.2) and the punch stiffness of every state 0.43–0.66× as long again
+    (`--stiffness`); the estimate is 3.7, 19, 100, 540 and 2830 s."""
+    return INDENT_SECONDS_PER_LOAD * (n / 513) ** INDENT_SECONDS_POWER * loads
 
 
 def indent_resources(study, runs: int = 1) -> dict:
-    """Generous per-job estimates for schedulers (SLURM): ``mem_mb`` and
-    ``runtime`` (minutes) of one ``indent`` job of *runs* runs (one after another,
-    :func:`seed_blocks`), from the grid and load count.
+    """Per-job requests for schedulers (SLURM): ``mem_mb`` and ``runtime`` (minutes) of one
+    ``indent`` job of *runs* runs (one after another, :func:`seed_blocks`), from the grid and
+    load count.
 
     Memory: :data:`INDENT_BYTES_PER_CELL` bytes per cell over a ~250 MB interpreter, times 1.5
     (the same for a batch: one run is alive at a time). Measured peak RSS of one seed of the
@@ -207,16 +225,17 @@ def indent_resources(study, runs: int = 1) -> dict:
     solver): 0.10, 0.17, 0.43, 1.42 and 4.67 GB on 513², 1025², 2049², 4097² and 8193², that is
     70–100 bytes per cell from 2049² on (heights, lift, two pressures, the window's work arrays,
     one real kernel spectrum per precision, the table of coefficients).
-    Runtime: measured ~10 s for a 513^2 flat run of 13 loads on one core,
-    scaled by n^2 log n and the load count, times 10, times *runs*.
+    Runtime: :data:`INDENT_RUNTIME_MARGIN` times :func:`indent_seconds` of the largest load count
+    of the study's surface kinds, times *runs*, at least 5 minutes (Snakemake's rules multiply
+    both by the attempt).
     """
     study = StudySettings.of(study)
     n = study.grid.n
     count = max(study.forces[kind_of(r)].count for r in study.radius)
     mem = 250 + n * n * INDENT_BYTES_PER_CELL / 1e6
-    scale = (n * n * math.log(n)) / (513 * 513 * math.log(513)) * count / 13
+    seconds = INDENT_RUNTIME_MARGIN * indent_seconds(n, count) * runs
     return {"mem_mb": int(math.ceil(1.5 * mem / 100) * 100),
-            "runtime": int(max(5, math.ceil(10 * scale * 10 / 60 * runs)))}
+            "runtime": int(max(5, math.ceil(seconds / 60)))}
 
 
 def indent_priority(study, combo: str, runs: int = 1) -> int:
