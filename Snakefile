@@ -31,6 +31,7 @@ include: "workflow/rules/adhesion.smk"
 include: "workflow/rules/stickiness.smk"
 include: "workflow/rules/tangential.smk"
 include: "workflow/rules/histograms.smk"
+include: "workflow/rules/area.smk"
 
 
 # rules of your own: every file of workflow/rules/extra/, by name (docs/guide/package.md, "Adding a rule")
@@ -48,6 +49,7 @@ localrules:
     exponents,
     claims,
     models,
+    area,
     figures,
     summary,
     merge_coarse,
@@ -83,6 +85,7 @@ rule all:
                 rules.exponents.output,
                 rules.claims.output,
                 rules.models.output,
+                rules.area.output,
                 rules.figures.output,
                 rules.summary.output,
             ]

@@ -29,6 +29,7 @@ ANALYSIS_CODE = {
     "models": ("roughcontact.study.report.scorecard", "roughcontact.study.report.measured",
                "roughcontact.study.analysis.measured_spectrum"),
     "claims": ("roughcontact.study.report.claims",),
+    "area": ("roughcontact.study.report.area",),
     "figures": ("roughcontact.study.report.figures",),
     "summary": ("roughcontact.study.report.summary",),
     "grid_error": ("roughcontact.study.analysis.grid_error",),
@@ -79,7 +80,8 @@ def listing(kind: str) -> list[dict]:
 
 #: the packages whose modules are imported by discovery (the registries), not by name: every module
 #: of their folder counts where the package is imported
-DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.study.claims", "roughcontact.study.config.axes",
+DISCOVERED = ("roughcontact.models.scorecard", "roughcontact.models.area", "roughcontact.study.claims",
+              "roughcontact.study.config.axes",
               "roughcontact.study.quantities")
 
 #: the folder of the ``roughcontact`` package (this file is ``roughcontact/study/registries.py``)

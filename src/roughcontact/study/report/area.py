@@ -1,0 +1,92 @@
+"""The real contact area's page, table and figure (the ``area`` rule): the area scorecard of
+:func:`roughcontact.study.analysis.area.area_scorecard` as ``area/area_models.csv`` and its HTML page,
+and ``area/area.png``, the ensemble's ``A(F)`` of every sphere combination against Hertz's ``π a²``,
+the linear law (κ = 2) and Persson's area. Claims (u) and (v) on the area are rows of the claims table
+(:mod:`roughcontact.study.claims.area`)."""
+from __future__ import annotations
+
+import logging
+import math
+
+import numpy as np
+
+from ...models import area as area_models
+from ...models.area.laws import SIMULATION_KAPPA, hertz_area, linear_area
+from ..analysis.area import AREA_TOLERANCE, MEASURED_ON, area_scorecard
+from ..config.settings import StudySettings
+from .plotting import panel_grid, pyplot, save_png
+from .tables import write_html_table
+
+__all__ = ["NO_AREA", "area_lead", "area_figure", "run_area"]
+
+log = logging.getLogger(__name__)
+
+#: why area_models.csv has no row
+NO_AREA = "no elastic, adhesion-free sphere combination in the sweep"
+
+
+def area_lead() -> str:
+    """The lead paragraph of the area scorecard page (the registered area models' summaries)."""
+    summaries = "; ".join(m.summary for m in area_models.models().values())
+    return ("Each model predicts the real contact area A(F) of the rough sphere from the surface's parameters "
+            "(h'_rms = sqrt(<|grad h|^2>) of the grid's spectrum, column rms_slope); max_rel_dev is the largest "
+            "|A_model/A_BEM - 1| over the area-resolved loads of the ensemble mean (the ensemble-mean contact cells "
+            f"reach min_area_cells, measured for a {AREA_TOLERANCE:.0%} area error by the grid study, "
+            f"{MEASURED_ON}, docs/guide/area.md), with its 95 % bootstrap-over-seeds interval; rms_rel_dev the rms "
+            "of the same deviations, rank orders the models by it; systematic_low and systematic_high the mean "
+            "deviation below and above the area crossover F_A (crossover_force, F/(E* L^2), where 2 F/(E* h'_rms) "
+            "= pi a^2) with its interval and verdict on 0; inside_band the fraction of loads inside the "
+            "ensemble's band. A combination without an area-resolved load keeps one row per model whose note says "
+            f"why. {summaries}. area_models.csv holds every digit.")
+
+
+def area_figure(path, curves: dict, study) -> None:
+    """``A(F)/L²`` of the ensemble mean of every sphere combination (one panel each; filled markers the
+    area-resolved loads, open the others) against Hertz's ``π a²``, the linear law ``2 F/(E* h′_rms)``
+    and the area models, with the crossover ``F_A`` marked."""
+    study = StudySettings.of(study)
+    plt = pyplot()
+    norm_f, norm_a = study.e_star * study.grid.length**2, study.grid.length**2
+    fig, panels = panel_grid(plt, len(curves), width=4.2, height=3.4)
+    for ax, (label, c) in zip(panels, curves.items()):
+        force = np.asarray(c["force"], dtype=float)
+        ok = np.asarray(c["resolved"], dtype=bool)
+        area = np.asarray(c["area"], dtype=float)
+        ax.loglog(force[ok] / norm_f, area[ok] / norm_a, "o", color="k", ms=4, label="BEM, area-resolved")
+        ax.loglog(force[~ok] / norm_f, area[~ok] / norm_a, "o", mfc="none", color="0.5", ms=4,
+                  label="BEM, area under-resolved")
+        fine = np.geomspace(force.min(), force.max(), 200)
+        ax.loglog(fine / norm_f, hertz_area(fine, radius=c["radius"], e_star=study.e_star) / norm_a, "--",
+                  color="C0", label="Hertz pi a^2")
+        ax.loglog(fine / norm_f, linear_area(fine, e_star=study.e_star, rms_slope=c["rms_slope"]) / norm_a, ":",
+                  color="C1", label=f"{SIMULATION_KAPPA:g} F/(E* h'_rms)")
+        for i, (name, predicted) in enumerate(c["models"].items()):
+            ax.loglog(force / norm_f, np.asarray(predicted) / norm_a, "-", lw=1, color=f"C{i + 2}", label=name)
+        if math.isfinite(c["crossover_force"]):
+            ax.axvline(c["crossover_force"] / norm_f, color="0.7", lw=0.8)
+        ax.set(title=f"{label} (resolved: >= {c['min_cells']:g} cells)", xlabel="F/(E* L^2)", ylabel="A/L^2")
+        ax.title.set_fontsize(8)
+    panels[0].legend(fontsize=6)
+    fig.tight_layout()
+    save_png(fig, path)
+
+
+def run_area(study, stiffness_nc, out_csv, out_html, out_png) -> None:
+    """``area`` rule: the merged runs -> area_models.csv, its HTML page and area.png."""
+    from ..files.io import read_groups, write_csv
+
+    groups = read_groups(stiffness_nc)
+    table, curves = area_scorecard(groups, study)
+    write_csv(table, out_csv, reason=NO_AREA)
+    write_html_table(table, out_html, title="Real contact area: model scorecard", lead=area_lead(),
+                     first=("model", "combination", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
+                            "rms_rel_dev", "n_loads", "min_area_cells", "note"))
+    if curves:
+        area_figure(out_png, curves, study)
+    else:
+        plt = pyplot()
+        fig, ax = plt.subplots(figsize=(4, 1.5))
+        ax.axis("off")
+        ax.text(0.5, 0.5, NO_AREA, ha="center", va="center", fontsize=8, wrap=True)
+        save_png(fig, out_png)
+    log.info("area scorecard:\n%s", table.to_string())
