@@ -32,6 +32,7 @@ include: "workflow/rules/tangential.smk"
 
 localrules:
     all,
+    model_curves,
     merge,
     fit_zeta,
     crossover,

@@ -11,6 +11,7 @@ rule figures:
         ensemble=rules.merge.output.ensemble,
         zeta=rules.fit_zeta.output.csv,
         crossover=rules.crossover.output.csv,
+        model_curves=rules.model_curves.output.nc,
     output:
         *[
             report(

@@ -30,6 +30,7 @@ ANALYSIS_CODE = {
                "roughcontact.study.analysis.measured_spectrum"),
     "claims": ("roughcontact.study.report.claims",),
     "figures": ("roughcontact.study.report.figures",),
+    "model_curves": ("roughcontact.study.rules.model_curves",),
     "summary": ("roughcontact.study.report.summary",),
     "grid_error": ("roughcontact.study.analysis.grid_error",),
 }
