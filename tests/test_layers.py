@@ -15,7 +15,7 @@ import pytest
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "roughcontact"
 
 #: layer of each top-level part of the package; a part may import its own layer or lower ones
-LAYER = {"_validate": 0, "_registry": 0, "errors": 0, "surfaces": 1, "bem": 2, "models": 2, "study": 3, "cli": 4}
+LAYER = {"_validate": 0, "_registry": 0, "_defaults": 0, "errors": 0, "surfaces": 1, "bem": 2, "models": 2, "study": 3, "cli": 4}
 #: parts of one layer that must not import each other
 SEPARATE = {("bem", "models"), ("models", "bem"), ("bem", "surfaces")}
 

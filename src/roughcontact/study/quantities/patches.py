@@ -2,7 +2,6 @@
 cells there are, and the cells of the largest (:func:`roughcontact.bem.contact_patches`)."""
 from __future__ import annotations
 
-from ... import bem
 from . import Quantity, register
 
 
@@ -12,6 +11,8 @@ def _counted(settings) -> bool:
 
 def _patches(state, load):
     """The patches of *state*, counted once per load for both quantities."""
+    from ... import bem  # the solver, imported by the indent job only
+
     if __name__ not in load.cache:
         load.cache[__name__] = bem.contact_patches(state.contact, periodic=load.settings.periodic)
     return load.cache[__name__]
