@@ -31,7 +31,7 @@ ANALYSIS_CODE = {
     "claims": ("roughcontact.study.report.claims",),
     "figures": ("roughcontact.study.report.figures",),
     "model_curves": ("roughcontact.study.rules.model_curves",),
-    "summary": ("roughcontact.study.report.summary",),
+    "summary": ("roughcontact.study.rules.summary",),
     "grid_error": ("roughcontact.study.analysis.grid_error",),
 }
 
