@@ -43,6 +43,7 @@ for extra_rules in sorted(EXTRA_RULES.glob("*.smk")):
 
 localrules:
     all,
+    model_curves,
     merge,
     fit_zeta,
     crossover,
@@ -93,6 +94,8 @@ rule all:
             if STUDY.generated
             else []
         ),
+        # a sweep of measured scans only: its landing page too
+        ([rules.summary.output] if not STUDY.generated and TOPOGRAPHY else []),
         # the adhesive runs' pull-off and figures (none without work_of_adhesion > 0)
         (
             [rules.adhesion.output, rules.adhesion_figures.output]

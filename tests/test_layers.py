@@ -2,7 +2,7 @@
 
 Layers, bottom up: ``_validate`` and ``errors`` → ``surfaces`` → ``bem`` and ``models`` (which
 do not import each other) → ``study`` → ``cli``; inside ``study``: ``files`` → ``quantities`` →
-``config`` → ``runs`` → ``analysis`` → ``claims`` → ``report`` (→ ``registries``). Every import
+``config`` → ``runs`` → ``analysis`` → ``claims`` → ``report`` → ``rules`` (→ ``registries``). Every import
 statement counts, also one inside a function. The test reads the sources with :mod:`ast` and imports nothing.
 """
 from __future__ import annotations
@@ -15,7 +15,7 @@ import pytest
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "roughcontact"
 
 #: layer of each top-level part of the package; a part may import its own layer or lower ones
-LAYER = {"_validate": 0, "_registry": 0, "errors": 0, "surfaces": 1, "bem": 2, "models": 2, "study": 3, "cli": 4}
+LAYER = {"_validate": 0, "_registry": 0, "_defaults": 0, "errors": 0, "surfaces": 1, "bem": 2, "models": 2, "study": 3, "cli": 4}
 #: parts of one layer that must not import each other
 SEPARATE = {("bem", "models"), ("models", "bem"), ("bem", "surfaces")}
 
@@ -115,9 +115,9 @@ def test_the_top_level_import_leaves_the_study_out():
 
 
 #: the sub-layers inside ``study/``, bottom up: the run file's data model, the per-load quantities,
-#: the configuration, the runs, the analysis, the claims, the report; ``registries`` reads them all
+#: the configuration, the runs, the analysis, the claims, the report, the rules' entry points; ``registries`` reads them all
 STUDY_LAYER = {"files": 0, "quantities": 1, "config": 2, "runs": 3, "analysis": 4, "claims": 5, "report": 6,
-               "registries": 7}
+               "rules": 7, "registries": 8}
 
 
 def _study_part(module: str) -> str | None:

@@ -316,6 +316,26 @@ def test_merged_scan_has_units_dims_and_provenance(pipeline):
     assert (run_dir / "results/measured_figures/scan/spectrum.png").stat().st_size > 0
 
 
+def test_measured_only_sweep_ends_in_a_landing_page(pipeline):
+    """A sweep of one scan and no generated surface (hurst empty) writes results/summary.html: the
+    answer says the paper's claims were not tested, and per kind and radius the page names the
+    scorecard's rank-1 model with its max_rel_dev to four digits (the CSV's value)."""
+    import html
+
+    from roughcontact.study.report.landing_measured import NO_GENERATED
+    from roughcontact.study.report.summary import fmt
+
+    _, run_dir, _, _ = pipeline
+    page = (run_dir / "results/summary.html").read_text()
+    card = pd.read_csv(run_dir / "results/measured_scorecard/scan.csv")
+    best = card[card["rank"] == 1].groupby(["kind", "radius"], sort=False).head(1)
+    assert html.escape(NO_GENERATED) in page
+    assert "Scan scan" in page
+    assert len(best) == 2, best          # the sphere of radius 20 um and the flat scan
+    for _, row in best.iterrows():
+        assert f"<b>{row['model']}</b></td><td style" in page and fmt(row["max_rel_dev"]) in page, row.to_dict()
+
+
 def test_spectrum_fit_and_models(pipeline):
     """The fit of the synthetic scan (H = 0.8) over its 4 tiles and the models at the runs' forces."""
     _, run_dir, _, _ = pipeline

@@ -27,7 +27,7 @@ eqs. 1–3), :mod:`~roughcontact.bem` (the boundary-element solver and stiffness
 import importlib
 from importlib.metadata import PackageNotFoundError, version
 
-from . import bem, errors, surfaces
+from . import errors, surfaces
 
 try:
     __version__ = version("roughcontact")
@@ -37,9 +37,14 @@ except PackageNotFoundError:  # running from a source tree that is not installed
 __all__ = ["bem", "errors", "models", "surfaces", "__version__"]
 
 
+#: the subpackages imported when first used (PEP 562): an indentation job, which needs only the
+#: surfaces and the solver, starts without ``models`` (scipy.special, scipy.integrate), and an
+#: analysis job, which reads run files, without ``bem`` (scipy.fft, scipy.sparse.linalg)
+_LAZY = ("bem", "models")
+
+
 def __getattr__(name: str):
-    """``roughcontact.models`` imported when first used (PEP 562): an indentation job, which
-    needs only the surfaces and the solver, starts without it (scipy.special, scipy.integrate)."""
-    if name == "models":
-        return importlib.import_module(".models", __name__)
+    """``roughcontact.bem`` and ``roughcontact.models`` imported when first used (:data:`_LAZY`)."""
+    if name in _LAZY:
+        return importlib.import_module(f".{name}", __name__)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

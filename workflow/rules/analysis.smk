@@ -9,6 +9,24 @@ from roughcontact.study.registries import (
 CODE = {rule: code_fingerprint(rule) for rule in ANALYSIS_CODE}
 
 
+# The models' curves that need no run (Persson, Greenwood-Tripp, MDR, this package's models at the
+# sphere loads; Fig. 3's Greenwood-Tripp curve), once, from the config: computed while the runs
+# are, read by the models and figures rules (study.analysis.model_curves).
+rule model_curves:
+    output:
+        nc="results/model_curves.nc",
+    log:
+        "logs/model_curves.log",
+    priority: ANALYSIS_PRIORITY  # needs no run: off the analysis' critical path
+    conda:
+        "../../envs/roughcontact.yaml"
+    params:
+        cfg=config,
+        code=CODE["model_curves"],  # the registered models and their code
+    script:
+        "../scripts/model_curves.py"
+
+
 rule merge:
     input:
         runs=run_files,
@@ -223,6 +241,7 @@ rule models:
         zeta=rules.fit_zeta.output.csv,
         grid_error=grid_error_table,
         fine_reference=fine_reference_table,
+        model_curves=rules.model_curves.output.nc,
     output:
         csv="results/models.csv",
         nc="results/models.nc",

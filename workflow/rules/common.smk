@@ -286,6 +286,14 @@ def tiles_of(wildcards):
     )
 
 
+def measured_tables(rule):
+    """The CSV tables of *rule* (measured_spectrum, measured_scorecard) of every scan, in the
+    order of topography (the summary rule's inputs; empty without scans)."""
+    return lambda wildcards: expand(
+        getattr(rules, rule).output.csv, topo=list(TOPOGRAPHY)
+    )
+
+
 def measured_targets():
     """Every merged file, scorecard and figure of the measured inputs (empty without them)."""
     return (

@@ -11,6 +11,7 @@ rule figures:
         ensemble=rules.merge.output.ensemble,
         zeta=rules.fit_zeta.output.csv,
         crossover=rules.crossover.output.csv,
+        model_curves=rules.model_curves.output.nc,
     output:
         *[
             report(
@@ -34,14 +35,17 @@ rule figures:
 
 
 # The report's landing page: verdict counts, headline numbers and one Fig. 3, inlined by
-# workflow/report/workflow.rst (study.summary).
+# workflow/report/workflow.rst (study.rules.summary).
+# A sweep of measured scans only (hurst empty) gets a page of the scans' fits and best models.
 rule summary:
     input:
-        claims=rules.claims.output.csv,
-        crossover=rules.crossover.output.csv,
-        zeta=rules.fit_zeta.output.csv,
-        models=rules.models.output.csv,
-        figures=rules.figures.output,
+        claims=rules.claims.output.csv if STUDY.generated else [],
+        crossover=rules.crossover.output.csv if STUDY.generated else [],
+        zeta=rules.fit_zeta.output.csv if STUDY.generated else [],
+        models=rules.models.output.csv if STUDY.generated else [],
+        figures=rules.figures.output if STUDY.generated else [],
+        measured_fits=measured_tables("measured_spectrum"),
+        measured_scorecards=measured_tables("measured_scorecard"),
     output:
         html=report(
             "results/summary.html",

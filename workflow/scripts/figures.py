@@ -5,4 +5,4 @@ from roughcontact.study.files.logs import log_to
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
     make_figures(snakemake.params.cfg, snakemake.input.ensemble, snakemake.input.zeta, snakemake.input.crossover,
-                 outputs=list(snakemake.output))
+                 outputs=list(snakemake.output), model_curves_nc=snakemake.input.model_curves)

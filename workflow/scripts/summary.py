@@ -1,8 +1,12 @@
-"""Snakemake `summary` job: claims, crossover, zeta, models tables and Fig. 3 -> results/summary.html (the report's landing page)."""
+"""Snakemake `summary` job: claims, crossover, zeta, models tables and Fig. 3 (a generated study) and the
+measured scans' fits and scorecards -> results/summary.html (the report's landing page)."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.report.summary import write_summary
+from roughcontact.study.rules import summary
 
 snakemake = globals()["snakemake"]
+inputs = snakemake.input
 with log_to(snakemake.log[0]):
-    write_summary(snakemake.params.cfg, snakemake.input.claims, snakemake.input.crossover, snakemake.input.zeta,
-                  snakemake.input.models, list(snakemake.input.figures), snakemake.output.html)
+    summary.run(snakemake.params.cfg, snakemake.output.html, claims_csv=inputs.claims or None,
+                crossover_csv=inputs.crossover or None, zeta_csv=inputs.zeta or None,
+                models_csv=inputs.models or None, figure_paths=list(inputs.figures),
+                measured_fits=list(inputs.measured_fits), measured_scorecards=list(inputs.measured_scorecards))

@@ -39,6 +39,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
+from .._defaults import DEFAULT_MAXITER as _DEFAULT_MAXITER
 from .._validate import check_finite_positive, check_grid_size
 from ..errors import ConvergenceError, DomainTooSmallError
 from .active_sets import equilibrium
@@ -54,8 +55,8 @@ __all__ = [
     "solve",
 ]
 
-#: Default maximum number of conjugate-gradient iterations per solve.
-DEFAULT_MAXITER = 10_000
+#: Default maximum number of conjugate-gradient iterations per solve (its home: roughcontact._defaults).
+DEFAULT_MAXITER = _DEFAULT_MAXITER
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

@@ -31,7 +31,8 @@ ANALYSIS_CODE = {
     "claims": ("roughcontact.study.report.claims",),
     "area": ("roughcontact.study.report.area",),
     "figures": ("roughcontact.study.report.figures",),
-    "summary": ("roughcontact.study.report.summary",),
+    "model_curves": ("roughcontact.study.rules.model_curves",),
+    "summary": ("roughcontact.study.rules.summary",),
     "grid_error": ("roughcontact.study.analysis.grid_error",),
 }
 

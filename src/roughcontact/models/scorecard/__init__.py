@@ -42,14 +42,17 @@ def models() -> dict[str, Model]:
 _loaded: list = []
 
 
-def predict(force, surface: Surface) -> dict:
+def predict(force, surface: Surface, known=None) -> dict:
     """``{name: k}`` of every model that applies to *surface* at the forces *force* (force
-    units, 1-D), each an array (NaN where the model has no solution)."""
+    units, 1-D), each an array (NaN where the model has no solution). *known*: ``{name: k or
+    None}`` already computed for this surface and these forces (a precomputed model,
+    :attr:`Model.precomputable`), taken instead of computing them again."""
     import numpy as np
 
+    known = known or {}
     out = {}
     for name, model in models().items():
-        k = model.predict(force, surface)
+        k = known[name] if name in known else model.predict(force, surface)
         if k is not None:
             out[name] = np.asarray(k, dtype=float)
     return out

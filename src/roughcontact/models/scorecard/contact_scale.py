@@ -51,7 +51,7 @@ register(Model(
     # reads the exponent, and the roll-off and cutoff through the grid's spectrum; elastic only
     axes=("exponent", "rolloff", "cutoff"),
     # the constants' calibration set (superposition.CALIBRATED): H 0.4, 0.7, 1.0
-    ranges=(Range("hurst", 0.4, 1.0, "calibrated on H 0.4-1.0"),)))
+    ranges=(Range("hurst", 0.4, 1.0, "calibrated on H 0.4-1.0"),), precomputable=True))
 
 _LOW, _HIGH = superposition.CALIBRATED_HURST["hurst"]
 register(Model(
@@ -60,7 +60,7 @@ register(Model(
     "presets/calibration-branches.yaml, calibration-branches-451.yaml and calibration-branches-447.yaml",
     contact_scale_h, "roughcontact.models.superposition",
     axes=("exponent", "rolloff", "cutoff"),
-    ranges=(Range("hurst", _LOW, _HIGH, f"calibrated on H {_LOW:g}-{_HIGH:g}"),)))
+    ranges=(Range("hurst", _LOW, _HIGH, f"calibrated on H {_LOW:g}-{_HIGH:g}"),), precomputable=True))
 
 _LOW, _HIGH = superposition.CALIBRATED_TAIL["hurst"]
 register(Model(
@@ -69,4 +69,4 @@ register(Model(
     "1 - k/k_Hertz ~ F^(-2/3)), calibrated on presets/calibration-branches.yaml, calibration-branches-451.yaml "
     "and calibration-branches-447.yaml", contact_scale_tail, "roughcontact.models.superposition",
     axes=("exponent", "rolloff", "cutoff"),
-    ranges=(Range("hurst", _LOW, _HIGH, f"calibrated on H {_LOW:g}-{_HIGH:g}"),)))
+    ranges=(Range("hurst", _LOW, _HIGH, f"calibrated on H {_LOW:g}-{_HIGH:g}"),), precomputable=True))

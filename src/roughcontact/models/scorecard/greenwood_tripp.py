@@ -64,4 +64,4 @@ def greenwood_tripp(force, s: Surface):
 register(Model("greenwood_tripp", "greenwood_tripp: Greenwood & Tripp (1967) on the grid's spectral moments",
                greenwood_tripp, "doi:10.1115/1.3607616",
                # declines (None) off the paraboloid and with a roll-off or a cutoff; elastic only
-               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE))
+               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE, precomputable=True))

@@ -26,4 +26,4 @@ register(Model("mdr", "mdr: the method of dimensionality reduction, 1000 seeded 
                       "foundation", mdr, "doi:10.1103/PhysRevE.76.036710",
                # declines (None) off the paraboloid; the profiles' spectrum has the roll-off and
                # cutoff; an elastic Winkler foundation
-               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE))
+               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE, precomputable=True))

@@ -24,4 +24,4 @@ register(Model("persson", "persson: Persson's interfacial law from the grid's sp
                           "the paraboloid", persson, "doi:10.1063/1.1388626",
                # declines (None) off the paraboloid; the grid's spectrum has the roll-off and
                # cutoff; elastic only
-               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE))
+               axes=("exponent", "rolloff", "cutoff"), ranges=SELF_AFFINE, precomputable=True))

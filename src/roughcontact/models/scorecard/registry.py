@@ -162,6 +162,11 @@ class Model:
         deviations, but the row names why in the column ``outside_range``
         (:meth:`outside`) and the row is never the recommended model
         (:mod:`roughcontact.study.analysis.decision`). Empty: no stated range.
+    precomputable : bool
+        The prediction reads only the surface's parameters, never what a study measures
+        (:attr:`Surface.zeta_fit`): the workflow may compute it once from the configuration,
+        before the runs end (rule ``model_curves``, :mod:`roughcontact.study.analysis.model_curves`),
+        for the scorecard to read. ``False`` (the default): computed where the scorecard is.
     """
 
     name: str
@@ -170,6 +175,7 @@ class Model:
     reference: str = ""
     axes: tuple[str, ...] = ()
     ranges: tuple[Range, ...] = ()
+    precomputable: bool = False
 
     def __post_init__(self):
         if isinstance(self.axes, str) or not all(isinstance(a, str) for a in self.axes):

@@ -67,7 +67,7 @@ from .statistics import bootstrap_indices, interval, verdict
 from .crossover import NO_SPHERE
 from ..config.settings import StudySettings
 
-__all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_reason"]
+__all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_reason", "precomputed_curves"]
 
 log = logging.getLogger(__name__)
 
@@ -221,12 +221,16 @@ def empty_reason(study) -> str:
     return f"no sphere combination has a load with at least {study.fit.resolved_cells} contact cells that a model predicts"
 
 
-def scorecard(groups: dict, zeta_df, study, grid_error=None):
+def scorecard(groups: dict, zeta_df, study, grid_error=None, precomputed=None):
     """``models.csv`` as a DataFrame (one row per model and sphere combination), and a Dataset of
     the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band.
 
     *grid_error*: the table of :func:`roughcontact.study.analysis.grid_error.grid_error` of the study against
-    its companion on ``grid.coarse`` (or ``None``): adds the grid-error columns (module docstring)."""
+    its companion on ``grid.coarse`` (or ``None``): adds the grid-error columns (module docstring).
+    *precomputed*: the groups of ``model_curves.nc`` (:mod:`roughcontact.study.analysis.model_curves`;
+    ``None``: every model computed here), read where they were computed for the same surface and loads."""
+    from . import model_curves
+
     import pandas as pd
     import xarray as xr
 
@@ -253,7 +257,9 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
         f_tr = _crossover(combo)
         g = _grid_errors(grid_error, combo, force_norm)
         dev_of, combo_rows, combo_boot = {}, [], []
-        for name, k_model in registry.predict(sub["force"].values, combo.surface()).items():
+        surface = combo.surface()
+        known = model_curves.known(precomputed, label, sub["force"].values, surface)
+        for name, k_model in registry.predict(sub["force"].values, surface, known).items():
             use = use_load & np.isfinite(k_model)
             dev = k_model / k_mean - 1
             dev_of[name] = dev
@@ -294,3 +300,61 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None):
         table["rank"] = unmodelled.rank(table, "combination")
         table = decision.sort(table)
     return table, curves
+
+
+def _sphere_runs(study) -> list[tuple]:
+    """``(where, seed-0 run)`` of every elastic sphere combination of *study*: *where* its axes as
+    merged-file coordinates (:func:`roughcontact.study.runs.naming.coordinate`), as the scorecard
+    reads them from ``stiffness.nc``."""
+    study = StudySettings.of(study)
+    L = study.grid.length
+    out = []
+    for c in runs.combinations(study):
+        if c["kind"] != "sphere" or not runs.normal_representative(study, c) or c.get("work_of_adhesion", 0.0) > 0:
+            continue
+        where = {a: runs.coordinate(a, c[a], L) if a in runs.DEFAULTS else float(c[a]) for a in runs.AXES["sphere"]}
+        out.append((where, {**c, "seed": study.seeds[0]}))
+    return out
+
+
+def precomputed_curves(study) -> dict:
+    """``{run name: Dataset}`` of every elastic sphere combination of *study*: the curves of
+    ``model_curves.nc`` (:mod:`roughcontact.study.analysis.model_curves`), from the configuration alone."""
+    import xarray as xr
+
+    from ...models.greenwood_tripp import self_affine_sphere_curve
+    from ..runs import jobs
+    from .model_curves import DECLINED, gt_key, surface_key
+
+    study = StudySettings.of(study)
+    L, E, n = study.grid.length, study.e_star, study.grid.n
+    names = [name for name, model in registry.models().items() if model.precomputable]
+    out = {}
+    for where, run in _sphere_runs(study):
+        combo = Combination(where)
+        combo.update(n=n, length=L, e_star=E, zeta_fit=math.nan)
+        surface = combo.surface()
+        force = jobs.job_settings(study, run).forces()
+        predicted, declined = {}, []
+        for name in names:
+            k = registry.models()[name].predict(force, surface)
+            if k is None:
+                declined.append(name)
+            else:
+                predicted[f"k_{name}"] = ("force", np.asarray(k, dtype=float),
+                                          {"long_name": f"stiffness of model {name}", "units": "e_star * length"})
+        attrs = {"surface": surface_key(surface), "models": " ".join(names), DECLINED: " ".join(declined)}
+        if axes.paper_setting(combo, L):
+            parameters = dict(hurst=combo["hurst"], h_rms=combo["h_rms"], n=n, length=L, radius=combo["radius"],
+                              e_star=E)
+            gt = self_affine_sphere_curve(**parameters)
+            attrs["gt"] = gt_key(**parameters)
+            predicted["gt_force"] = ("gt_point", gt.force, {"long_name": "Greenwood-Tripp force (Fig. 3)",
+                                                            "units": "e_star * length^2"})
+            predicted["gt_stiffness"] = ("gt_point", gt.stiffness, {"long_name": "Greenwood-Tripp stiffness (Fig. 3)",
+                                                                    "units": "e_star * length"})
+            attrs["gt_mu"] = float(gt.mu)
+        out[combo_label(combo)] = xr.Dataset(
+            predicted, coords={"force": ("force", force, {"long_name": "normal force", "units": "e_star * length^2"})},
+            attrs=attrs)
+    return out

@@ -7,7 +7,7 @@ default iteration limit, so every module of the study (the typed settings includ
 """
 from __future__ import annotations
 
-from ...bem import DEFAULT_MAXITER
+from ..._defaults import DEFAULT_MAXITER  # (not from bem: a job that only reads runs imports no solver)
 
 __all__ = ["ADHESIVE_TOL_CAP", "capped_tol", "solver_maxiter"]
 

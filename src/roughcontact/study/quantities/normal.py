@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ... import bem
 from ...errors import ConvergenceError, IndentError
 from . import Quantity, register
 
@@ -14,6 +13,8 @@ def stiffness(state, load) -> float:
     unloading tangent (``punch``) or a difference quotient; a failure or a value that is not
     positive (e.g. a periodic surface pressed into full contact) is an
     :class:`~roughcontact.errors.IndentError` naming the load and what to change."""
+    from ... import bem  # the solver, imported by the indent job only
+
     p = load.settings
     try:
         k = bem.stiffness(state, method=p.stiffness_method, rel_step=p.rel_step)

@@ -3,7 +3,6 @@ cells there are, and the cells of the largest (:func:`roughcontact.bem.contact_p
 (``fields.quantities``), the area of the largest, counted once with them where both are kept."""
 from __future__ import annotations
 
-from ... import bem
 from . import OPT_IN, Quantity, opted_in, register
 
 
@@ -13,6 +12,8 @@ def _counted(settings) -> bool:
 
 def _patches(state, load):
     """The patches of *state*, counted once per load for both quantities."""
+    from ... import bem  # the solver, imported by the indent job only
+
     if __name__ not in load.cache:
         load.cache[__name__] = bem.contact_patches(state.contact, periodic=load.settings.periodic)
     return load.cache[__name__]

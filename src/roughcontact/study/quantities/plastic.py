@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ... import bem
 from ...errors import ConvergenceError, IndentError
 from . import Quantity, register
 
@@ -18,6 +17,8 @@ def loading_stiffness(state, load) -> float:
     """The loading tangent ``dF/dd`` along the plastic path (:func:`roughcontact.bem.stiffness`,
     ``method="loading"``, a forward quotient of ``solver.rel_step``); an
     :class:`~roughcontact.errors.IndentError` where it fails or is not positive."""
+    from ... import bem  # the solver, imported by the indent job only
+
     p = load.settings
     try:
         loading = bem.stiffness(state, method="loading", rel_step=p.rel_step)

@@ -88,7 +88,8 @@ def shown_combination(study) -> str | None:
 @dataclasses.dataclass(frozen=True)
 class Inputs:
     """What the figures draw from: the study's settings, the sphere ensemble (or None),
-    the ζ and crossover tables, and the surface shown in Figs. 1, 2 and 4."""
+    the ζ and crossover tables, the surface shown in Figs. 1, 2 and 4, and the precomputed
+    models' curves (the groups of ``model_curves.nc``, or None: computed here)."""
 
     study: StudySettings
     ensemble: object
@@ -98,6 +99,7 @@ class Inputs:
     h_rms: float
     radius: float
     seed: int
+    curves: dict | None = None
 
     def _fitted(self, hurst) -> float:
         """ζ(H) of the ζ table at *hurst*; NaN where it has none (no row, no fit, not a number)."""
@@ -209,9 +211,9 @@ def fig3(plt, inputs: Inputs, key):
     ax.plot(Fg, paper.fractal_stiffness(Fg * E * L**2, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf) / (E * L), "--", color="C2",
             label=f"roughness, eq. 11 (slope {1 / (hurst + 1):.3f})")
     if axes.paper_setting(combo, L):  # Greenwood-Tripp on the same spectrum (paraboloid, elastic, no cut)
-        from ...models.greenwood_tripp import self_affine_sphere_curve
+        from ..analysis.model_curves import gt_curve
 
-        gt = self_affine_sphere_curve(hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
+        gt = gt_curve(inputs.curves, combo["name"], hurst=hurst, h_rms=h, n=n, length=L, radius=radius, e_star=E)
         shown = (gt.force >= Fg[0] * E * L**2) & (gt.force <= Fg[-1] * E * L**2)
         other.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
                    label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
@@ -340,8 +342,10 @@ def collapse(plt, inputs: Inputs, _key):
 DRAW = {"fig1": fig1, "fig2": fig2, "fig3": fig3, "fig4": fig4, "zeta": zeta, "collapse": collapse}
 
 
-def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs):
-    """Draw every figure of :func:`figure_specs` to *outputs* (paths, in the same order)."""
+def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs, model_curves_nc=None):
+    """Draw every figure of :func:`figure_specs` to *outputs* (paths, in the same order);
+    *model_curves_nc*: the precomputed models' curves (rule ``model_curves``; ``None``: Greenwood
+    and Tripp's curve computed here)."""
     from ..files.io import read_csv, read_groups
     from .plotting import pyplot, save_png
 
@@ -357,7 +361,8 @@ def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs):
         study=study, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=read_csv(zeta_csv),
         crossover=read_csv(crossover_csv),
         hurst=_pick(study.hurst, 0.7), h_rms=_pick(study.h_rms, 9e-3),
-        radius=_pick(finite, 0.5) if finite else 0.5, seed=study.seeds[0])
+        radius=_pick(finite, 0.5) if finite else 0.5, seed=study.seeds[0],
+        curves=read_groups(model_curves_nc) if model_curves_nc else None)
     for spec, path in zip(specs, paths):
         save_png(DRAW[spec["key"][0]](plt, inputs, spec["key"]), path)
     log.info("wrote %s", ", ".join(paths))

@@ -92,13 +92,14 @@ def scorecard_figure(path, label: str, curve, table) -> None:
 
 
 def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures, grid_error_csv=None,
-               fine_reference_csv=None):
+               fine_reference_csv=None, model_curves_nc=None):
     """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
     per combination) and one figure per elastic sphere combination (*figures*, in the order of
     :func:`roughcontact.study.runs.naming.sphere_names` with ``adhesive=False``); *grid_error_csv*: ``grid_error.csv`` of the
     study's companion on ``grid.coarse`` (or ``None``); *fine_reference_csv*: ``fine_reference.csv``
     of its companion on ``grid.fine`` (or ``None``), whose grid error replaces the coarse one at its
-    loads (:func:`roughcontact.study.analysis.fine_reference.combined_grid_error`)."""
+    loads (:func:`roughcontact.study.analysis.fine_reference.combined_grid_error`); *model_curves_nc*:
+    the precomputed models' curves (rule ``model_curves``; ``None``: computed here)."""
     import pandas as pd
 
     from ..files.io import read_groups, write_csv, write_groups
@@ -108,7 +109,8 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
 
     grid_error = combined_grid_error(pd.read_csv(grid_error_csv) if grid_error_csv else None,
                                      pd.read_csv(fine_reference_csv) if fine_reference_csv else None)
-    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error)
+    precomputed = read_groups(model_curves_nc) if model_curves_nc else None
+    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error, precomputed)
     attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, out_csv, reason=empty_reason(study))

@@ -163,10 +163,11 @@ def _why_empty(kind: str, size, table=None) -> str:
 
 
 def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str = "", size=None,
-                 length: float = 1.0) -> str:
+                 length: float = 1.0, extra: str = "") -> str:
     """The landing page's fragment (module docstring) from the four tables (pandas DataFrames, any of
     them possibly empty), the path of one Fig. 3 PNG (or ``None``), the study's
-    :class:`~roughcontact.study.report.answer.StudySize` (or ``None``) and ``grid.length``."""
+    :class:`~roughcontact.study.report.answer.StudySize` (or ``None``) and ``grid.length``; *extra*:
+    HTML of further sections, after the recommended models (the measured scans')."""
     parts = [f'<div class="rc-summary" style="{_STYLE}">']
     # 1. the answer, then the tallies per comparison
     found = answer.comparisons(claims)
@@ -236,6 +237,8 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
                              "systematic, F > F_tr", "verdict"], rows))
     else:
         parts.append(_absent(_why_empty("models", size, models)))
+    if extra:
+        parts.append(extra)
     parts.append(f'<p style="color:#555; font-size: 11px;">{stamp()}</p>')
     parts.append("</div>")
     return "\n".join(parts) + "\n"
@@ -247,11 +250,12 @@ def _read(path):
     return read_csv(path, keep_default_na=False, na_values=[""])
 
 
-def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_paths, out_html) -> None:
+def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_paths, out_html, *,
+                  extra: str = "") -> None:
     """``summary`` rule: the landing page's fragment to *out_html* (atomic). *cfg* is the resolved
     configuration; *figure_paths* are the ``figures`` rule's outputs, in the order of
     :func:`~roughcontact.study.report.figures.figure_specs`; the Fig. 3 shown is the one of the
-    combination Figs. 1, 2 and 4 show."""
+    combination Figs. 1, 2 and 4 show; *extra*: HTML of further sections (:func:`summary_html`)."""
     from .figures import figure_specs, shown_combination
 
     specs = figure_specs(cfg)
@@ -266,5 +270,5 @@ def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_p
                 f"\"Fig. 3 stiffness vs force\")"
     text = summary_html(_read(claims_csv), _read(crossover_csv), _read(zeta_csv), _read(models_csv),
                         chosen[1] if chosen else None, fig3_title=title, size=answer.StudySize.of(cfg),
-                        length=float(cfg["grid"]["length"]))
+                        length=float(cfg["grid"]["length"]), extra=extra)
     provenance.write_text(text, out_html)

@@ -20,8 +20,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import least_squares
-from scipy.stats import norm
 
 from ....models import paper
 from ....models.zeta_law import LAWS
@@ -43,6 +41,8 @@ def fit_law(form: str, hurst, zeta, sigma) -> np.ndarray:
         with np.errstate(all="ignore"):
             value = function(hurst, *theta)
         return np.where(value > 0, (np.log(zeta) - np.log(np.abs(value) + 1e-300)) / sigma, 1e6)
+
+    from scipy.optimize import least_squares  # (here: the ζ fit's job imports this module, not the law)
 
     return least_squares(residual, start, method="lm").x
 
@@ -109,7 +109,9 @@ def fit_zeta_law(hurst, zeta, ci_low, ci_high, replicates, *, level: float = 0.9
     replicates = np.asarray(replicates, dtype=float)
     if hurst.size < MIN_HURST:
         raise ValueError(f"a zeta(H) law needs at least {MIN_HURST} Hurst exponents, got {hurst.size}")
-    sigma = np.log(ci_high / ci_low) / (2 * norm.ppf(0.5 + level / 2))
+    from scipy.special import ndtri  # the normal quantile, as scipy.stats.norm.ppf (without scipy.stats)
+
+    sigma = np.log(ci_high / ci_low) / (2 * ndtri(0.5 + level / 2))
     sigma = np.where(np.isfinite(sigma) & (sigma > 0), sigma, np.nanmax(sigma))
     aic, fitted = {}, {}
     for form, (_, names, _) in LAWS.items():
