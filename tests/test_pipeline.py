@@ -361,4 +361,7 @@ def test_failing_jobs_through_snakemake_keep_going(tmp_path):
     log = tmp_path / line.rsplit("(log: ", 1)[1].rstrip(")")
     assert "Traceback" in log.read_text() and "FAILED" in log.read_text(), "the details in the run's log"
     assert "CalledProcessError" not in out, "Snakemake's own lines on the exit status left out (quiet console)"
-    assert not list(tmp_path.rglob("*.nc")) and not list(tmp_path.rglob(".*tmp*"))
+    # no run file and nothing half-written; the models' curves need no run (rule model_curves, from the config
+    # alone) and may be complete
+    written = [p for p in tmp_path.rglob("*.nc") if p.name != "model_curves.nc"]
+    assert not written and not list(tmp_path.rglob(".*tmp*")), written
