@@ -31,7 +31,7 @@ import numpy as np
 from ...models import area as area_models
 from ...models.area.laws import SIMULATION_KAPPA, area_crossover_force
 from ..config.settings import StudySettings
-from ..runs import naming as runs
+from .combination import combination, combo_label
 from .ensemble import combinations
 from .statistics import UNRESOLVED, bootstrap_indices, interval, untested, verdict
 
@@ -94,21 +94,11 @@ class AreaContext:
     why_unresolved: str
 
 
-def _surface(where: dict, study: StudySettings):
-    from ...models.scorecard.registry import Surface
-
-    length = study.grid.length
-    value = {axis: runs.axis_value(axis, where[axis], length) if axis in where else None
-             for axis in ("rolloff", "cutoff")}
-    return Surface(hurst=where["hurst"], h_rms=where["h_rms"], radius=where["radius"], length=length,
-                   n=study.grid.n, e_star=study.e_star, exponent=where.get("exponent", 2.0), **value)
-
-
 def area_context(where: dict, data, study) -> AreaContext:
     """The :class:`AreaContext` of the sphere combination *where* (axis -> merged-file coordinate) with
     its ``(seed, force)`` slice *data*."""
     study = StudySettings.of(study)
-    surface = _surface(where, study)
+    surface = combination(where, study).surface()
     slope = area_models.rms_slope(surface)
     wavelength = cells_per_wavelength(study.grid.n, study.grid.length, surface.cutoff)
     needed = min_area_cells(wavelength)
@@ -164,8 +154,7 @@ def area_scorecard(groups: dict, study):
         boot = area[indices].mean(1)                       # (resample, force)
         with np.errstate(divide="ignore", invalid="ignore"):
             band = np.percentile(boot / mean - 1, [50 * (1 - level), 50 * (1 + level)], axis=0)
-        label = runs.combo_name({a: runs.axis_value(a, where[a], study.grid.length) if a in runs.DEFAULTS
-                                 else where[a] for a in runs.AXES["sphere"] if a in where})
+        label = combo_label(combination(where, study))
         predicted = area_models.predict(force, context.surface)
         curves[label] = {"force": force, "area": mean, "band_low": band[0], "band_high": band[1],
                          "resolved": context.resolved, "crossover_force": context.crossover_force,

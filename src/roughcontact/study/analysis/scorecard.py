@@ -62,6 +62,7 @@ from ..config import axes
 from . import decision
 from ..runs import naming as runs
 from . import not_modelled as unmodelled
+from .combination import Combination, combination, combo_label
 from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval, verdict
 from .crossover import NO_SPHERE
@@ -72,44 +73,12 @@ __all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_r
 log = logging.getLogger(__name__)
 
 
-class Combination(dict):
-    """One sphere combination of the sweep: the axes as merged-file coordinates, plus ``n``,
-    ``length``, ``e_star`` and ``zeta_fit`` (the study's fitted ζ(H), NaN if none)."""
-
-    @property
-    def paper_setting(self) -> bool:
-        """Every optional axis at the paper's value (:func:`roughcontact.study.config.axes.paper_setting`)."""
-        return axes.paper_setting(self, self["length"])
-
-    def surface(self) -> registry.Surface:
-        """What the models read (:class:`roughcontact.models.scorecard.Surface`), with every
-        optional axis of the combination in its ``axes`` (merged-file coordinates)."""
-        length = self["length"]
-        return registry.Surface(
-            hurst=self["hurst"], h_rms=self["h_rms"], radius=self["radius"], length=length, n=int(self["n"]),
-            e_star=self["e_star"], exponent=self["exponent"], zeta_fit=self["zeta_fit"],
-            rolloff=runs.axis_value("rolloff", self["rolloff"], length),
-            cutoff=runs.axis_value("cutoff", self["cutoff"], length),
-            axes={a.name: self[a.name] for a in axes.optional_axes() if a.name in self})
-
-
 def _combinations(ds, study: StudySettings, zeta_of: dict):
     """``(Combination, (seed, force) slice)`` of every sphere combination (:func:`ensemble.combinations`)."""
     for where, sub in combinations(ds):
-        combo = Combination(where)
-        for axis, setting in runs.DEFAULTS.items():   # an axis a file made before it existed lacks
-            if axis in runs.AXES["sphere"]:
-                combo.setdefault(axis, runs.coordinate(axis, setting, study.grid.length))
-        combo.update(n=study.grid.n, length=study.grid.length, e_star=study.e_star,
-                     zeta_fit=float(zeta_of.get(combo["hurst"], math.nan)))
+        combo = combination(where, study)
+        combo["zeta_fit"] = float(zeta_of.get(combo["hurst"], math.nan))
         yield combo, sub
-
-
-def combo_label(c: Combination) -> str:
-    """The run name of a combination (``H0.7_R0.5_h0.009`` and the tags of the optional axes)."""
-    run = {axis: runs.axis_value(axis, c[axis], c["length"]) if axis in runs.DEFAULTS else c[axis]
-           for axis in runs.AXES["sphere"]}
-    return runs.combo_name(run)
 
 
 def _crossover(c: Combination) -> float:
