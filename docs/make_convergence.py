@@ -54,9 +54,9 @@ def _grid_errors(workdirs):
 
     tables = []
     for workdir in workdirs:
-        path = Path(workdir) / "results" / "grid_error.csv"
-        if path.is_file():
-            table = pd.read_csv(path)
+        results = StudyDirectory(workdir)
+        if results.has("grid_error"):
+            table = results.table("grid_error")
             if len(table):
                 table.insert(0, "study", Path(workdir).name)
                 tables.append(table)

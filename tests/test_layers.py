@@ -67,13 +67,15 @@ def test_the_package_has_the_layers_it_is_tested_for():
     assert parts == set(LAYER), f"top-level parts {sorted(parts)} differ from the layers {sorted(LAYER)}"
 
 
+def _imported_parts(module: str, part_of):
+    """``(target, its part)`` of every module *module* imports that lies in a part (*part_of* not None)."""
+    return [(target, part_of(target)) for target in sorted(GRAPH[module]) if part_of(target) is not None]
+
+
 @pytest.mark.parametrize("module", sorted(m for m in MODULES if _part(m) is not None))
 def test_no_import_runs_up_the_layers(module):
     mine = _part(module)
-    for target in sorted(GRAPH[module]):
-        theirs = _part(target)
-        if theirs is None:
-            continue
+    for target, theirs in _imported_parts(module, _part):
         assert LAYER[theirs] <= LAYER[mine], f"{module} imports {target}: {theirs} is above {mine}"
         assert (mine, theirs) not in SEPARATE, f"{module} imports {target}: {mine} must not use {theirs}"
 
@@ -133,7 +135,5 @@ def test_the_study_has_the_sub_layers_it_is_tested_for():
 @pytest.mark.parametrize("module", sorted(m for m in MODULES if _study_part(m) is not None))
 def test_no_import_runs_up_the_study_sub_layers(module):
     mine = _study_part(module)
-    for target in sorted(GRAPH[module]):
-        theirs = _study_part(target)
-        if theirs is not None:
-            assert STUDY_LAYER[theirs] <= STUDY_LAYER[mine], f"{module} imports {target}: {theirs} is above {mine}"
+    for target, theirs in _imported_parts(module, _study_part):
+        assert STUDY_LAYER[theirs] <= STUDY_LAYER[mine], f"{module} imports {target}: {theirs} is above {mine}"
