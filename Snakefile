@@ -94,8 +94,12 @@ rule all:
             if STUDY.generated
             else []
         ),
-        # a sweep of measured scans only: its landing page too
-        ([rules.summary.output] if not STUDY.generated and TOPOGRAPHY else []),
+        # a sweep of measured scans or spectra only: its landing page too
+        (
+            [rules.summary.output]
+            if not STUDY.generated and (TOPOGRAPHY or SPECTRUM)
+            else []
+        ),
         # the adhesive runs' pull-off and figures (none without work_of_adhesion > 0)
         (
             [rules.adhesion.output, rules.adhesion_figures.output]

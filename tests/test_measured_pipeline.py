@@ -336,6 +336,44 @@ def test_measured_only_sweep_ends_in_a_landing_page(pipeline):
         assert f"<b>{row['model']}</b></td><td style" in page and fmt(row["max_rel_dev"]) in page, row.to_dict()
 
 
+def test_spectrum_only_sweep_ends_in_a_landing_page(tmp_path):
+    """A sweep of one measured spectrum and nothing else (hurst empty, no scan) writes
+    results/summary.html: the answer says the paper's claims were not tested; per kind the page
+    gives the seeds and counts the loads whose mean contact cells over the seeds reach
+    fit.resolved_cells (recounted here from the merged file), and embeds the k(F) figure."""
+    import html
+
+    from roughcontact.study.report.landing_measured import NO_GENERATED
+
+    (tmp_path / "inputs").mkdir()
+    _psd(tmp_path / "inputs" / "psd.csv")
+    cfg = {k: v for k, v in _cfg(hurst=[], h_rms=[], spectrum=["inputs/psd.csv"], seeds=2,
+                                 grid={"n": 33, "length": 3.2}).items() if k != "tile"}
+    (tmp_path / "study.yaml").write_text(yaml.safe_dump(cfg))
+    run_dir = tmp_path / "run"
+    run_dir.mkdir()
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    proc = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--configfile",
+                           str(tmp_path / "study.yaml"), "--cores", "2"], cwd=run_dir, capture_output=True,
+                          text=True, timeout=600, env=env)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    page = (run_dir / "results/summary.html").read_text()
+    assert html.escape(NO_GENERATED) in page
+    assert "Spectrum psd" in page
+    assert page.count('<img alt="k(F) of psd"') == 1
+    resolved_cells = config.resolve_config(cfg, base_dir=tmp_path)["fit"]["resolved_cells"]
+    for kind, ds in read_groups(run_dir / "results/spectrum_merge/psd.nc").items():
+        one = ds.isel(radius=0) if "radius" in ds.dims else ds
+        resolved = int((one["contact_cells"].mean("seed").values >= resolved_cells).sum())
+        assert f"<td style=\"{_cell()}\">{resolved} of {one.sizes['force']}</td>" in page, kind
+
+
+def _cell() -> str:
+    from roughcontact.study.report.summary import _CELL
+
+    return _CELL
+
+
 def test_spectrum_fit_and_models(pipeline):
     """The fit of the synthetic scan (H = 0.8) over its 4 tiles and the models at the runs' forces."""
     _, run_dir, _, _ = pipeline

@@ -294,6 +294,14 @@ def measured_tables(rule):
     )
 
 
+def spectrum_outputs(rule, name):
+    """The output *name* of *rule* (spectrum_merge, spectrum_figures) of every measured spectrum, in
+    the order of spectrum (the summary rule's inputs; empty without spectra)."""
+    return lambda wildcards: expand(
+        getattr(getattr(rules, rule).output, name), spec=list(SPECTRUM)
+    )
+
+
 def measured_targets():
     """Every merged file, scorecard and figure of the measured inputs (empty without them)."""
     return (

@@ -46,6 +46,8 @@ rule summary:
         figures=rules.figures.output if STUDY.generated else [],
         measured_fits=measured_tables("measured_spectrum"),
         measured_scorecards=measured_tables("measured_scorecard"),
+        spectrum_merged=spectrum_outputs("spectrum_merge", "nc"),
+        spectrum_figures=spectrum_outputs("spectrum_figures", "kf"),
     output:
         html=report(
             "results/summary.html",

@@ -3,6 +3,12 @@
 its scorecard (``results/measured_scorecard/<scan>.csv``, rank 1: the smallest largest deviation
 ``max_rel_dev`` among the scored rows). A sweep of measured scans only (``hurst`` empty) gets a
 landing page of this section under an answer that says the paper's claims were not tested.
+
+The measured spectra (``spectrum``) get a section of their own: per spectrum, its seeded surfaces'
+stiffness per kind and radius (``results/spectrum_merge/<spectrum>.nc``: the loads, the range of
+the mean k, the loads resolved by ``fit.resolved_cells`` mean contact cells) and its k(F) figure
+(``results/spectrum_figures/<spectrum>/stiffness.png``). A sweep of spectra only gets a landing
+page of that section under the same answer.
 """
 from __future__ import annotations
 
@@ -12,11 +18,11 @@ import math
 from .summary import _CELL, _STYLE, _absent, _table, fmt
 from .tables import stamp
 
-__all__ = ["NO_GENERATED", "measured_section", "measured_only_html"]
+__all__ = ["NO_GENERATED", "measured_section", "spectrum_section", "measured_only_html"]
 
 #: the answer of a sweep without generated surfaces
 NO_GENERATED = ("the sweep presses measured surfaces only (hurst is empty): the paper's claims, which are "
-                "about generated self-affine surfaces, are not tested; each scan's own scorecard follows")
+                "about generated self-affine surfaces, are not tested; each measured surface's own results follow")
 
 
 def _radius(value) -> str:
@@ -58,11 +64,51 @@ def measured_section(scans: dict) -> str:
     return "\n".join(parts)
 
 
-def measured_only_html(scans: dict) -> str:
-    """The landing page's fragment of a sweep of measured scans only (module docstring)."""
+def _spectrum_rows(groups: dict, resolved_cells: float) -> list:
+    """One row per kind and radius of a spectrum's merged file (*groups* ``{kind: Dataset}``)."""
+    rows = []
+    for kind, ds in groups.items():
+        radii = [float(r) for r in ds["radius"].values] if "radius" in ds.dims else [math.inf]
+        for radius in radii:
+            one = ds.sel(radius=radius) if "radius" in ds.dims else ds
+            force, k = one["force"].values, one["k_mean"].values
+            cells = one["contact_cells"].mean("seed").values if "contact_cells" in one else None
+            resolved = int((cells >= resolved_cells).sum()) if cells is not None else 0
+            unit_f = html.escape(str(one["force"].attrs.get("units", "")))
+            unit_k = html.escape(str(one["k_mean"].attrs.get("units", "")))
+            rows.append([html.escape(kind), _radius(radius), str(one.sizes["seed"]),
+                         f"{fmt(force.min())} … {fmt(force.max())} {unit_f}",
+                         f"{fmt(float(k.min()))} … {fmt(float(k.max()))} {unit_k}", f"{resolved} of {len(force)}"])
+    return rows
+
+
+def spectrum_section(spectra: dict, resolved_cells: float) -> str:
+    """The HTML of the measured spectra: *spectra* ``{name: (groups, figure path or None)}``, the
+    groups of ``results/spectrum_merge/<name>.nc`` (``{kind: Dataset}``); a load is resolved
+    when its mean contact cells over the seeds reach *resolved_cells* (``fit.resolved_cells``)."""
+    from .summary import _png_data_uri
+
+    parts = ["<h2>Measured spectra: the stiffness of their seeded surfaces</h2>"]
+    for name, (groups, figure) in spectra.items():
+        parts.append(f"<h3>Spectrum {html.escape(str(name))}</h3>")
+        rows = _spectrum_rows(groups, resolved_cells)
+        if rows:
+            parts.append(_table(["kind", "radius", "seeds", "loads F", "mean k", "resolved loads"], rows))
+        else:
+            parts.append(_absent("the spectrum's merged file holds no run"))
+        if figure is not None:
+            parts.append(f'<img alt="k(F) of {html.escape(str(name))}" style="max-width: 700px; width: 100%;" '
+                         f'src="{_png_data_uri(figure)}">')
+    return "\n".join(parts)
+
+
+def measured_only_html(scans: dict, spectra: str = "") -> str:
+    """The landing page's fragment of a sweep of measured surfaces only (module docstring): the
+    scans' section of *scans* and the spectra's HTML *spectra* (:func:`spectrum_section`)."""
     return "\n".join([f'<div class="rc-summary" style="{_STYLE}">',
                       "<h2>Answer: do the paper's claims hold?</h2>",
                       f"<p>Not tested: {html.escape(NO_GENERATED)}.</p>",
-                      measured_section(scans),
+                      measured_section(scans) if scans else "",
+                      spectra,
                       f'<p style="color:#555; font-size: 11px;">{stamp()}</p>',
                       "</div>"]) + "\n"
