@@ -130,16 +130,16 @@ def test_scorecard_ranks_the_law_the_ensemble_follows_first():
 
 
 def test_area_rule_writes_its_table_page_and_figure(tmp_path):
-    """run_area on a merged file: area_models.csv with one row per area model, the HTML page and
+    """The area rule's run on a merged file: area_models.csv with one row per area model, the HTML page and
     a PNG of the A(F) figure."""
     from roughcontact.study.files.io import read_csv, write_groups
-    from roughcontact.study.report.area import run_area
+    from roughcontact.study.rules import area as area_rule
 
     merged = tmp_path / "stiffness.nc"
     write_groups(merged, _groups(_joined(H_LINEAR), H_LINEAR), {})
     out = tmp_path / "area"
     out.mkdir()
-    run_area(_study(H_LINEAR), merged, out / "area_models.csv", out / "area_models.html", out / "area.png")
+    area_rule.run(_study(H_LINEAR), merged, out / "area_models.csv", out / "area_models.html", out / "area.png")
     table = read_csv(out / "area_models.csv")
     assert sorted(table["model"]) == sorted(area_models.models()), "one row per area model"
     assert "<title>Real contact area: model scorecard</title>" in (out / "area_models.html").read_text(), "its title"
