@@ -107,7 +107,8 @@ def compare_rules(studies: dict, tolerance: float):
         accepted = failed = 0
         for name, test in errors.items():
             train = [e for other, rows in errors.items() if other != name for e in rows]
-            limits = {w: threshold([e for e in train if e["key"] == w], key, tolerance) for w in {e["key"] for e in test}}
+            limits = {w: threshold([e for e in train if e["key"] == w], key, tolerance)
+                      for w in {e["key"] for e in test}}
             ok = [e for e in test if e[key] >= limits[e["key"]]]
             bad = [abs(e["error"]) for e in ok if abs(e["error"]) > tolerance]
             accepted, failed = accepted + len(ok), failed + len(bad)

@@ -35,9 +35,9 @@ def area_lead() -> str:
             f"reach min_area_cells, measured for a {AREA_TOLERANCE:.0%} area error by the grid study, "
             f"{MEASURED_ON}, docs/guide/area.md), with its 95 % bootstrap-over-seeds interval; rms_rel_dev the rms "
             "of the same deviations, rank orders the models by it; systematic_low and systematic_high the mean "
-            "deviation below and above the area crossover F_A (crossover_force, F/(E* L^2), where 2 F/(E* h'_rms) "
-            "= pi a^2) with its interval and verdict on 0; inside_band the fraction of loads inside the "
-            "ensemble's band. A combination without an area-resolved load keeps one row per model whose note says "
+            "deviation (each load weighted by the inverse variance of the ensemble mean there) below and above "
+            "the area crossover F_A (crossover_force, F/(E* L^2), where 2 F/(E* h'_rms) = pi a^2) with its "
+            "interval and verdict on 0; inside_band the fraction of loads inside the ensemble's band. A combination without an area-resolved load keeps one row per model whose note says "
             f"why. {summaries}. area_models.csv holds every digit.")
 
 
