@@ -37,7 +37,8 @@ def area_lead() -> str:
             "of the same deviations, rank orders the models by it; systematic_low and systematic_high the mean "
             "deviation (each load weighted by the inverse variance of the ensemble mean there) below and above "
             "the area crossover F_A (crossover_force, F/(E* L^2), where 2 F/(E* h'_rms) = pi a^2) with its "
-            "interval and verdict on 0; inside_band the fraction of loads inside the ensemble's band. A combination without an area-resolved load keeps one row per model whose note says "
+            "interval and verdict on 0; inside_band the fraction of loads inside the ensemble's band. A "
+            "combination without an area-resolved load keeps one row per model whose note says "
             f"why. {summaries}. area_models.csv holds every digit.")
 
 
