@@ -15,6 +15,7 @@ Usage::
 
     python benchmarks/area_grid_study.py [--n 65 129 257 513] [--cutoff 0.0625] [--seeds 0 1]
         [--forces 1e-6 2e-2 12] [--csv area_grid_study.csv]
+    python benchmarks/area_grid_study.py --compare-rules a.csv b.csv c.csv   # which count is the rule
 
 Defaults: R = 0.5, H = 0.7, h_rms = 9e-3, L = 1, E* = 1 (the paper's sphere), λ_c = L/16.
 """
@@ -91,6 +92,37 @@ def summary_lines(rows, tolerance: float):
                f"(largest |error| there: {max((abs(e['error']) for e in sub), default=float('nan')):.3f})")
 
 
+def _wavelength_key(e) -> float:
+    """The rule's λ_s/Δ key of a row: the power of 2 nearest its cells per wavelength (2 at least)."""
+    return float(2 ** max(1, round(np.log2(max(e["cells_per_wavelength"], 2.0)))))
+
+
+def compare_rules(studies: dict, tolerance: float):
+    """Which count predicts the area's error: per λ_s/Δ, the threshold in contact cells against the
+    threshold in cells per patch, each taken from all studies but one and applied to the one left
+    out (*studies*: ``{name: rows}``). Yields one line per study and rule: loads accepted, of them
+    beyond *tolerance*, and the largest error there."""
+    errors = {name: [{**e, "key": _wavelength_key(e)} for e in ensemble_errors(rows)] for name, rows in studies.items()}
+    for key in ("cells", "cells_per_patch"):
+        accepted = failed = 0
+        for name, test in errors.items():
+            train = [e for other, rows in errors.items() if other != name for e in rows]
+            limits = {w: threshold([e for e in train if e["key"] == w], key, tolerance)
+                      for w in {e["key"] for e in test}}
+            ok = [e for e in test if e[key] >= limits[e["key"]]]
+            bad = [abs(e["error"]) for e in ok if abs(e["error"]) > tolerance]
+            accepted, failed = accepted + len(ok), failed + len(bad)
+            yield (f"rule on {key}, thresholds from the others, applied to {name}: {len(ok)} loads accepted, "
+                   f"{len(bad)} beyond {tolerance:g} (largest {max(bad, default=0.0):.3f})")
+        yield f"rule on {key}: {accepted} loads accepted in all, {failed} beyond {tolerance:g}"
+
+
+def _read_rows(path):
+    with open(path) as handle:
+        return [{k: (float(v) if k in ("force", "contact_area", "cells_per_wavelength") else int(v))
+                 for k, v in r.items()} for r in csv.DictReader(handle)]
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--n", type=int, nargs="+", default=[65, 129, 257, 513])
@@ -105,11 +137,16 @@ def main(argv=None) -> int:
     parser.add_argument("--tolerance", type=float, default=0.10, help="relative area error called resolved")
     parser.add_argument("--csv", default="area_grid_study.csv")
     parser.add_argument("--from-csv", action="store_true", help="only summarise the rows of --csv")
+    parser.add_argument("--compare-rules", nargs="+", metavar="CSV",
+                        help="the CSVs of several studies: contact cells against cells per patch as the "
+                             "resolution rule, each study left out in turn")
     args = parser.parse_args(argv)
+    if args.compare_rules:
+        for line in compare_rules({path: _read_rows(path) for path in args.compare_rules}, args.tolerance):
+            print(line)
+        return 0
     if args.from_csv:
-        with open(args.csv) as handle:
-            rows = [{k: (float(v) if k in ("force", "contact_area", "cells_per_wavelength") else int(v))
-                     for k, v in r.items()} for r in csv.DictReader(handle)]
+        rows = _read_rows(args.csv)
         for line in summary_lines(rows, args.tolerance):
             print(line)
         return 0

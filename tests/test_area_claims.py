@@ -130,17 +130,30 @@ def test_scorecard_ranks_the_law_the_ensemble_follows_first():
 
 
 def test_area_rule_writes_its_table_page_and_figure(tmp_path):
-    """run_area on a merged file: area_models.csv with one row per area model, the HTML page and
+    """The area rule's run on a merged file: area_models.csv with one row per area model, the HTML page and
     a PNG of the A(F) figure."""
     from roughcontact.study.files.io import read_csv, write_groups
-    from roughcontact.study.report.area import run_area
+    from roughcontact.study.rules import area as area_rule
 
     merged = tmp_path / "stiffness.nc"
     write_groups(merged, _groups(_joined(H_LINEAR), H_LINEAR), {})
     out = tmp_path / "area"
     out.mkdir()
-    run_area(_study(H_LINEAR), merged, out / "area_models.csv", out / "area_models.html", out / "area.png")
+    area_rule.run(_study(H_LINEAR), merged, out / "area_models.csv", out / "area_models.html", out / "area.png")
     table = read_csv(out / "area_models.csv")
-    assert sorted(table["model"]) == ["linear_hertz", "persson_area"], "one row per area model"
+    assert sorted(table["model"]) == sorted(area_models.models()), "one row per area model"
     assert "<title>Real contact area: model scorecard</title>" in (out / "area_models.html").read_text(), "its title"
     assert (out / "area.png").read_bytes()[:4] == b"\x89PNG", "the figure is a PNG"
+
+
+def test_systematic_deviation_weighs_each_load_by_its_inverse_variance():
+    """The area scorecard's mean deviation per branch is weighted as the stiffness's: deviations
+    +0.1 and +0.3 at two loads whose bootstrap variances of the relative mean are v0 and 9 v0 give
+    (0.1/v0 + 0.3/(9 v0))/(1/v0 + 1/(9 v0)) = 0.12 (to 1e-12), not the unweighted 0.2."""
+    rng = np.random.default_rng(3)
+    noise = rng.standard_normal(400)
+    noise = (noise - noise.mean()) / noise.std(ddof=1)
+    boot = np.stack([1 + 0.01 * noise, 1 + 0.03 * noise], axis=1)          # (resample, load)
+    mean = np.ones(2)
+    value = area_analysis._systematic(np.array([1.1, 1.3]), mean, boot, np.array([True, True]), 0.95)[0]
+    assert value == pytest.approx(0.12, rel=1e-12)

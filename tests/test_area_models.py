@@ -85,11 +85,11 @@ def test_rms_slope_is_that_of_the_generated_surface(n):
 
 
 def test_area_models_registered_for_the_paraboloid_only():
-    """Both area models predict on a paraboloid and decline (None) on a cone and a flat surface."""
+    """The area models predict on a paraboloid and decline (None) on a cone and a flat surface."""
     force = np.geomspace(1e-6, 1e-2, 5)
     sphere = Surface(hurst=0.7, h_rms=9e-3, radius=R, length=1.0, n=65, e_star=E_STAR)
     cone = Surface(hurst=0.7, h_rms=9e-3, radius=R, length=1.0, n=65, e_star=E_STAR, exponent=1.0)
-    assert sorted(area.predict(force, sphere)) == ["linear_hertz", "persson_area"]
+    assert sorted(area.predict(force, sphere)) == ["linear_hertz", "persson_area", "three_regime"]
     assert area.predict(force, cone) == {}
 
 
@@ -102,3 +102,70 @@ def test_persson_fraction_at_multiples_of_the_crossover(ratio, expected):
         force, radius=R, e_star=E_STAR)
     assert float(laws.persson_fraction_at(ratio)) == pytest.approx(direct, rel=1e-12)
     assert float(laws.persson_fraction_at(ratio)) == pytest.approx(expected, abs=5e-4)
+
+
+# three_regime (roughcontact.models.area.three_regime): its limits in closed form
+
+def _three(force, *, slope=0.2, curvature=math.inf, **kw):
+    from roughcontact.models.area.three_regime import three_regime_area
+
+    return three_regime_area(np.atleast_1d(float(force)), radius=R, e_star=E_STAR, rms_slope=slope,
+                             rms_curvature=curvature, **kw)[0]
+
+
+def test_three_regime_small_force_is_the_linear_law_with_its_kappa():
+    """Without the one-asperity term (h″ = inf) and at F = 1e-6 F_A (Φ(y) = y (1 − O(y²)), y ~ 1e-2)
+    the area is κ F/(E* h′) with κ = 2.34: to 1e-3 relative."""
+    from roughcontact.models.area.three_regime import KAPPA
+
+    force = 1e-6 * laws.area_crossover_force(radius=R, e_star=E_STAR, rms_slope=0.2, kappa=KAPPA)
+    assert _three(force) * E_STAR * 0.2 / force == pytest.approx(KAPPA, rel=1e-3)
+
+
+def test_three_regime_smallest_force_is_one_summit():
+    """With the one-asperity term the area at F → 0 is Hertz's on a summit of radius R_s = c_s/h″,
+    π (3 F R_s/(4E*))^(2/3) (the linear term is smaller by F^(1/3)): at F = 1e-16 E* R², h″ = 50/R, to
+    1e-3 relative."""
+    from roughcontact.models.area.three_regime import SUMMIT
+
+    force, curvature = 1e-16 * E_STAR * R**2, 50 / R
+    expected = math.pi * (3 * force * SUMMIT / curvature / (4 * E_STAR)) ** (2 / 3)
+    assert _three(force, curvature=curvature) == pytest.approx(expected, rel=1e-3)
+
+
+@pytest.mark.parametrize("curvature", [math.inf, 50 / R])
+def test_three_regime_large_force_is_hertz(curvature):
+    """At F = 1e6 F_A (Φ = 1 − 1/(2β²), β ~ 200) the area is Hertz's π a² = π (3FR/(4E*))^(2/3), with
+    or without the one-asperity term: to 1e-4 relative."""
+    force = 1e6 * laws.area_crossover_force(radius=R, e_star=E_STAR, rms_slope=0.2)
+    expected = math.pi * (3 * force * R / (4 * E_STAR)) ** (2 / 3)
+    assert _three(force, curvature=curvature) == pytest.approx(expected, rel=1e-4)
+
+
+@pytest.mark.parametrize("ratio", [0.01, 1.0, 30.0])
+def test_three_regime_reduces_to_persson(ratio):
+    """With κ = √(8/π) and no one-asperity term the model is Persson's area under Hertz's pressure
+    (laws.persson_area), at any load: to 1e-12 relative."""
+    force = ratio * laws.area_crossover_force(radius=R, e_star=E_STAR, rms_slope=0.2)
+    expected = laws.persson_area(np.array([force]), radius=R, e_star=E_STAR, rms_slope=0.2)[0]
+    assert _three(force, kappa=laws.PERSSON_KAPPA) == pytest.approx(expected, rel=1e-12)
+
+
+def test_three_regime_zero_force_is_zero_area():
+    """F = 0: A = 0 (no division by Hertz's zero area)."""
+    assert _three(0.0, curvature=50 / R) == 0.0
+
+
+def test_rms_curvature_is_that_of_the_generated_surface():
+    """h″_rms of the grid's spectrum equals √⟨(∇²h)²⟩ of the generated surface by spectral
+    differentiation (Parseval), to 1e-3 relative: the grid spectrum keeps one wavenumber per shell,
+    exact for q² (the rms slope agrees to 1e-10) but not for q⁴ (8e-5 apart at n = 65)."""
+    from roughcontact.models.area.three_regime import rms_curvature
+
+    n, hurst, h_rms, length = 65, 0.7, 9e-3, 1.0
+    heights = surfaces.self_affine(n, hurst=hurst, h_rms=h_rms, length=length, seed=3)
+    q1 = 2 * np.pi * np.fft.fftfreq(n, d=length / n)
+    spectrum = np.fft.fft2(heights) / n**2
+    mean_square_laplacian = np.sum(np.abs(spectrum) ** 2 * (q1[:, None] ** 2 + q1[None, :] ** 2) ** 2)
+    s = Surface(hurst=hurst, h_rms=h_rms, radius=R, length=length, n=n, e_star=E_STAR)
+    assert rms_curvature(s) == pytest.approx(math.sqrt(mean_square_laplacian), rel=1e-3)

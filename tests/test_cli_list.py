@@ -1,4 +1,4 @@
-"""``roughcontact list axes|models|claims``: one line per registered item, or ``--json``."""
+"""``roughcontact list axes|models|area-models|claims|quantities``: one line per registered item, or ``--json``."""
 from __future__ import annotations
 
 import json
@@ -55,6 +55,27 @@ def test_models_one_line_each(capsys):
 def test_models_json_has_declared_axes(capsys):
     entry = next(item for item in _json(capsys, "models") if item["name"] == "greenwood_tripp")
     assert entry["axes"] == list(scorecard.models()["greenwood_tripp"].axes), f"entry: {entry}"
+
+
+def test_area_models_one_line_each(capsys):
+    from roughcontact.models import area
+
+    names = [line.split("\t")[0] for line in _lines(capsys, "area-models")]
+    assert names == list(area.models()), f"area models listed: {names}"
+
+
+def test_area_models_json_has_reference(capsys):
+    from roughcontact.models import area
+
+    entry = next(item for item in _json(capsys, "area-models") if item["name"] == "persson_area")
+    assert entry["reference"] == area.models()["persson_area"].reference, f"entry: {entry}"
+
+
+def test_quantities_one_line_each(capsys):
+    from roughcontact.study.quantities import QUANTITIES
+
+    names = [line.split("\t")[0] for line in _lines(capsys, "quantities")]
+    assert names == list(QUANTITIES), f"quantities listed: {names}"
 
 
 def test_claims_one_line_each(capsys):

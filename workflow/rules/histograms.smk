@@ -18,5 +18,6 @@ rule histograms_figure:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=CODE["histograms_figure"],  # the figure's code and the ensemble-mean histograms
     script:
         "../scripts/histograms_figure.py"

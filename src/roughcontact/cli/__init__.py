@@ -7,7 +7,7 @@ NetCDF file.  ``roughcontact measured scan.nc --unit um --tile 256 --radius 20 -
 --e-star-unit GPa -o tile0.nc`` presses one tile of a measured scan in physical units (the same
 code as the Snakemake ``measured_surface`` and ``measured_indent`` rules) and writes the same
 NetCDF file.  ``roughcontact check-config config.yaml`` validates a sweep
-without running it; ``roughcontact list axes|models|claims`` prints what the registries hold.  Settings of ``indent`` not given on the command line come from ``--config``, else
+without running it; ``roughcontact list axes|models|area-models|claims|quantities`` prints what the registries hold.  Settings of ``indent`` not given on the command line come from ``--config``, else
 from the defaults of the configuration schema (the same defaults as a sweep's).
 """
 from __future__ import annotations
@@ -74,10 +74,12 @@ def build_parser() -> argparse.ArgumentParser:
     chk = sub.add_parser("check-config", help="validate a sweep config (exit 2 with one line if invalid)")
     chk.add_argument("config", help="YAML config file, e.g. config.yaml or presets/paper.yaml")
 
-    lst = sub.add_parser("list", help="the registered sweep axes, models, claims or per-load quantities, one per line",
+    lst = sub.add_parser("list", help="the registered sweep axes, models, area models, claims or per-load "
+                                      "quantities, one per line",
                          description="Print what a registry holds, one per line: axes (name, unit, paper value), "
-                                     "models (name, the optional axes it models, summary), claims (letter, "
-                                     "statement) or quantities (name, units, the key that turns it on, long name); "
+                                     "models (name, the optional axes it models, summary), area-models (name, "
+                                     "summary), claims (letter, statement) or quantities (name, units, the key "
+                                     "that turns it on, long name); "
                                      "--json: the same as a JSON list of objects.")
     lst.add_argument("registry", choices=REGISTRIES, help="which registry")
     lst.add_argument("--json", action="store_true", help="a JSON list of objects (name, and paper for axes)")
@@ -98,6 +100,8 @@ def _list(args) -> int:
             print(f"{item['name']}\tunit {item['unit']}\tpaper {paper}\t{item['role']}")
         elif args.registry == "models":
             print(f"{item['name']}\taxes {','.join(item['axes']) or '-'}\t{item['summary']}")
+        elif args.registry == "area-models":
+            print(f"{item['name']}\t{item['summary']}")
         elif args.registry == "quantities":
             print(f"{item['name']}\tunits {item['units']}\ton {item['option'] or 'every run'}\t{item['long_name']}")
         else:

@@ -1,9 +1,10 @@
 """What the study's registries hold, and the fingerprint of the code of what they register.
 
-:func:`listing` is what ``roughcontact list axes|models|claims|quantities`` prints: the registered
-sweep axes (:mod:`roughcontact.study.config.axes`), models of the scorecard
-(:mod:`roughcontact.models.scorecard`), claims (:mod:`roughcontact.study.claims`) and per-load
-quantities of a run (:mod:`roughcontact.study.quantities`), one record each.
+:func:`listing` is what ``roughcontact list axes|models|area-models|claims|quantities`` prints: the
+registered sweep axes (:mod:`roughcontact.study.config.axes`), models of the stiffness scorecard
+(:mod:`roughcontact.models.scorecard`), models of the area scorecard (:mod:`roughcontact.models.area`),
+claims (:mod:`roughcontact.study.claims`) and per-load quantities of a run
+(:mod:`roughcontact.study.quantities`), one record each.
 
 :func:`code_fingerprint` hashes the source of the modules an analysis rule runs, so that the
 workflow gives it as a ``params`` value: adding or changing a model, a claim or their code makes
@@ -22,14 +23,15 @@ from pathlib import Path
 __all__ = ["REGISTRIES", "listing", "code_fingerprint", "ANALYSIS_CODE"]
 
 #: the registries ``roughcontact list`` knows
-REGISTRIES = ("axes", "models", "claims", "quantities")
+REGISTRIES = ("axes", "models", "area-models", "claims", "quantities")
 
 #: the entry modules of each analysis rule, for :func:`code_fingerprint` (which follows their imports)
 ANALYSIS_CODE = {
     "models": ("roughcontact.study.report.scorecard", "roughcontact.study.report.measured",
                "roughcontact.study.analysis.measured_spectrum"),
     "claims": ("roughcontact.study.report.claims",),
-    "area": ("roughcontact.study.report.area",),
+    "area": ("roughcontact.study.rules.area",),
+    "histograms_figure": ("roughcontact.study.rules.histograms_figure",),
     "figures": ("roughcontact.study.report.figures",),
     "model_curves": ("roughcontact.study.rules.model_curves",),
     "summary": ("roughcontact.study.rules.summary",),
@@ -51,6 +53,7 @@ def listing(kind: str) -> list[dict]:
     - axes: ``name``, ``unit``, ``paper`` (the paper's setting; ``None``: a nullable axis's
       ``null``; required axes have none), ``optional``, ``role``, ``tag``, ``kinds``;
     - models: ``name``, ``axes`` (the optional axes it models), ``summary``, ``reference``;
+    - area-models: ``name``, ``summary``, ``reference``;
     - claims: ``name`` (its letter), ``statement``;
     - quantities: ``name``, ``units``, ``long_name``, ``dtype``, ``option`` (the configuration key
       that turns it on; ``None``: the run's kind), ``family``.
@@ -67,6 +70,10 @@ def listing(kind: str) -> list[dict]:
 
         return [{"name": m.name, "axes": list(getattr(m, "axes", ()) or ()), "summary": m.summary,
                  "reference": m.reference} for m in scorecard.models().values()]
+    if kind == "area-models":
+        from ..models import area
+
+        return [{"name": m.name, "summary": m.summary, "reference": m.reference} for m in area.models().values()]
     if kind == "claims":
         from .claims import claims
 

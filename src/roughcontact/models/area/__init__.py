@@ -43,7 +43,7 @@ class AreaModel:
 #: every registered area model, in registration order
 AREA_MODELS: dict[str, AreaModel] = {}
 #: the modules of the area models, in the order of the tables; further modules follow by name
-_ORDER = ("persson", "linear_hertz")
+_ORDER = ("persson", "linear_hertz", "three_regime")
 _loaded: list = []
 
 

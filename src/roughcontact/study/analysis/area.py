@@ -15,7 +15,8 @@ stiffness's rule (``fit.resolved_cells``): the area needs many cells per asperit
 
 Scorecard (:func:`area_scorecard`): per sphere combination and area model, over the area-resolved
 loads, ``max_rel_dev = max |A_model/A_BEM − 1|`` with its bootstrap-over-seeds interval, the rms of the
-same deviations, the mean deviation (systematic) below and above the area crossover
+same deviations, the mean deviation (systematic; each load weighted by the inverse variance of the
+ensemble mean there, as in the stiffness scorecard) below and above the area crossover
 :func:`~roughcontact.models.area.laws.area_crossover_force` with its interval and verdict on 0, the
 fraction of loads inside the ensemble's band, and the rank by ``rms_rel_dev``; a combination without
 an area-resolved load has one row per model saying why (``untested``). Areas in ``length²``, forces
@@ -33,7 +34,7 @@ from ...models.area.laws import SIMULATION_KAPPA, area_crossover_force
 from ..config.settings import StudySettings
 from .combination import combination, combo_label
 from .ensemble import combinations
-from .statistics import UNRESOLVED, bootstrap_indices, interval, untested, verdict
+from .statistics import UNRESOLVED, bootstrap_indices, interval, inverse_variance_weights, untested, verdict
 
 __all__ = ["AREA_TOLERANCE", "MIN_AREA_CELLS", "MEASURED_ON", "AreaContext", "cells_per_wavelength",
            "min_area_cells", "area_context", "area_scorecard", "AREA_COLUMNS"]
@@ -120,12 +121,15 @@ AREA_COLUMNS = ("model", "hurst", "radius", "h_rms", "combination", "max_rel_dev
 
 
 def _systematic(a_model, mean, a_boot, use, level) -> tuple:
-    """Mean of ``A_model/A_BEM − 1`` over the loads *use*, its bootstrap interval and verdict on 0."""
+    """Mean of ``A_model/A_BEM − 1`` over the loads *use*, each weighted by the inverse variance of
+    the ensemble mean there (:func:`~.statistics.inverse_variance_weights`, as the stiffness
+    scorecard's systematic deviation), its bootstrap interval and verdict on 0."""
     if not use.any():
         return math.nan, math.nan, math.nan, untested(UNRESOLVED, "no area-resolved load on this branch")
-    samples = (a_model[use] / a_boot[:, use] - 1).mean(-1)
-    low, high = interval(samples, level)
-    value = float((a_model[use] / mean[use] - 1).mean())
+    weight = inverse_variance_weights(a_boot, mean, use)
+    weight = weight / weight.sum()
+    low, high = interval((a_model[use] / a_boot[:, use] - 1) @ weight, level)
+    value = float(np.sum(weight * (a_model[use] / mean[use] - 1)))
     return value, low, high, verdict(0.0, low, high)
 
 

@@ -64,7 +64,7 @@ from ..runs import naming as runs
 from . import not_modelled as unmodelled
 from .combination import Combination, combination, combo_label
 from .ensemble import combinations, resolved
-from .statistics import bootstrap_indices, interval, verdict
+from .statistics import bootstrap_indices, interval, inverse_variance_weights, verdict
 from .crossover import NO_SPHERE
 from ..config.settings import StudySettings
 
@@ -89,13 +89,6 @@ def _crossover(c: Combination) -> float:
                  / (c["e_star"] * c["length"] ** 2))
 
 
-def _branch_weights(k_boot, k_mean, use) -> np.ndarray:
-    """The weight of each load *use* in a branch's mean: the inverse variance of the ensemble mean
-    there (its bootstrap, relative); loads without scatter weigh equally."""
-    relative = k_boot[:, use] / k_mean[use]
-    return 1.0 / np.maximum(relative.var(axis=0, ddof=1), np.finfo(float).eps ** 2)
-
-
 def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict:
     """The systematic deviation of a model on one branch: the mean of ``k_model/k_BEM − 1`` over the
     loads *use*, each weighted by the inverse variance of the ensemble mean there (its bootstrap),
@@ -105,7 +98,7 @@ def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict
     if use.sum() < 1:
         return {**dict.fromkeys(keys, math.nan), f"systematic_{branch}_verdict": "untested: no resolved load",
                 f"n_loads_{branch}": 0}
-    weight = _branch_weights(k_boot, k_mean, use)
+    weight = inverse_variance_weights(k_boot, k_mean, use)
     value = float(np.sum(weight * (k_model[use] / k_mean[use] - 1)) / weight.sum())
     low, high = interval((k_model[use] / k_boot[:, use] - 1) @ weight / weight.sum(), level)
     return {keys[0]: value, keys[1]: low, keys[2]: high, f"systematic_{branch}_verdict": verdict(0.0, low, high),
@@ -164,7 +157,7 @@ def _with_grid(dev, band, g, use, weight_use, k_boot, k_mean, systematic: dict) 
         if mask.sum() < 1:
             out.update({key: math.nan, f"systematic_{branch}_total_verdict": "untested: no resolved load"})
             continue
-        weight = _branch_weights(k_boot, k_mean, mask)
+        weight = inverse_variance_weights(k_boot, k_mean, mask)
         mean_g = float(np.sum(weight * g_abs[mask]) / weight.sum())
         low = systematic[f"systematic_{branch}_ci_low"] - mean_g
         high = systematic[f"systematic_{branch}_ci_high"] + mean_g

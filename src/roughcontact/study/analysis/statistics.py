@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 __all__ = ["BOOTSTRAP_SEED", "bootstrap_indices", "interval", "verdict", "verdict_bound", "judge", "untested",
-           "split_verdict", "log_log_slope", "UNTESTED_BECAUSE", "VERDICTS", "CONSISTENT", "DIFFERS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
+           "split_verdict", "log_log_slope", "inverse_variance_weights", "UNTESTED_BECAUSE", "VERDICTS", "CONSISTENT", "DIFFERS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
            "OUT_OF_RANGE", "NO_PREDICTION"]
 
 #: random state of every bootstrap (the paper's acceptance date)
@@ -121,6 +121,15 @@ def verdict_bound(bound: float, low: float, high: float, *, side: str) -> str:
 def bootstrap_indices(n_seeds: int, resamples: int, *, seed: int = BOOTSTRAP_SEED) -> np.ndarray:
     """``(resamples, n_seeds)`` seed indices drawn with replacement (fixed random state)."""
     return np.random.default_rng(seed).integers(0, n_seeds, size=(resamples, n_seeds))
+
+
+def inverse_variance_weights(boot: np.ndarray, mean: np.ndarray, use) -> np.ndarray:
+    """The weight of each load *use* in a branch's mean deviation (the stiffness and area
+    scorecards' systematic deviation): the inverse variance of the ensemble mean there, relative,
+    from its bootstrap *boot* ``(resample, load)`` over the ensemble mean *mean* ``(load,)``; loads
+    without scatter weigh equally (their variance is floored at ``eps²``)."""
+    relative = boot[:, use] / mean[use]
+    return 1.0 / np.maximum(relative.var(axis=0, ddof=1), np.finfo(float).eps ** 2)
 
 
 def interval(samples: np.ndarray, level: float) -> tuple[float, float]:

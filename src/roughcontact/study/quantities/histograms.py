@@ -7,7 +7,8 @@ At one load, the pressure is counted over the contact cells and the gap over the
 contact (where each is not 0), in ``bins`` equal bins from 0 to the largest value of that load: the
 counts sum to the contact cells and to the free cells, and a histogram over cells is one over area
 (every cell has the area ``(L/n)²``). The bins differ between runs and loads (their edges are
-kept with the counts), so the ensemble keeps no mean histogram.
+kept with the counts); the ensemble's mean is taken on common edges in normalized units by
+:func:`roughcontact.study.analysis.histograms.mean_histograms`.
 
 Closed forms that test it (``tests/test_histograms.py``): under Hertz's pressure
 ``p(r) = p₀ √(1 − r²/a²)`` (Hertz; K. L. Johnson, Contact Mechanics, 1985, §3.9) the share of the

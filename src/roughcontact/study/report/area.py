@@ -1,4 +1,5 @@
-"""The real contact area's page, table and figure (the ``area`` rule): the area scorecard of
+"""The real contact area's page, table and figure (drawn for the ``area`` rule,
+:mod:`roughcontact.study.rules.area`): the area scorecard of
 :func:`roughcontact.study.analysis.area.area_scorecard` as ``area/area_models.csv`` and its HTML page,
 and ``area/area.png``, the ensemble's ``A(F)`` of every sphere combination against Hertz's ``π a²``,
 the linear law (κ = 2) and Persson's area. Claims (u) and (v) on the area are rows of the claims table
@@ -17,7 +18,7 @@ from ..config.settings import StudySettings
 from .plotting import panel_grid, pyplot, save_png
 from .tables import write_html_table
 
-__all__ = ["NO_AREA", "area_lead", "area_figure", "run_area"]
+__all__ = ["NO_AREA", "area_lead", "area_figure", "no_area_figure"]
 
 log = logging.getLogger(__name__)
 
@@ -34,9 +35,10 @@ def area_lead() -> str:
             f"reach min_area_cells, measured for a {AREA_TOLERANCE:.0%} area error by the grid study, "
             f"{MEASURED_ON}, docs/guide/area.md), with its 95 % bootstrap-over-seeds interval; rms_rel_dev the rms "
             "of the same deviations, rank orders the models by it; systematic_low and systematic_high the mean "
-            "deviation below and above the area crossover F_A (crossover_force, F/(E* L^2), where 2 F/(E* h'_rms) "
-            "= pi a^2) with its interval and verdict on 0; inside_band the fraction of loads inside the "
-            "ensemble's band. A combination without an area-resolved load keeps one row per model whose note says "
+            "deviation (each load weighted by the inverse variance of the ensemble mean there) below and above "
+            "the area crossover F_A (crossover_force, F/(E* L^2), where 2 F/(E* h'_rms) = pi a^2) with its "
+            "interval and verdict on 0; inside_band the fraction of loads inside the ensemble's band. A "
+            "combination without an area-resolved load keeps one row per model whose note says "
             f"why. {summaries}. area_models.csv holds every digit.")
 
 
@@ -71,22 +73,10 @@ def area_figure(path, curves: dict, study) -> None:
     save_png(fig, path)
 
 
-def run_area(study, stiffness_nc, out_csv, out_html, out_png) -> None:
-    """``area`` rule: the merged runs -> area_models.csv, its HTML page and area.png."""
-    from ..files.io import read_groups, write_csv
-
-    groups = read_groups(stiffness_nc)
-    table, curves = area_scorecard(groups, study)
-    write_csv(table, out_csv, reason=NO_AREA)
-    write_html_table(table, out_html, title="Real contact area: model scorecard", lead=area_lead(),
-                     first=("model", "combination", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
-                            "rms_rel_dev", "n_loads", "min_area_cells", "note"))
-    if curves:
-        area_figure(out_png, curves, study)
-    else:
-        plt = pyplot()
-        fig, ax = plt.subplots(figsize=(4, 1.5))
-        ax.axis("off")
-        ax.text(0.5, 0.5, NO_AREA, ha="center", va="center", fontsize=8, wrap=True)
-        save_png(fig, out_png)
-    log.info("area scorecard:\n%s", table.to_string())
+def no_area_figure(path) -> None:
+    """A PNG saying why the sweep has no area figure (:data:`NO_AREA`)."""
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(4, 1.5))
+    ax.axis("off")
+    ax.text(0.5, 0.5, NO_AREA, ha="center", va="center", fontsize=8, wrap=True)
+    save_png(fig, path)
