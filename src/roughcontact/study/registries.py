@@ -26,14 +26,15 @@ REGISTRIES = ("axes", "models", "claims", "quantities")
 
 #: the entry modules of each analysis rule, for :func:`code_fingerprint` (which follows their imports)
 ANALYSIS_CODE = {
-    "models": ("roughcontact.study.report.scorecard", "roughcontact.study.report.measured",
-               "roughcontact.study.analysis.measured_spectrum"),
-    "claims": ("roughcontact.study.report.claims",),
+    "models": ("roughcontact.study.rules.models", "roughcontact.study.rules.measured_spectrum",
+               "roughcontact.study.rules.measured_scorecard"),
+    "claims": ("roughcontact.study.rules.claims",),
     "area": ("roughcontact.study.report.area",),
     "figures": ("roughcontact.study.report.figures",),
     "model_curves": ("roughcontact.study.rules.model_curves",),
     "summary": ("roughcontact.study.rules.summary",),
-    "grid_error": ("roughcontact.study.analysis.grid_error",),
+    "grid_error": ("roughcontact.study.rules.grid_error",),
+    "fine_reference": ("roughcontact.study.rules.fine_reference",),
 }
 
 

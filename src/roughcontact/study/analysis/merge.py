@@ -8,7 +8,6 @@ All forces in the tables are normalised, F/(E* L²); stiffnesses k/(E* L).
 from __future__ import annotations
 
 import dataclasses
-import logging
 
 import numpy as np
 
@@ -19,16 +18,12 @@ from ..config.axes import coordinate_attrs
 from ..config.units import study_units, to_metres
 from .conductance import conductance_variables
 from ..runs import naming as runs
-from .ensemble import ensemble
-from ..files.io import check_run, declaration, open_run, read_run, rerun_hint, stale, write_groups
+from ..files.io import check_run, declaration, open_run, read_run, rerun_hint, stale
 from ..runs.jobs import JobSettings, options_of, shared_settings
 from ..config.settings import StudySettings
 
 __all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "layout_of", "force_coords", "merge_runs", "place",
-           "read_declared", "run_merge", "with_units"]
-
-
-log = logging.getLogger(__name__)
+           "read_declared", "with_units"]
 
 
 # --------------------------------------------------------------------------
@@ -263,21 +258,3 @@ def with_units(ds, study: StudySettings):
         if "units" in ds[name].attrs:
             ds[name].attrs = {**ds[name].attrs, "units": study_units(str(ds[name].attrs["units"]), length, pressure)}
     return ds
-
-
-# --------------------------------------------------------------------------
-# entry points used by workflow/scripts
-# --------------------------------------------------------------------------
-def run_merge(study, run_files, out_stiffness, out_ensemble):
-    """``merge`` rule: run files -> stiffness.nc and ensemble.nc (one group per kind)."""
-    study = StudySettings.of(study)
-    groups = merge_runs(study, list(run_files))
-    attrs = provenance.provenance_attrs(
-        config=study.config, title="roughcontact parameter study: all runs",
-        layout="one group per surface kind (sphere, flat)", grid_n=study.grid.n, grid_length=study.grid.length,
-        e_star=study.e_star, solver_tol=study.solver.tol, stiffness_method=study.solver.stiffness,
-        seeds=list(study.seeds))
-    write_groups(out_stiffness, {kind: with_units(ds, study) for kind, ds in groups.items()}, attrs)
-    attrs["title"] = "roughcontact parameter study: ensemble statistics over seeds"
-    write_groups(out_ensemble, {kind: with_units(ensemble(ds), study) for kind, ds in groups.items()}, attrs)
-    log.info("merged %d runs (%s) into %s and %s", len(run_files), ", ".join(groups), out_stiffness, out_ensemble)
