@@ -143,13 +143,18 @@ def _closure(entries) -> set[Path]:
 
 def code_fingerprint(rule: str) -> str:
     """The SHA-256 (16 hex digits) of the source the analysis *rule* runs: its entry modules
-    (:data:`ANALYSIS_CODE`) and every ``roughcontact`` module they import, transitively (a
-    package with all the modules of its folder, so a new model or claim module counts), by path
-    relative to the package and content; ``ValueError`` for a rule it does not know."""
-    if rule not in ANALYSIS_CODE:
-        raise ValueError(f"no analysis rule {rule!r} to fingerprint; known: {', '.join(ANALYSIS_CODE)}")
+    (:data:`ANALYSIS_CODE`; a rule not listed there, e.g. one of ``workflow/rules/extra/``, its
+    module ``roughcontact.study.rules.<rule>``) and every ``roughcontact`` module they import,
+    transitively (a package with all the modules of its folder, so a new model or claim module
+    counts), by path relative to the package and content; ``ValueError`` for a rule with neither."""
+    entries = ANALYSIS_CODE.get(rule)
+    if entries is None and f"roughcontact.study.rules.{rule}" in _modules():
+        entries = (f"roughcontact.study.rules.{rule}",)
+    if entries is None:
+        raise ValueError(f"no analysis rule {rule!r} to fingerprint (known: {', '.join(ANALYSIS_CODE)}) and no "
+                         f"module roughcontact.study.rules.{rule}")
     digest = hashlib.sha256()
-    for path in sorted(_closure(ANALYSIS_CODE[rule])):
+    for path in sorted(_closure(entries)):
         digest.update(str(path.relative_to(PACKAGE)).encode())
         digest.update(b"\0")
         digest.update(path.read_bytes())
