@@ -15,7 +15,8 @@ import xarray as xr
 from roughcontact.errors import ConfigError, IndentError
 from roughcontact.study.config.resolve import load_config, resolve_config, study_settings
 from roughcontact.study.files import io as study_io
-from roughcontact.study.runs import indent, jobs, naming
+from roughcontact.study.rules import indent
+from roughcontact.study.runs import jobs, naming
 
 ROOT = Path(__file__).resolve().parents[1]
 TINY = ROOT / "presets/tiny.yaml"
@@ -46,7 +47,7 @@ def test_a_batch_writes_the_files_of_one_run_jobs(tmp_path):
     interpreter (`roughcontact indent`, what a one-run job runs): the same data, bit for bit."""
     pick, settings = _tiny_runs()
     batch = [tmp_path / f"batch{i}.nc" for i in range(len(pick))]
-    indent.run_batch(settings, batch, logs=[tmp_path / f"batch{i}.log" for i in range(len(pick))])
+    indent.run(settings, outputs=batch, logs=[tmp_path / f"batch{i}.log" for i in range(len(pick))])
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
     for i, run in enumerate(pick):
         alone = tmp_path / f"alone{i}.nc"
@@ -67,7 +68,7 @@ def test_a_failure_midway_leaves_the_finished_runs_valid_and_nothing_partial(tmp
     outputs = [tmp_path / f"run{i}.nc" for i in range(3)]
     logs = [tmp_path / f"run{i}.log" for i in range(3)]
     with pytest.raises(IndentError, match="did not converge") as info:
-        indent.run_batch(settings, outputs, logs=logs)
+        indent.run(settings, outputs=outputs, logs=logs)
     assert "seed = 0" in str(info.value) and "R = inf" in str(info.value), str(info.value)
     assert info.value.run_log == logs[1], "the failing run's log"
     assert "Traceback" in logs[1].read_text(), "the details in the log"
@@ -76,10 +77,10 @@ def test_a_failure_midway_leaves_the_finished_runs_valid_and_nothing_partial(tmp
         "only the finished run's file, nothing partial"
 
 
-def test_run_batch_refuses_unequal_lists(tmp_path):
+def test_the_indent_rule_refuses_unequal_lists(tmp_path):
     _, settings = _tiny_runs()
     with pytest.raises(ValueError, match="3 runs, 2 outputs"):
-        indent.run_batch(settings, [tmp_path / "a.nc", tmp_path / "b.nc"])
+        indent.run(settings, outputs=[tmp_path / "a.nc", tmp_path / "b.nc"])
 
 
 def test_seed_blocks_group_seeds_by_value():

@@ -61,5 +61,5 @@ def test_a_new_claim_module_keeps_the_other_fingerprints(changes, rule):
 def test_an_unknown_rule_is_named():
     from roughcontact.study.registries import code_fingerprint
 
-    with pytest.raises(ValueError, match="'merge'"):
-        code_fingerprint("merge")
+    with pytest.raises(ValueError, match="'no_such_rule'"):
+        code_fingerprint("no_such_rule")

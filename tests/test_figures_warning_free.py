@@ -27,8 +27,7 @@ FORCE = np.geomspace(1e-5, 1e-2, 8)
 @pytest.fixture(autouse=True)
 def warnings_are_errors(monkeypatch):
     """Every warning raised while a figure is drawn fails the test; the figures are not written."""
-    for module in (adhesion_figures, measured_figures):
-        monkeypatch.setattr(module, "save_png", lambda fig, path, **_: pyplot().close(fig))
+    monkeypatch.setattr(adhesion_figures, "save_png", lambda fig, path, **_: pyplot().close(fig))
     pyplot()   # matplotlib's own import-time warnings (a font cache, a backend) are not the figures'
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -118,7 +117,7 @@ def _pull_off_table():
 @pytest.mark.parametrize("empty", [False, True])
 def test_the_adhesion_figures_draw_without_a_warning(tmp_path, empty):
     table = _pull_off_table().iloc[:0] if empty else _pull_off_table()
-    adhesion_figures._pull_off(pyplot(), table, tmp_path / "p.png")
+    adhesion_figures.pull_off_figure(pyplot(), table, tmp_path / "p.png")
     seeds, retract = 2, 6
     axes = {"hurst": [0.7], "radius": [0.5], "h_rms": [1e-5], "work_of_adhesion": [1e-3]}
     dims = (*axes, "seed")
@@ -132,7 +131,7 @@ def test_the_adhesion_figures_draw_without_a_warning(tmp_path, empty):
                                       coords={**axes, "seed": np.arange(seeds), "force": FORCE})}
     rows = _pull_off_table()
     rows.loc[0, ["hurst", "h_rms"]] = [0.7, 1e-5]
-    adhesion_figures._paths(pyplot(), adhesion, stiffness, _study(work_of_adhesion=[1e-3]), tmp_path / "q.png", rows)
+    adhesion_figures.paths_figure(pyplot(), adhesion, stiffness, _study(work_of_adhesion=[1e-3]), tmp_path / "q.png", rows)
 
 
 def _scan(tiles_ci: bool):
@@ -181,6 +180,7 @@ def test_the_stickiness_figure_draws_without_a_warning(tmp_path, monkeypatch):
     """Two numbers N, two seeds: a sticky path (tension at small areas) and a non-sticky one."""
     from roughcontact.study.config.stickiness import StickinessSettings
     from roughcontact.study.report import stickiness
+    from roughcontact.study.rules import stickiness_figures
 
     monkeypatch.setattr(stickiness, "save_png", lambda fig, path, **_: pyplot().close(fig))
     sweep = StickinessSettings.of(config.resolve_config({
@@ -195,4 +195,4 @@ def test_the_stickiness_figure_draws_without_a_warning(tmp_path, monkeypatch):
         xr.Dataset({"contact_cells": ("step", cells), "force": ("step", force), "loading_slope": 0.5 + offset}).to_netcdf(
             path, engine="netcdf4")
         paths.append(path)
-    stickiness.run_stickiness_figures(sweep, paths, tmp_path / "loading.png")
+    stickiness_figures.run(sweep, runs=paths, loading=tmp_path / "loading.png")

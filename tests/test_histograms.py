@@ -214,13 +214,13 @@ def test_units_length_names_the_units_of_the_merged_variables():
 def test_the_merged_files_carry_the_configured_units(tmp_path):
     import xarray as xr
 
-    from roughcontact.study.analysis.merge import run_merge
+    from roughcontact.study.rules import merge
 
     cfg = resolve_config({**CONFIG, "units": {"length": "um"}, "fields": {"quantities": ["mean_gap"]}})
     job = jobs.job_settings(cfg, naming.runs(cfg)[0])
     path = tmp_path / "run.nc"
     indent.write_run(path, job, indent.compute_run(job))
-    run_merge(cfg, [path], tmp_path / "stiffness.nc", tmp_path / "ensemble.nc")
+    merge.run(cfg, runs=[path], stiffness=tmp_path / "stiffness.nc", ensemble=tmp_path / "ensemble.nc")
     with xr.open_dataset(tmp_path / "stiffness.nc", group="sphere") as ds, \
             xr.open_dataset(tmp_path / "ensemble.nc", group="sphere") as ens:
         units = (ds["contact_area"].attrs["units"], ds["mean_gap"].attrs["units"], ds["force"].attrs["units"],

@@ -155,3 +155,50 @@ def test_shared_settings_and_the_runs_own_make_its_job():
     row = naming.runs(study)[0]
     job = job_settings(study, row)
     assert {key: getattr(job, key) for key in shared_settings(study, job.kind)} == shared_settings(study, job.kind)
+
+
+#: one sliding sphere run (friction > 0: a partial-slip path at one load, 2 tangential steps), small
+SLIDING = {"grid": {"n": 33, "length": 1.0}, "hurst": [0.7], "radius": [0.5], "h_rms": [2e-3], "seeds": 1,
+           "forces": {"sphere": {"from": 1e-4, "to": 1e-3, "count": 3}}, "poisson": [0.3], "friction": [0.4],
+           "tangential": {"at": [1e-3], "steps": 2}}
+
+
+@pytest.fixture(scope="module")
+def sliding_run(tmp_path_factory):
+    """The run file of SLIDING, computed (``indent.compute_run``) and written as the indent rule does."""
+    from roughcontact.study.config.resolve import resolve_config
+    from roughcontact.study.runs import indent
+
+    study = study_settings(resolve_config(SLIDING))
+    job = job_settings(study, naming.runs(study)[0])
+    path = tmp_path_factory.mktemp("sliding") / "seed0.nc"
+    indent.write_run(path, job, indent.compute_run(job))
+    return path
+
+
+def test_a_sliding_run_of_the_current_settings_merges(sliding_run):
+    from roughcontact.study.analysis.merge import merge_runs
+    from roughcontact.study.config.resolve import resolve_config
+
+    groups = merge_runs(resolve_config(SLIDING), [sliding_run])
+    assert groups["sphere"].sizes["seed"] == 1
+
+
+def test_the_merge_names_a_sliding_runs_stale_slip_steps(sliding_run):
+    """tangential.steps 2 in the file, 3 now: the normal merge (not only the tangential one) stops
+    with one line naming slip_steps and both values."""
+    from roughcontact.study.analysis.merge import merge_runs
+    from roughcontact.study.config.resolve import resolve_config
+
+    with pytest.raises(MergeError, match=r"^[^\n]*seed0\.nc: was computed with other settings; differs in "
+                                         r"slip_steps: 2 in the file, 3 now; delete [^\n]*$"):
+        merge_runs(resolve_config({**SLIDING, "tangential": {"at": [1e-3], "steps": 3}}), [sliding_run])
+
+
+def test_the_merge_names_a_sliding_runs_stale_slip_loads(sliding_run):
+    """tangential.at moved from the last load (index 2) to the first (index 0)."""
+    from roughcontact.study.analysis.merge import merge_runs
+    from roughcontact.study.config.resolve import resolve_config
+
+    with pytest.raises(MergeError, match=r"differs in slip_loads: \[2\] in the file, \[0\] now"):
+        merge_runs(resolve_config({**SLIDING, "tangential": {"at": [1e-4], "steps": 2}}), [sliding_run])

@@ -73,7 +73,7 @@ def test_pull_off_figure_is_faceted(tmp_path, monkeypatch):
                           for h in hursts for j in (0.1, 1.0)])
     figures = []
     monkeypatch.setattr(adhesion_figures, "save_png", lambda fig, path: figures.append(fig))
-    adhesion_figures._pull_off(pyplot(), table, tmp_path / "pull_off.png")
+    adhesion_figures.pull_off_figure(pyplot(), table, tmp_path / "pull_off.png")
     (fig,) = figures
     try:
         drawn = [ax for ax in fig.axes if ax.get_legend() is not None]

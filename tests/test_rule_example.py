@@ -9,7 +9,7 @@ first lines say (no other edit: the Snakefile includes ``workflow/rules/extra/``
 ``results/resolved_loads.csv`` on request and rerun nothing; the claim copied in next makes the
 ``claims`` rule ask for that table, so that ``snakemake`` reruns the claims (no run, no merge) and
 ``claims.csv`` gains one row (y) per sphere combination, its value the table's, every other row
-as it was.
+as it was; an edit of the rule's module then plans the rule again (its code fingerprint) and no run.
 """
 from __future__ import annotations
 
@@ -122,6 +122,43 @@ def test_the_rule_example_passes_snakefmt():
     assert done.returncode == 0, done.stdout + done.stderr
 
 
+def _fingerprint(src: Path) -> str:
+    code = "from roughcontact.study.registries import code_fingerprint; print(code_fingerprint('resolved_loads'))"
+    done = subprocess.run([sys.executable, "-c", code], env={**os.environ, "PYTHONPATH": str(src)},
+                          capture_output=True, text=True, timeout=120, check=True)
+    return done.stdout.strip()
+
+
+@pytest.fixture(scope="module")
+def fingerprints(tmp_path_factory):
+    """The rule's code fingerprint (its params' ``code``) in a scratch copy of the package with the
+    rule's module copied in: as copied, after an edit of the module, after an edit of a module the
+    rule does not import (the claims' page)."""
+    src = tmp_path_factory.mktemp("fingerprint") / "src"
+    shutil.copytree(ROOT / "src", src, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    module = src / target_of(EXAMPLES / "rule_example.py").relative_to("src")
+    shutil.copy(EXAMPLES / "rule_example.py", module)
+    steps = [_fingerprint(src)]
+    module.write_text(module.read_text() + "\n# edited\n")
+    steps.append(_fingerprint(src))
+    page = src / "roughcontact" / "study" / "report" / "claims.py"
+    page.write_text(page.read_text() + "\n# edited\n")
+    steps.append(_fingerprint(src))
+    return steps
+
+
+def test_the_rule_passes_its_modules_fingerprint():
+    assert 'code=code_fingerprint("resolved_loads")' in (EXAMPLES / "rule_example.smk").read_text()
+
+
+def test_an_edit_of_the_rules_module_changes_its_fingerprint(fingerprints):
+    assert fingerprints[1] != fingerprints[0], fingerprints
+
+
+def test_an_edit_of_a_module_it_does_not_import_keeps_its_fingerprint(fingerprints):
+    assert fingerprints[2] == fingerprints[1], fingerprints
+
+
 # ------------------------------------------------------------------------------------------------
 # end to end, in a scratch copy of the checkout
 # ------------------------------------------------------------------------------------------------
@@ -155,8 +192,9 @@ def _copy_in(where: Path, example: str) -> None:
 @pytest.fixture(scope="module")
 def scratch(tmp_path_factory):
     """The study BASE run in a scratch checkout without the examples; then the rule's files copied
-    in (a dry run, the table made), then the claim (a dry run, the study run again). Yields the
-    directory, the run files and claims.csv of the first study, and the two dry runs' texts."""
+    in (a dry run, the table made), then the claim (a dry run, the study run again), then an edit of
+    the rule's module (a dry run). Yields the directory, the run files and claims.csv of the first
+    study, and the three dry runs' texts."""
     examples = {ROOT / target_of(EXAMPLES / name) for name in (*RULE_FILES, CLAIM)}
     where = tmp_path_factory.mktemp("rule")
     ignore = (lambda folder, names: {n for n in names if n == "__pycache__" or n.endswith(".egg-info")
@@ -174,6 +212,9 @@ def scratch(tmp_path_factory):
     _copy_in(where, CLAIM)
     planned["claim"] = _snakemake(where, "-n")
     _snakemake(where, "-q")
+    module = where / target_of(EXAMPLES / "rule_example.py")
+    module.write_text(module.read_text() + "\n# edited\n")
+    planned["edit"] = _snakemake(where, "-n")
     return where, runs, claims, planned
 
 
@@ -210,6 +251,13 @@ def test_the_rules_table_counts_the_merged_runs_resolved_loads(scratch):
 def test_the_claim_reruns_the_claims_and_no_run(scratch):
     planned = scratch[3]["claim"]
     assert "claims" in planned and "indent" not in planned and "merge " not in planned, planned[-2000:]
+
+
+@workflow
+def test_an_edit_of_the_rules_module_reruns_the_rule_and_no_run(scratch):
+    """Its params carry its module's fingerprint: no --forcerun needed."""
+    planned = scratch[3]["edit"]
+    assert "resolved_loads" in planned and "indent" not in planned, planned[-2000:]
 
 
 @workflow

@@ -114,13 +114,14 @@ def test_the_run_file_records_the_runs_settings_and_their_hash(tmp_path, monkeyp
     """config and config_hash of a stickiness run file are those of its StickinessRun (the
     loading path itself replaced by a stub: what is written, not what is solved)."""
     import roughcontact.study.runs.stickiness as run_module
+    from roughcontact.study.rules import stickiness_run as rule
 
     s = _settings(hurst=[0.8], number=[0.5], steps=8)
     run = s.job("H0.8_N0.5", 0)
     stub = {"depth": np.zeros(2), "force": np.zeros(2), "contact_cells": np.zeros(2, int), "zone_cells": np.zeros(2, int),
             **{name: 0.5 for name in runfile.STICKINESS_SCALARS}}
     monkeypatch.setattr(run_module, "stickiness_run", lambda r: stub)
-    run_module.run_stickiness_job(run, tmp_path / "r.nc")
+    rule.run(run, output=tmp_path / "r.nc")
     with xr.open_dataset(tmp_path / "r.nc") as ds:
         assert json.loads(ds.attrs["config"]) == run.record()
         assert ds.attrs["config_hash"] == provenance.config_hash(run.record())
@@ -239,7 +240,7 @@ def test_the_table_has_the_mean_slope_inside_its_interval(tmp_path):
 def test_the_merged_files_record_the_sweep_not_the_configuration(tmp_path):
     """stickiness.nc's config and config_hash are the sweep's (StickinessSettings.record): another
     generated seed does not change them; the table's rows are those of merge_stickiness."""
-    from roughcontact.study.analysis.stickiness import run_stickiness_merge
+    from roughcontact.study.rules import stickiness
 
     s = _settings(number=[0.5], seeds=2, steps=8)
     assert StickinessSettings.of(s) is s, "typed settings are returned unchanged"
@@ -247,7 +248,7 @@ def test_the_merged_files_record_the_sweep_not_the_configuration(tmp_path):
                                                                                       "steps": 8}}))
     assert other.record() == s.record(), "the generated study's seeds are no setting of the sweep"
     paths = _write_runs(tmp_path, s, {(0.8, 0.5): [-0.1, -0.2]})
-    run_stickiness_merge(s, paths, tmp_path / "m.nc", tmp_path / "m.csv")
+    stickiness.run(s, runs=paths, nc=tmp_path / "m.nc", csv=tmp_path / "m.csv", html=tmp_path / "m.html")
     with xr.open_dataset(tmp_path / "m.nc") as ds:
         assert json.loads(ds.attrs["config"]) == json.loads(provenance.canonical_json(s.record()))
         assert ds.attrs["config_hash"] == provenance.config_hash(s.record())
@@ -348,6 +349,7 @@ def test_a_cohesive_failure_names_the_run_and_its_approach(monkeypatch):
     """The solver fails after two approaches: IndentError naming the run, approach 3/steps and
     what to change (the cohesive path replaced by a stub that fails)."""
     import roughcontact.study.runs.stickiness as run_module
+    from roughcontact.study.rules import stickiness_run as rule
     from roughcontact.errors import ConvergenceError, IndentError
 
     def failing(z, depths, *, on_state, **kwargs):

@@ -124,7 +124,7 @@ rule fine_reference:
         "../../envs/roughcontact.yaml"
     params:
         cfg=config,
-        code=CODE["grid_error"],  # the estimate's rule and constants
+        code=CODE["fine_reference"],  # the reference's and the estimate's rule and constants
     script:
         "../scripts/fine_reference.py"
 

@@ -1,8 +1,9 @@
 """Snakemake `adhesion_figures` job: adhesion.nc, stiffness.nc, pull_off.csv -> the two adhesion figures."""
-from roughcontact.study.report.adhesion import make_adhesion_figures
 from roughcontact.study.files.logs import log_to
+from roughcontact.study.rules import adhesion_figures
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    make_adhesion_figures(snakemake.params.cfg, snakemake.input.adhesion, snakemake.input.stiffness,
-                          snakemake.input.pull_off, snakemake.output.paths, snakemake.output.pull_off)
+    adhesion_figures.run(snakemake.params.cfg, adhesion=snakemake.input.adhesion, stiffness=snakemake.input.stiffness,
+                         pull_off=snakemake.input.pull_off, out_paths=snakemake.output.paths,
+                         out_pull_off=snakemake.output.pull_off)

@@ -1,8 +1,8 @@
 """Snakemake `measured_scorecard` job: every model against the tiles of one scan (CSV and report page)."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.report.measured import run_measured_scorecard
+from roughcontact.study.rules import measured_scorecard
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    run_measured_scorecard(snakemake.params.cfg, snakemake.wildcards.topo, snakemake.input.merged,
-                           snakemake.input.spectrum, snakemake.output.csv, snakemake.output.html)
+    measured_scorecard.run(snakemake.params.cfg, snakemake.wildcards.topo, merged=snakemake.input.merged,
+                           spectrum=snakemake.input.spectrum, csv=snakemake.output.csv, html=snakemake.output.html)

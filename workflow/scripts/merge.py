@@ -1,7 +1,8 @@
-"""Snakemake `merge` job: all run files -> results/stiffness.nc, results/ensemble.nc (a group per surface kind)."""
+"""Snakemake `merge` (`merge_coarse`, `merge_fine`) job: all run files -> stiffness.nc, ensemble.nc (a group per surface kind)."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.analysis.merge import run_merge
+from roughcontact.study.rules import merge
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    run_merge(snakemake.params.cfg, snakemake.input.runs, snakemake.output.stiffness, snakemake.output.ensemble)
+    merge.run(snakemake.params.cfg, runs=snakemake.input.runs, stiffness=snakemake.output.stiffness,
+              ensemble=snakemake.output.ensemble)

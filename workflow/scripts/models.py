@@ -1,11 +1,10 @@
 """Snakemake `models` job: stiffness + zeta (+ grid error) -> results/models.csv, .nc, .html and one figure per sphere combination."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.report.scorecard import run_models
+from roughcontact.study.rules import models
 
 snakemake = globals()["snakemake"]
+inputs, out = snakemake.input, snakemake.output
 with log_to(snakemake.log[0]):
-    run_models(snakemake.params.cfg, snakemake.input.stiffness, snakemake.input.zeta, snakemake.output.csv,
-               snakemake.output.nc, snakemake.output.html, list(snakemake.output.figures),
-               grid_error_csv=snakemake.input.grid_error or None,
-               fine_reference_csv=snakemake.input.fine_reference or None,
-               model_curves_nc=snakemake.input.model_curves)
+    models.run(snakemake.params.cfg, stiffness=inputs.stiffness, zeta=inputs.zeta, csv=out.csv, nc=out.nc,
+               html=out.html, figures=list(out.figures), grid_error=inputs.grid_error or None,
+               fine_reference=inputs.fine_reference or None, model_curves=inputs.model_curves)

@@ -1,8 +1,8 @@
 """Snakemake `tangential` job: run files, crossover.csv -> tangential.nc, tangential.csv and its page."""
-from roughcontact.study.report.tangential import run_tangential
 from roughcontact.study.files.logs import log_to
+from roughcontact.study.rules import tangential
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    run_tangential(snakemake.params.cfg, snakemake.input.runs, snakemake.input.crossover, snakemake.output.nc,
-                   snakemake.output.csv, snakemake.output.html)
+    tangential.run(snakemake.params.cfg, runs=snakemake.input.runs, crossover=snakemake.input.crossover,
+                   nc=snakemake.output.nc, csv=snakemake.output.csv, html=snakemake.output.html)

@@ -1,4 +1,4 @@
-# module: roughcontact.study.analysis.resolved_loads
+# module: roughcontact.study.rules.resolved_loads
 """The resolved loads of every sphere combination (``resolved_loads.csv``, the rule
 ``resolved_loads`` of ``workflow/rules/extra/resolved_loads.smk``): how many loads of its path are
 resolved, the smallest of them and where it lies against eq. 17's crossover force.
@@ -7,7 +7,8 @@ A load is resolved where its ensemble-mean contact has at least ``fit.resolved_c
 (:func:`roughcontact.study.analysis.ensemble.resolved`, the rule every fit of the study applies);
 the crossover force is eq. 17 of Pohrt & Popov (2013) with ζ = 1.7/(H+1) (eq. 13,
 :func:`roughcontact.models.paper.crossover_force`). Forces are normalised, F/(E* L²). The rule's
-entry point is :func:`run_resolved_loads`, its script ``workflow/scripts/resolved_loads.py``.
+entry point is :func:`run`, its script ``workflow/scripts/resolved_loads.py``; the rule's
+``params`` carry the fingerprint of this module's code, so that an edit of it reruns the rule.
 """
 from __future__ import annotations
 
@@ -17,10 +18,10 @@ import math
 import numpy as np
 
 from ...models import paper
+from ..analysis.ensemble import combinations, resolved
 from ..config.settings import StudySettings
-from .ensemble import combinations, resolved
 
-__all__ = ["RESOLVED_COLUMNS", "NO_SPHERE_ROW", "resolved_loads_table", "run_resolved_loads"]
+__all__ = ["RESOLVED_COLUMNS", "NO_SPHERE_ROW", "resolved_loads_table", "run"]
 
 log = logging.getLogger(__name__)
 
@@ -58,16 +59,17 @@ def resolved_loads_table(sphere, study: StudySettings):
     return pd.DataFrame(rows)
 
 
-def run_resolved_loads(study, stiffness_nc, out_csv) -> None:
-    """``resolved_loads`` rule: stiffness.nc -> resolved_loads.csv."""
+def run(cfg, *, stiffness, csv) -> None:
+    """``resolved_loads`` rule: the merged runs *stiffness* (``stiffness.nc``) of the resolved
+    configuration *cfg* -> *csv* (``resolved_loads.csv``, a header and its reason without a sphere)."""
     from ..files.io import read_groups, write_csv
 
-    study = StudySettings.of(study)
-    sphere = read_groups(stiffness_nc).get("sphere")
+    study = StudySettings.of(cfg)
+    sphere = read_groups(stiffness).get("sphere")
     table = resolved_loads_table(sphere, study) if sphere is not None else None
     if table is None:
         import pandas as pd
 
         table = pd.DataFrame()
-    write_csv(table, out_csv, columns=RESOLVED_COLUMNS, reason=NO_SPHERE_ROW)
-    log.info("resolved loads of %d sphere combinations written to %s", len(table), out_csv)
+    write_csv(table, csv, columns=RESOLVED_COLUMNS, reason=NO_SPHERE_ROW)
+    log.info("resolved loads of %d sphere combinations written to %s", len(table), csv)

@@ -1,7 +1,7 @@
 # file: workflow/rules/extra/resolved_loads.smk
 # The resolved loads of every sphere combination: a rule of your own. The Snakefile includes
-# every file of workflow/rules/extra/; its entry point is one function of the package
-# (roughcontact.study.analysis.resolved_loads.run_resolved_loads), called by its thin script.
+# every file of workflow/rules/extra/; its entry point is the run function of the package's module
+# named after it (roughcontact.study.rules.resolved_loads.run), called by its thin script.
 
 
 rule resolved_loads:
@@ -15,5 +15,6 @@ rule resolved_loads:
         "../../../envs/roughcontact.yaml"
     params:
         cfg=config,
+        code=code_fingerprint("resolved_loads"),  # its module's code: an edit reruns the rule
     script:
         "../../scripts/resolved_loads.py"

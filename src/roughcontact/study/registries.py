@@ -27,15 +27,16 @@ REGISTRIES = ("axes", "models", "area-models", "claims", "quantities")
 
 #: the entry modules of each analysis rule, for :func:`code_fingerprint` (which follows their imports)
 ANALYSIS_CODE = {
-    "models": ("roughcontact.study.report.scorecard", "roughcontact.study.report.measured",
-               "roughcontact.study.analysis.measured_spectrum"),
-    "claims": ("roughcontact.study.report.claims",),
+    "models": ("roughcontact.study.rules.models", "roughcontact.study.rules.measured_spectrum",
+               "roughcontact.study.rules.measured_scorecard"),
+    "claims": ("roughcontact.study.rules.claims",),
     "area": ("roughcontact.study.rules.area",),
     "histograms_figure": ("roughcontact.study.rules.histograms_figure",),
     "figures": ("roughcontact.study.report.figures",),
     "model_curves": ("roughcontact.study.rules.model_curves",),
     "summary": ("roughcontact.study.rules.summary",),
-    "grid_error": ("roughcontact.study.analysis.grid_error",),
+    "grid_error": ("roughcontact.study.rules.grid_error",),
+    "fine_reference": ("roughcontact.study.rules.fine_reference",),
 }
 
 
@@ -149,13 +150,18 @@ def _closure(entries) -> set[Path]:
 
 def code_fingerprint(rule: str) -> str:
     """The SHA-256 (16 hex digits) of the source the analysis *rule* runs: its entry modules
-    (:data:`ANALYSIS_CODE`) and every ``roughcontact`` module they import, transitively (a
-    package with all the modules of its folder, so a new model or claim module counts), by path
-    relative to the package and content; ``ValueError`` for a rule it does not know."""
-    if rule not in ANALYSIS_CODE:
-        raise ValueError(f"no analysis rule {rule!r} to fingerprint; known: {', '.join(ANALYSIS_CODE)}")
+    (:data:`ANALYSIS_CODE`; a rule not listed there, e.g. one of ``workflow/rules/extra/``, its
+    module ``roughcontact.study.rules.<rule>``) and every ``roughcontact`` module they import,
+    transitively (a package with all the modules of its folder, so a new model or claim module
+    counts), by path relative to the package and content; ``ValueError`` for a rule with neither."""
+    entries = ANALYSIS_CODE.get(rule)
+    if entries is None and f"roughcontact.study.rules.{rule}" in _modules():
+        entries = (f"roughcontact.study.rules.{rule}",)
+    if entries is None:
+        raise ValueError(f"no analysis rule {rule!r} to fingerprint (known: {', '.join(ANALYSIS_CODE)}) and no "
+                         f"module roughcontact.study.rules.{rule}")
     digest = hashlib.sha256()
-    for path in sorted(_closure(ANALYSIS_CODE[rule])):
+    for path in sorted(_closure(entries)):
         digest.update(str(path.relative_to(PACKAGE)).encode())
         digest.update(b"\0")
         digest.update(path.read_bytes())

@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from ...errors import MergeError
-from ..files import provenance, runfile
+from ..files import runfile
 from ..config.axes import coordinate_attrs
 from ..runs import naming as runs
 from .ensemble import combinations
@@ -42,7 +42,7 @@ from ..runs.jobs import job_settings
 from .statistics import bootstrap_indices, interval
 from ..config.settings import StudySettings
 
-__all__ = ["adhesive_runs", "merge_adhesion", "pull_off_table", "run_adhesion", "method_error", "resolved",
+__all__ = ["adhesive_runs", "merge_adhesion", "pull_off_table", "method_error", "resolved",
            "RESOLVED_ERROR", "RESOLVED_CELLS", "ERROR_CELLS", "METHOD_ERRORS"]
 
 #: the detachment criterion's pull-off over JKR's minus 1 at JKR's pull-off radius of 10, 20, 40 and 80
@@ -151,16 +151,3 @@ def pull_off_table(groups: dict, study):
             row["resolved"] = bool(row["method_error"] <= RESOLVED_ERROR)
             rows.append(row)
     return pd.DataFrame(rows)
-
-
-def run_adhesion(study, run_files, out_nc, out_csv) -> None:
-    """``adhesion`` rule: the adhesive run files -> ``adhesion.nc`` (one group per kind) and
-    ``pull_off.csv``."""
-    from ..files.io import write_csv, write_groups
-
-    study = StudySettings.of(study)
-    groups = merge_adhesion(study, list(run_files))
-    write_groups(out_nc, groups, provenance.provenance_attrs(
-        config=study.config, title="roughcontact adhesive runs: retract paths and pull-off",
-        forces="e_star * length**2 (pull_off.csv: F/(E* L^2))"))
-    write_csv(pull_off_table(groups, study), out_csv)

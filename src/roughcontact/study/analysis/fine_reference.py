@@ -28,17 +28,12 @@ Forces ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
 """
 from __future__ import annotations
 
-import logging
-
 import numpy as np
 
-from ..config.settings import StudySettings
 from ..runs import naming as runs
-from .grid_error import empty_reason, grid_error, richardson
+from .grid_error import grid_error, richardson
 
-__all__ = ["SINGLE_ASPERITY_SHARE", "fine_reference", "combined_grid_error", "run_fine_reference"]
-
-log = logging.getLogger(__name__)
+__all__ = ["SINGLE_ASPERITY_SHARE", "fine_reference", "combined_grid_error"]
 
 #: a load is in the single-asperity regime when the largest contact patch holds at least this share
 #: of the contact cells on the fine grid (mean over seeds)
@@ -130,27 +125,3 @@ def combined_grid_error(coarse, fine):
     for column in ("grid_error_estimate", "grid_error"):
         merged[column] = np.where(np.isfinite(merged[f"{column}_fine"]), merged[f"{column}_fine"], merged[column])
     return pd.DataFrame(merged.drop(columns=["grid_error_estimate_fine", "grid_error_fine"]))
-
-
-def run_fine_reference(study, stiffness_nc, fine_nc, out_csv, coarse_nc=None) -> None:
-    """``fine_reference`` rule: the study's ``stiffness.nc``, its fine companion's (and coarse
-    companion's, *coarse_nc*) -> ``fine_reference.csv``."""
-    from ..files.io import read_groups, write_csv
-
-    study = StudySettings.of(study)
-    fit = study.fit
-    groups, fine = read_groups(stiffness_nc), read_groups(fine_nc)
-    reason = empty_reason(groups, fine)
-    if reason:
-        import pandas as pd
-
-        table = pd.DataFrame(columns=[*runs.AXES["sphere"], *FINE_REFERENCE_COLUMNS])
-    else:
-        coarse = read_groups(coarse_nc)["sphere"] if coarse_nc else None
-        table = fine_reference(groups["sphere"], fine["sphere"], coarse, n=study.grid.n, n_fine=study.grid.fine,
-                               n_coarse=study.grid.coarse, min_cells=fit.resolved_cells, bootstrap=fit.bootstrap,
-                               confidence=fit.confidence)
-    write_csv(table, out_csv, reason=reason)
-    log.info("fine reference on %d²: %d loads of %d sphere combinations; single-asperity loads: %d", study.grid.fine,
-             len(table), len(table.groupby([c for c in ("hurst", "radius", "h_rms") if c in table])) if len(table) else 0,
-             int(table["single_asperity"].sum()) if len(table) else 0)

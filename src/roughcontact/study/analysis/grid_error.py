@@ -52,10 +52,9 @@ from ...errors import MergeError
 
 from .ensemble import combinations, resolved
 from ..config.settings import StudySettings
-from ..runs import naming as runs
 from .statistics import bootstrap_indices, interval
 
-__all__ = ["grid_error", "richardson", "estimate", "run_grid_error", "run_study_grid_error", "GRID_ERROR_FRACTION",
+__all__ = ["grid_error", "richardson", "estimate", "run_grid_error", "GRID_ERROR_FRACTION",
            "GRID_ERROR_ORDER", "GRID_ERROR_SAFETY"]
 
 #: a load is resolved when its grid error is at most this fraction of the finer ensemble's band
@@ -167,24 +166,6 @@ def grid_error(coarse, fine, *, min_cells: int, bootstrap: int, confidence: floa
                          "cell_resolved": bool(resolved(cells_c[j], min_cells)),
                          "grid_resolved": bool(bound <= fraction * band)})
     return pd.DataFrame(rows)
-
-
-def run_study_grid_error(study, fine_nc, coarse_nc, out_csv) -> None:
-    """``grid_error`` rule: the study's ``stiffness.nc`` (*fine_nc*) against its companion's on
-    ``grid.coarse`` (*coarse_nc*, the same surfaces) -> ``grid_error.csv`` (an empty table without
-    sphere runs), with the study's fit windows (``fit``)."""
-    import pandas as pd
-
-    from ..files.io import read_groups, write_csv
-
-    study = StudySettings.of(study)
-    fit = study.fit
-    fine, coarse = read_groups(fine_nc), read_groups(coarse_nc)
-    reason = empty_reason(fine, coarse)
-    table = (pd.DataFrame(columns=[*runs.AXES["sphere"], *GRID_ERROR_COLUMNS]) if reason else
-             grid_error(coarse["sphere"], fine["sphere"], min_cells=fit.resolved_cells, bootstrap=fit.bootstrap,
-                        confidence=fit.confidence, ratio=study.grid.n / study.grid.coarse))
-    write_csv(table, out_csv, reason=reason)
 
 
 def empty_reason(fine: dict, coarse: dict) -> str | None:

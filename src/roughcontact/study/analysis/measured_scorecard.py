@@ -1,7 +1,7 @@
 """The measured scorecard: every model of the registry against the tiles of one scan.
 
 For each kind (sphere radii, the flat tile) and model of :mod:`roughcontact.models.scorecard`
-(the predictions of :func:`roughcontact.study.analysis.measured_spectrum.run_spectrum`), over the
+(the predictions of :func:`roughcontact.study.analysis.measured_spectrum.spectrum_groups`), over the
 resolved loads (mean contact cells over the tiles ≥ ``fit.resolved_cells``, the study's one
 rule :func:`roughcontact.study.analysis.ensemble.resolved`) where the model has a value:
 
@@ -96,7 +96,7 @@ def range_note(table, spectrum_attrs) -> str:
 def measured_scorecard(merged: dict, predicted: dict, *, name: str, min_cells: int, fit=None):
     """One row per (kind, radius, model) of a scan: *merged* the groups of
     :func:`roughcontact.study.analysis.measured_merge.merge_surface`, *predicted* those of
-    :func:`roughcontact.study.analysis.measured_spectrum.run_spectrum` (the ``sphere`` and ``flat`` groups);
+    :func:`roughcontact.study.analysis.measured_spectrum.spectrum_groups` (the ``sphere`` and ``flat`` groups);
     *fit*: the bootstrap's settings (:class:`~roughcontact.study.config.settings.ZetaFitSettings`,
     ``bootstrap`` and ``confidence``) for the intervals over tiles (``None``: NaN intervals)."""
     import pandas as pd

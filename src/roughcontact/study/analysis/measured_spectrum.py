@@ -1,7 +1,7 @@
 """The spectrum of a measured scan, its self-affine fit and the models' predictions of k(F).
 
-What the ``measured_spectrum`` rule runs per scan: :func:`roughcontact.surfaces.spectrum_fit.fit_spectrum`
-over the scan's tiles (Hann window, each tile levelled; intervals a bootstrap over the tiles;
+What the ``measured_spectrum`` rule (:mod:`roughcontact.study.rules.measured_spectrum`) computes per
+scan (:func:`spectrum_groups`): :func:`roughcontact.surfaces.spectrum_fit.fit_spectrum` over the scan's tiles (Hann window, each tile levelled; intervals a bootstrap over the tiles;
 band ``fit.spectrum.band``, wavelengths in ``units.length``, default L/2 to 8 cells of a tile),
 and :func:`roughcontact.study.analysis.measured_models.predict` at the forces of the measured runs, with
 the measured rms height of the tiles (``fit.h_rms``: a measured scan rolls off, so the power
@@ -21,12 +21,11 @@ import math
 import numpy as np
 
 from ...models.scorecard import models
-from ..files import provenance
 from ..config.measured import to_metres, to_pascals
 from ..runs.naming import kind_of
 from ..config.settings import StudySettings
 
-__all__ = ["fit_scan", "run_spectrum"]
+__all__ = ["fit_scan", "spectrum_groups"]
 
 logger = logging.getLogger(__name__)
 
@@ -68,13 +67,14 @@ def _fit_row(name: str, fit, unit: str) -> dict:
     return row
 
 
-def run_spectrum(study, name: str, surface_file, out_csv, out_nc) -> None:
-    """``measured_spectrum`` rule: the fit of one scan (CSV) and the models' k(F) (NetCDF)."""
-    import pandas as pd
+def spectrum_groups(study, name: str, surface_file) -> tuple[dict, dict]:
+    """The fit of the scan *name* (the file *surface_file* of
+    :func:`roughcontact.study.runs.measured.prepare_surface`) and the models' k(F) at the forces of
+    its runs: ``(groups, row)``, *groups* the NetCDF groups of the module docstring
+    (``spectrum``, ``sphere``, ``flat``; stiffness in N/m, force in N), *row* the CSV's one row."""
     import xarray as xr
 
     from . import measured_models
-    from ..files.io import write_csv, write_groups
 
     study = StudySettings.of(study)
     fit, length, tile = fit_scan(study, surface_file)
@@ -119,7 +119,4 @@ def run_spectrum(study, name: str, surface_file, out_csv, out_nc) -> None:
             ds = ds.assign_coords(radius=("radius", radii, {"long_name": "sphere radius R", "units": unit}))
             ds["crossover_force"] = ("radius", crossover, {"long_name": "eq. 17 crossover force", "units": "N"})
         groups[kind] = ds
-    attrs = provenance.provenance_attrs(config=study.config, title=f"roughcontact measured spectrum and models: {name}",
-                                        h_rms_models="measured h_rms of the tiles")
-    write_groups(out_nc, groups, attrs)
-    write_csv(pd.DataFrame([_fit_row(name, fit, unit)]), out_csv)
+    return groups, _fit_row(name, fit, unit)

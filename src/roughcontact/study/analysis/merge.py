@@ -8,7 +8,6 @@ All forces in the tables are normalised, F/(E* L²); stiffnesses k/(E* L).
 from __future__ import annotations
 
 import dataclasses
-import logging
 
 import numpy as np
 
@@ -19,16 +18,12 @@ from ..config.axes import coordinate_attrs
 from ..config.units import study_units, to_metres
 from .conductance import conductance_variables
 from ..runs import naming as runs
-from .ensemble import ensemble
-from ..files.io import check_run, declaration, open_run, read_run, rerun_hint, stale, write_groups
-from ..runs.jobs import JobSettings, options_of, shared_settings
+from ..files.io import check_run, declaration, open_run, read_run, rerun_hint, stale
+from ..runs.jobs import JobSettings, options_of, shared_settings, slides, slip_path
 from ..config.settings import StudySettings
 
 __all__ = ["KindLayout", "Gathered", "gather", "kind_layouts", "layout_of", "force_coords", "merge_runs", "place",
-           "read_declared", "run_merge", "with_units"]
-
-
-log = logging.getLogger(__name__)
+           "read_declared", "with_units"]
 
 
 # --------------------------------------------------------------------------
@@ -163,7 +158,7 @@ def _generated_value(ds, name):
     return ds["stiffness"].values if name == "loading_stiffness" else np.zeros(ds.sizes["force"])
 
 
-def read_declared(path, row: dict, shared: dict):
+def read_declared(path, row: dict, shared: dict, slip: dict | None = None):
     """Read the run file *path* of the run *row* (a dict of :func:`runs.runs`) and check it against
     its own declaration, then the declaration against the study: the merge's reader.
 
@@ -173,7 +168,9 @@ def read_declared(path, row: dict, shared: dict):
     (its quantities, the retract path of an adhesive run, the partial-slip path of a sliding
     one: :func:`roughcontact.study.files.io.check_run`). Its surface and seed must be those of
     its name (*row*), and its other settings the study's for its surface kind, *shared*
-    (:func:`~roughcontact.study.runs.jobs.shared_settings`, computed once per kind).
+    (:func:`~roughcontact.study.runs.jobs.shared_settings`, computed once per kind), and its
+    partial-slip path the run's, *slip* (:func:`~roughcontact.study.runs.jobs.slip_path`; ``None``:
+    a run that does not slide).
 
     Returns ``(ds, kept)``: the run, loaded, and the names of the per-load quantities it keeps.
     Raises :class:`~roughcontact.errors.MergeError` naming *path*, what is wrong and what to do."""
@@ -189,8 +186,8 @@ def read_declared(path, row: dict, shared: dict):
             raise MergeError(f"{path}: holds {name} = {float(got):g}, expected {float(want):g} from its name; "
                              f"{rerun_hint(path)}")
     check_run(path, ds, job.file_spec())
-    stale(path, {**{key: getattr(job, key) for key in shared}, "options": job.options},
-          {**shared, "options": options_of(row)})
+    expected = {**shared, "options": options_of(row), **(slip or {"slip_loads": (), "slip_steps": 0})}
+    stale(path, {key: getattr(job, key) for key in expected}, expected)
     return ds, quantities.recorded(job)
 
 
@@ -214,7 +211,8 @@ def merge_runs(study, paths) -> dict:
     for layout in kind_layouts(study, table, paths):
         kind, axes, coords = layout.kind, layout.axes, layout.coords
         shared = shared_settings(study, kind)
-        declared = [read_declared(path, row, shared) for row, path in layout.rows]
+        declared = [read_declared(path, row, shared, slip_path(study, kind, slides(row)))
+                    for row, path in layout.rows]
         # the quantities any run of the kind declares (a hardness on some runs: their plastic ones too)
         names = tuple(name for name in quantities.names() if any(name in kept for _, kept in declared))
         # fields.histograms: every run of the kind keeps them at the same loads
@@ -263,21 +261,3 @@ def with_units(ds, study: StudySettings):
         if "units" in ds[name].attrs:
             ds[name].attrs = {**ds[name].attrs, "units": study_units(str(ds[name].attrs["units"]), length, pressure)}
     return ds
-
-
-# --------------------------------------------------------------------------
-# entry points used by workflow/scripts
-# --------------------------------------------------------------------------
-def run_merge(study, run_files, out_stiffness, out_ensemble):
-    """``merge`` rule: run files -> stiffness.nc and ensemble.nc (one group per kind)."""
-    study = StudySettings.of(study)
-    groups = merge_runs(study, list(run_files))
-    attrs = provenance.provenance_attrs(
-        config=study.config, title="roughcontact parameter study: all runs",
-        layout="one group per surface kind (sphere, flat)", grid_n=study.grid.n, grid_length=study.grid.length,
-        e_star=study.e_star, solver_tol=study.solver.tol, stiffness_method=study.solver.stiffness,
-        seeds=list(study.seeds))
-    write_groups(out_stiffness, {kind: with_units(ds, study) for kind, ds in groups.items()}, attrs)
-    attrs["title"] = "roughcontact parameter study: ensemble statistics over seeds"
-    write_groups(out_ensemble, {kind: with_units(ensemble(ds), study) for kind, ds in groups.items()}, attrs)
-    log.info("merged %d runs (%s) into %s and %s", len(run_files), ", ".join(groups), out_stiffness, out_ensemble)

@@ -25,13 +25,13 @@ import math
 import numpy as np
 
 from ...errors import MergeError
-from ..files import provenance, runfile
+from ..files import runfile
 from ..config.axes import coordinate_attrs
 from .merge import KindLayout, gather
 from .statistics import bootstrap_indices, interval
 from ..config.stickiness import StickinessSettings
 
-__all__ = ["merge_stickiness", "stickiness_layout", "stickiness_table", "threshold", "run_stickiness_merge"]
+__all__ = ["merge_stickiness", "stickiness_layout", "stickiness_table", "threshold"]
 
 #: the number coordinate (hurst and seed: those of every merged file, coordinate_attrs)
 NUMBER_ATTRS = {"long_name": "Pastewka & Robbins' number N of the sweep", "units": "1"}
@@ -108,20 +108,3 @@ def stickiness_table(ds, s: StickinessSettings):
                 "n_seeds": s.seeds,
             })
     return pd.DataFrame(rows)
-
-
-def run_stickiness_merge(s, run_files, out_nc, out_csv) -> None:
-    """``stickiness`` rule: the stickiness run files -> ``stickiness.nc`` and ``stickiness.csv``.
-
-    *s*: the sweep (:class:`~.settings.StickinessSettings`, the rule's ``params``; a resolved
-    configuration is read with :meth:`~.settings.StickinessSettings.of`); the merged file's
-    provenance records :meth:`~.settings.StickinessSettings.record`."""
-    from ..files.io import write_csv
-
-    s = StickinessSettings.of(s)
-    ds = merge_stickiness(s, list(run_files))
-    ds.attrs.update(provenance.provenance_attrs(
-        config=s.record(), title="roughcontact stickiness runs: loading slopes F/A at the area A*",
-        forces="e_star * length**2 (stickiness.csv: dF/dA in units of h'E*)"))
-    provenance.write_netcdf(ds, out_nc)
-    write_csv(stickiness_table(ds, s), out_csv)

@@ -22,10 +22,10 @@ import numpy as np
 from ...models.adhesion import jkr_pull_off
 from ..analysis.adhesion import ERROR_CELLS, METHOD_ERRORS, RESOLVED_CELLS, RESOLVED_ERROR, resolved
 from ..analysis.ensemble import combinations
-from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
+from .plotting import MAX_CURVES, chunks, panel_grid, save_png
 from ..config.settings import StudySettings
 
-__all__ = ["make_adhesion_figures", "resolution_note", "write_pull_off_page"]
+__all__ = ["paths_figure", "pull_off_figure", "resolution_note", "write_pull_off_page"]
 
 #: most combinations drawn in the paths figure (the first ones of the sweep)
 MAX_PANELS = 6
@@ -46,7 +46,9 @@ def _below(table, combo: dict) -> str:
     return f", below resolution ({error:+.0%})" if math.isfinite(error) else ", below resolution"
 
 
-def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path, table=None) -> None:
+def paths_figure(plt, adhesion: dict, stiffness: dict, study: StudySettings, path, table=None) -> None:
+    """The ``paths`` figure (module docstring) of the merged adhesive runs *adhesion* and the loaded
+    runs *stiffness* (``{kind: Dataset}``), *table* the pull-off table (``None``: no resolution note)."""
     ds = adhesion.get("sphere")
     loaded = stiffness.get("sphere")
     E, L = study.e_star, study.grid.length
@@ -83,7 +85,8 @@ def _paths(plt, adhesion: dict, stiffness: dict, study: StudySettings, path, tab
     save_png(fig, path)
 
 
-def _pull_off(plt, table, path) -> None:
+def pull_off_figure(plt, table, path) -> None:
+    """The ``pull_off`` figure (module docstring) of the pull-off *table* (``pull_off.csv``)."""
     spheres = table[table["kind"] == "sphere"] if len(table) else table
     series = list(spheres.groupby("hurst")) if len(spheres) else []
     # at most MAX_CURVES - 1 Hurst exponents a panel (JKR's line is on every panel)
@@ -112,19 +115,6 @@ def _pull_off(plt, table, path) -> None:
             ax.text(0.5, 0.5, "no adhesive sphere runs", ha="center", transform=ax.transAxes)
     fig.tight_layout()
     save_png(fig, path)
-
-
-def make_adhesion_figures(study, adhesion_nc, stiffness_nc, pull_off_csv, out_paths, out_pull_off) -> None:
-    """``adhesion_figures`` rule: the paths figure and the pull-off figure (module docstring)."""
-    import pandas as pd
-
-    from ..files.io import read_groups
-
-    study = StudySettings.of(study)
-    plt = pyplot()
-    table = pd.read_csv(pull_off_csv)
-    _paths(plt, read_groups(adhesion_nc), read_groups(stiffness_nc), study, out_paths, table)
-    _pull_off(plt, table, out_pull_off)
 
 
 def resolution_note(table) -> str:

@@ -1,25 +1,10 @@
-"""The local exponents' table file and figure (the ``exponents`` rule): what
-:func:`roughcontact.study.analysis.exponents.exponent_table` measures, written for the report."""
+"""The local exponents' figure (the ``exponents`` rule, :mod:`roughcontact.study.rules.exponents`): what
+:func:`roughcontact.study.analysis.exponents.exponent_table` measures, drawn for the report."""
 from __future__ import annotations
 
-import logging
-
-from ..analysis.exponents import empty_reason, exponent_table
 from .plotting import pyplot, save_png
 
-__all__ = ["run_exponents", "curves", "exponents_figure"]
-
-log = logging.getLogger(__name__)
-
-
-def run_exponents(study, stiffness_nc, out_csv, out_png):
-    """``exponents`` rule: stiffness.nc -> exponents.csv (local exponents with intervals) and a figure."""
-    from ..files.io import read_groups, write_csv
-
-    table = exponent_table(read_groups(stiffness_nc), study)
-    write_csv(table, out_csv, reason=empty_reason(study))
-    exponents_figure(table, out_png)
-    log.info("local exponents: %d rows", len(table))
+__all__ = ["curves", "exponents_figure"]
 
 
 def curves(table, kind: str) -> list:

@@ -1,10 +1,11 @@
 """The report figures of one measured scan: height map, spectrum with its fit, k(F) with the models.
 
-What the ``measured_figures`` rule draws from the files of
+What the ``measured_figures`` and ``spectrum_figures`` rules (:mod:`roughcontact.study.rules.measured_figures`,
+:mod:`roughcontact.study.rules.spectrum_figures`) draw from the files of
 :func:`roughcontact.study.runs.measured.prepare_surface`,
-:func:`roughcontact.study.analysis.measured_merge.merge_surface` and
-:func:`roughcontact.study.analysis.measured_spectrum.run_spectrum`. matplotlib and xarray are imported
-inside.
+:func:`roughcontact.study.analysis.measured_merge.merge_surface` and the ``measured_spectrum`` rule
+(:func:`roughcontact.study.analysis.measured_spectrum.spectrum_groups`), and the page of the
+``measured_scorecard`` rule (:func:`scorecard_page`). matplotlib and xarray are imported inside.
 """
 from __future__ import annotations
 
@@ -13,12 +14,12 @@ import math
 import numpy as np
 
 from ..analysis import not_modelled as unmodelled
-from ..analysis.measured_scorecard import MEASURED_SCORECARD_LEAD, measured_scorecard, range_note
-from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
+from ..analysis.measured_scorecard import MEASURED_SCORECARD_LEAD, range_note
+from .plotting import MAX_CURVES, chunks, panel_grid
 from ..config.settings import StudySettings
 
-__all__ = ["make_figures", "make_spectrum_figure", "draw_heights", "draw_spectrum", "draw_stiffness",
-           "draw_stiffness_figure", "stiffness_panels", "run_measured_scorecard"]
+__all__ = ["draw_heights", "draw_spectrum", "draw_stiffness", "draw_stiffness_figure", "stiffness_panels",
+           "scorecard_page", "FIGURE_DPI"]
 
 #: line styles of the models' predictions, in the order of the spectrum file's ``model`` coordinate
 #: (the registry's, :mod:`roughcontact.models.scorecard`), repeated if there are more models; one
@@ -150,55 +151,19 @@ def draw_stiffness_figure(plt, groups: dict, models: dict, study: StudySettings)
     return fig
 
 
-def make_figures(study, name: str, surface_file, merged_file, output, spectrum_file=None) -> None:
-    """Write *output* ``.heights``, ``.kf`` and (with *spectrum_file*) ``.psd`` (PNG, atomic)
-    for the scan *name* of the study (:class:`~roughcontact.study.config.settings.StudySettings`
-    or a resolved configuration)."""
-    study = StudySettings.of(study)
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(5.2, 4.4), constrained_layout=True)
-    image = draw_heights(ax, surface_file, name)
-    fig.colorbar(image, ax=ax, label="measured height h (nm)")
-    _save(fig, output.heights)
-    if spectrum_file is not None:
-        fig, ax = plt.subplots(figsize=(5.2, 4.4), constrained_layout=True)
-        draw_spectrum(ax, spectrum_file, study.units.length)
-        ax.set_title(f"{name}: power spectrum over the tiles and its self-affine fit", fontsize=9)
-        _save(fig, output.psd)
-    fig = draw_stiffness(plt, merged_file, study, spectrum_file)
-    level = 100 * study.fit.confidence
-    fig.suptitle(f"{name}: mean over tiles, {level:g} % bootstrap band", fontsize=9)
-    _save(fig, output.kf)
+#: the resolution of the measured scans' figures (PNG, dots per inch)
+FIGURE_DPI = 130
 
 
-def make_spectrum_figure(study, name: str, merged_file, output) -> None:
-    """Write *output* ``.kf`` (PNG, atomic): k(F) of the surfaces drawn from the spectrum *name*."""
-    study = StudySettings.of(study)
-    plt = pyplot()
-    fig = draw_stiffness(plt, merged_file, study)
-    level = 100 * study.fit.confidence
-    fig.suptitle(f"{name}: mean over {len(study.seeds)} seeds, {level:g} % bootstrap band", fontsize=9)
-    _save(fig, output.kf)
-
-
-def _save(fig, path) -> None:
-    save_png(fig, path, dpi=130)
-
-
-def run_measured_scorecard(study, name: str, merged_file, spectrum_file, out_csv, out_html) -> None:
-    """``measured_scorecard`` rule: the scorecard of one scan as CSV and as an HTML page of the report."""
-    from ..files.io import read_groups, write_csv
+def scorecard_page(table, spectrum_attrs: dict, name: str, path) -> None:
+    """The report's page of the scorecard *table* of the scan *name*
+    (:func:`roughcontact.study.analysis.measured_scorecard.measured_scorecard`), its lead the range
+    note of the spectrum fit's *spectrum_attrs* and
+    :data:`~roughcontact.study.analysis.measured_scorecard.MEASURED_SCORECARD_LEAD`."""
     from .tables import write_html_table
 
-    study = StudySettings.of(study)
-    predicted = read_groups(spectrum_file)
-    table = measured_scorecard(read_groups(merged_file), predicted, name=name,
-                               min_cells=study.fit.resolved_cells, fit=study.fit)
-    write_csv(table, out_csv, reason=f"no load of the scan {name} has at least {study.fit.resolved_cells} contact "
-                                     "cells and a model's prediction")
-    spectrum = predicted.get("spectrum")
-    note = range_note(table, spectrum.attrs if spectrum is not None else {})
-    write_html_table(table, out_html, title=f"Model scorecard of the scan {name}",
+    note = range_note(table, spectrum_attrs)
+    write_html_table(table, path, title=f"Model scorecard of the scan {name}",
                      lead=f"{note} {MEASURED_SCORECARD_LEAD}", verdict_columns=(),
                      first=("kind", "radius", "model", "rank", unmodelled.COLUMN, "outside_range", "max_rel_dev",
                             "max_rel_dev_ci_low", "max_rel_dev_ci_high", "rms_rel_dev", "rms_rel_dev_ci_low",

@@ -1,8 +1,7 @@
-"""The model scorecard's page, table files and figures (the ``models`` rule): what
-:func:`roughcontact.study.analysis.scorecard.scorecard` measures, written for the report."""
+"""The model scorecard's page and figures (the ``models`` rule, :mod:`roughcontact.study.rules.models`):
+what :func:`roughcontact.study.analysis.scorecard.scorecard` measures, drawn for the report."""
 from __future__ import annotations
 
-import logging
 import math
 
 import numpy as np
@@ -10,17 +9,12 @@ import numpy as np
 from ...models import scorecard as registry
 from ..analysis import decision
 from ..analysis import not_modelled as unmodelled
-from ..analysis.scorecard import empty_reason, scorecard
+from ..analysis.scorecard import empty_reason
 from ..config import axes
-from ..config.settings import StudySettings
-from ..files import provenance
-from ..runs import naming as runs
 from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
 from .tables import not_measured, write_html_table
 
-__all__ = ["scorecard_lead", "scorecard_figure", "run_models"]
-
-log = logging.getLogger(__name__)
+__all__ = ["scorecard_lead", "scorecard_figure", "write_scorecard_page"]
 
 
 def scorecard_lead(table=None) -> str:
@@ -91,32 +85,12 @@ def scorecard_figure(path, label: str, curve, table) -> None:
     save_png(fig, path)
 
 
-def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures, grid_error_csv=None,
-               fine_reference_csv=None, model_curves_nc=None):
-    """``models`` rule: the scorecard table (CSV, HTML), the per-load deviations (NetCDF, one group
-    per combination) and one figure per elastic sphere combination (*figures*, in the order of
-    :func:`roughcontact.study.runs.naming.sphere_names` with ``adhesive=False``); *grid_error_csv*: ``grid_error.csv`` of the
-    study's companion on ``grid.coarse`` (or ``None``); *fine_reference_csv*: ``fine_reference.csv``
-    of its companion on ``grid.fine`` (or ``None``), whose grid error replaces the coarse one at its
-    loads (:func:`roughcontact.study.analysis.fine_reference.combined_grid_error`); *model_curves_nc*:
-    the precomputed models' curves (rule ``model_curves``; ``None``: computed here)."""
-    import pandas as pd
-
-    from ..files.io import read_groups, write_csv, write_groups
-
-    study = StudySettings.of(study)
-    from ..analysis.fine_reference import combined_grid_error
-
-    grid_error = combined_grid_error(pd.read_csv(grid_error_csv) if grid_error_csv else None,
-                                     pd.read_csv(fine_reference_csv) if fine_reference_csv else None)
-    precomputed = read_groups(model_curves_nc) if model_curves_nc else None
-    table, curves = scorecard(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study, grid_error, precomputed)
-    attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
-                                        bootstrap_over="seeds", forces="F/(E* L^2)")
-    write_csv(table, out_csv, reason=empty_reason(study))
-    write_groups(out_nc, curves, attrs)
+def write_scorecard_page(table, study, path) -> None:
+    """The report's page of the scorecard *table* (:func:`roughcontact.study.analysis.scorecard.scorecard`
+    of *study*): the decision matrix above it, :func:`scorecard_lead` (and why the table is empty,
+    where it is) and the columns that decide first."""
     absent = "" if len(table) else f"{not_measured(empty_reason(study))} "
-    write_html_table(table, out_html, title="Model scorecard", lead=absent + scorecard_lead(table),
+    write_html_table(table, path, title="Model scorecard", lead=absent + scorecard_lead(table),
                      above=decision.matrix_html(table, list(registry.models())),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
                                       "systematic_low_total_verdict", "systematic_high_total_verdict"),
@@ -126,11 +100,3 @@ def run_models(study, stiffness_nc, zeta_csv, out_csv, out_nc, out_html, figures
                             "grid_error_max", "grid_resolved", "systematic_low", "systematic_low_verdict",
                             "systematic_low_total_verdict", "systematic_high", "systematic_high_verdict",
                             "systematic_high_total_verdict", "grid_error_measured", "n_loads"))
-    names = runs.sphere_names(study, adhesive=False)
-    if len(names) != len(figures):
-        raise ValueError(f"run_models got {len(figures)} figure paths for {len(names)} sphere combinations")
-    for label, path in zip(names, figures):
-        if label not in curves:
-            raise ValueError(f"no sphere combination {label} in {stiffness_nc} for the figure {path}")
-        scorecard_figure(path, label, curves[label], table)
-    log.info("scorecard:\n%s", table.to_string() if len(table) else "(no sphere runs)")

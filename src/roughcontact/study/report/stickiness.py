@@ -13,25 +13,16 @@ import numpy as np
 from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
 from ..config.stickiness import StickinessSettings
 
-__all__ = ["KAPPA", "run_stickiness_figures"]
+__all__ = ["KAPPA", "loading_figure"]
 
 #: the reference line without adhesion, ``A = κF/(h′E*)``: Pastewka & Robbins' (and Hyun et al.'s) κ ≈ 2
 KAPPA = 2.0
 
 
-def run_stickiness_figures(sweep, run_files, out_loading) -> None:
-    """``stickiness_figures`` rule: the stickiness run files (one per
-    :meth:`~.settings.StickinessSettings.jobs`, in its order) of the *sweep* (a
-    :class:`~.settings.StickinessSettings`, the rule's ``params``, or a resolved configuration)
-    -> the load–area figure (module docstring)."""
-    import xarray as xr
-
-    s = StickinessSettings.of(sweep)
+def loading_figure(s: StickinessSettings, runs: dict, path) -> None:
+    """The load–area figure (module docstring) of the stickiness runs *runs* (``{run: Dataset}``, a
+    :class:`~roughcontact.study.config.stickiness.StickinessRun` of the sweep *s* each) to *path* (PNG)."""
     plt = pyplot()
-    runs = {}
-    for job, path in zip(s.jobs(), run_files):
-        with xr.open_dataset(path, engine="netcdf4") as ds:
-            runs[job] = ds.load()
     cells = float(s.n * s.n)
     scale = s.rms_slope * s.e_star * s.length**2
     # one panel per Hurst exponent and group of at most MAX_CURVES - 1 numbers N (one colour
@@ -57,4 +48,4 @@ def run_stickiness_figures(sweep, run_files, out_loading) -> None:
         ax.legend(fontsize=7)
     fig.suptitle("loading into a Dugdale half-space; sticky (F < 0 at A*) predicted for N < 1", fontsize=9)
     fig.tight_layout()
-    save_png(fig, out_loading)
+    save_png(fig, path)

@@ -1,66 +1,36 @@
-"""The tangential runs in the report: the ``tangential`` rule's files and the report's figures.
+"""The tangential runs' figures in the report (rules ``tangential_figures`` and ``partial_slip_figures``,
+:mod:`roughcontact.study.rules.tangential_figures`):
 
-* :func:`run_tangential` — the run files and ``crossover.csv`` -> ``tangential.nc``
-  (:func:`roughcontact.study.analysis.tangential.merge_tangential`), ``tangential.csv``
-  (:func:`~roughcontact.study.analysis.tangential.per_load_table`) and its page;
-* :func:`make_tangential_figures` — ``ratio``: the ensemble's full-stick ``k_t/k_n`` against the
+* :func:`ratio_figure` — ``ratio``: the ensemble's full-stick ``k_t/k_n`` against the
   normal force with its interval, Mindlin's ``2(1 − ν)/(2 − ν)`` as a line and ``F_tr`` marked, one
   panel per sphere combination, one colour per ``ν``; with friction, ``slip``: ``k_t(Q)/k_t(0)``
   against ``Q/μP`` at each slip load (at most :data:`~roughcontact.study.report.plotting.MAX_CURVES`
   per panel) beside Cattaneo–Mindlin's ``(1 − Q/μP)^(1/3)`` and, dotted, Ciavarella–Jäger's from the
-  normal path; and ``micro_slip``: the largest micro-slip against Grzemba et al.'s ``μ d E*/G*``.
+  normal path (:func:`slip_figure`); and ``micro_slip`` (:func:`micro_slip_figure`): the largest
+  micro-slip against Grzemba et al.'s ``μ d E*/G*``.
 
 Forces ``F/(E* L²)``, stiffnesses ``k/(E* L)``.
 """
 from __future__ import annotations
 
-import logging
-
 import numpy as np
 
 from ...models import tangential as theory
 from ..analysis import tangential as estimate
-from ..config.settings import StudySettings
-from ..files import provenance
-from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
-from .tables import csv_to_html
+from .plotting import MAX_CURVES, chunks, panel_grid, save_png
 
-__all__ = ["run_tangential", "make_tangential_figures"]
-
-log = logging.getLogger(__name__)
+__all__ = ["ratio_figure", "slip_figure", "micro_slip_figure"]
 
 #: most panels of a figure (the first combinations of the sweep)
 MAX_PANELS = 6
-
-
-def _crossover(crossover_csv):
-    from ..files.io import read_csv
-
-    return read_csv(crossover_csv)
-
-
-def run_tangential(study, run_files, crossover_csv, out_nc, out_csv, out_html) -> None:
-    """``tangential`` rule (module docstring)."""
-    from ..files.io import write_csv, write_groups
-
-    study = StudySettings.of(study)
-    groups = estimate.merge_tangential(study, list(run_files))
-    attrs = provenance.provenance_attrs(
-        config=study.config, title="roughcontact parameter study: tangential contact of the sphere runs",
-        layout="groups full_stick (per load) and partial_slip (friction > 0)", grid_n=study.grid.n,
-        grid_length=study.grid.length, e_star=study.e_star, seeds=list(study.seeds))
-    write_groups(out_nc, groups, attrs)
-    table = estimate.per_load_table(groups, _crossover(crossover_csv), study)
-    write_csv(table, out_csv, reason="no tangential run has a full-stick stiffness (no sphere with a poisson ratio)")
-    csv_to_html(out_csv, out_html, "tangential")
-    log.info("merged the tangential runs (%s) into %s; %d rows in %s", ", ".join(groups), out_nc, len(table), out_csv)
 
 
 def _label(where: dict) -> str:
     return f"H = {where['hurst']:g}, R = {where['radius']:g}, h_rms = {where['h_rms']:g}"
 
 
-def _ratio_figure(plt, table, path) -> None:
+def ratio_figure(plt, table, path) -> None:
+    """The ``ratio`` figure (module docstring) of ``tangential.csv`` (*table*) to *path* (PNG)."""
     normal = [c for c in table.columns if c not in ("poisson", "force", "branch", "crossover_force", "kt_over_kn",
                                                     "ci_low", "ci_high", "mindlin", "rel_dev")]
     groups = list(table.groupby(normal, sort=False))[:MAX_PANELS]
@@ -87,7 +57,8 @@ def _ratio_figure(plt, table, path) -> None:
     save_png(fig, path)
 
 
-def _slip_figure(plt, groups: dict, path) -> None:
+def slip_figure(plt, groups: dict, path) -> None:
+    """The ``slip`` figure (module docstring) of ``tangential.nc`` (*groups*) to *path* (PNG)."""
     panels_data = []
     for where, stick, slip in estimate.slip_combinations(groups):
         loads = list(range(slip.sizes["slip_load"]))
@@ -116,7 +87,8 @@ def _slip_figure(plt, groups: dict, path) -> None:
     save_png(fig, path)
 
 
-def _micro_slip_figure(plt, groups: dict, path) -> None:
+def micro_slip_figure(plt, groups: dict, path) -> None:
+    """The ``micro_slip`` figure (module docstring) of ``tangential.nc`` (*groups*) to *path* (PNG)."""
     fig, ax = plt.subplots(figsize=(4.8, 4.0))
     lows, highs = [], []
     for c, (where, _, slip) in enumerate(list(estimate.slip_combinations(groups))[:MAX_CURVES]):
@@ -137,21 +109,3 @@ def _micro_slip_figure(plt, groups: dict, path) -> None:
     ax.legend(fontsize=6)
     fig.tight_layout()
     save_png(fig, path)
-
-
-def make_tangential_figures(study, tangential_nc, tangential_csv, out_ratio=None, out_slip=None, out_micro_slip=None):
-    """``tangential_figures`` (*out_ratio*) and ``partial_slip_figures`` (*out_slip*,
-    *out_micro_slip*; friction only) rules: the figures of the module docstring that are asked for."""
-    import pandas as pd
-
-    from ..files.io import read_groups
-
-    plt = pyplot()
-    if out_ratio:
-        _ratio_figure(plt, pd.read_csv(tangential_csv), out_ratio)
-    if out_slip or out_micro_slip:
-        groups = read_groups(tangential_nc)
-        if out_slip:
-            _slip_figure(plt, groups, out_slip)
-        if out_micro_slip:
-            _micro_slip_figure(plt, groups, out_micro_slip)

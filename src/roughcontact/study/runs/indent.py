@@ -1,7 +1,7 @@
 """One indentation job: the surface of a run, its warm-started load path, one NetCDF file.
 
-What the ``indent`` rule (:func:`run_batch`: the runs of one combination and block of seeds,
-``jobs.batch``) and ``roughcontact indent`` (:func:`run_indent`) call with
+What the ``indent`` rule (:mod:`roughcontact.study.rules.indent`: the runs of one combination and
+block of seeds, ``jobs.batch``) and ``roughcontact indent`` call, :func:`run_indent`, with
 :class:`~roughcontact.study.runs.jobs.JobSettings`. Imports numpy and the core at import time;
 ``netCDF4`` and ``tqdm`` where they are used, so the job starts quickly.
 """
@@ -22,7 +22,7 @@ from .path import LoadPath
 from .jobs import JobSettings
 
 __all__ = ["PathSettings", "solve_load_path", "path_settings", "make_surface", "compute_run", "write_run",
-           "run_indent", "run_batch"]
+           "run_indent"]
 
 logger = logging.getLogger(__name__)
 
@@ -266,27 +266,3 @@ def run_indent(settings: JobSettings, output, log=None, progress: bool = False) 
             raise
         logger.info("wrote %s", output)
     return out
-
-
-def run_batch(settings, outputs, logs=None) -> None:
-    """Compute several runs one after another in this process, each written to its own file as
-    soon as it is done (:func:`run_indent`: atomic, with its own log): what one ``indent`` job of
-    ``jobs.batch`` seeds runs, paying the start-up of Python and the package once.
-
-    *settings*: a :class:`~roughcontact.study.runs.jobs.JobSettings` or a sequence of them;
-    *outputs*, *logs*: a path per run, in the same order (*logs* ``None``: no logs). Stops at
-    the first run that fails and raises its error, which carries that run's log path as
-    ``err.run_log``: the runs written before it stay, complete and valid, the failing run and
-    those after it leave no file.
-    """
-    runs = [settings] if isinstance(settings, JobSettings) else list(settings)
-    outputs = list(outputs)
-    logs = [None] * len(runs) if logs is None else list(logs)
-    if not len(runs) == len(outputs) == len(logs):
-        raise ValueError(f"run_batch got {len(runs)} runs, {len(outputs)} outputs and {len(logs)} logs")
-    for job, output, log in zip(runs, outputs, logs):
-        try:
-            run_indent(job, output, log=log)
-        except Exception as exc:
-            exc.run_log = log
-            raise

@@ -22,7 +22,7 @@ from ..config.records import ForcePathRecord
 from ..config.settings import StudySettings
 
 __all__ = ["SLIP_COMPONENTS", "JobSettings", "job_settings", "nearest_loads", "options_of", "run_settings",
-           "settings_from_wildcards", "shared_settings"]
+           "settings_from_wildcards", "shared_settings", "slides", "slip_path"]
 
 
 #: traction components of a run's partial-slip path (:func:`roughcontact.bem.partial_slip`,
@@ -237,8 +237,13 @@ def job_settings(study, run: dict) -> JobSettings:
     study = StudySettings.of(study)
     radius = float(run["radius"])
     kind = kind_of(radius)
-    sliding = float(run.get("friction", 0.0) or 0.0) > 0
-    return JobSettings(**shared_settings(study, kind), **run_settings(study, kind, run, sliding=sliding))
+    return JobSettings(**shared_settings(study, kind), **run_settings(study, kind, run, sliding=slides(run)))
+
+
+def slides(run: dict) -> bool:
+    """Whether the run *run* (a dict of :func:`roughcontact.study.runs.naming.runs`) has a
+    partial-slip path: friction > 0."""
+    return float(run.get("friction", 0.0) or 0.0) > 0
 
 
 def shared_settings(study: StudySettings, kind: str) -> dict:
@@ -273,12 +278,21 @@ def run_settings(study: StudySettings, kind: str, run: dict, *, sliding: bool = 
     """The fields of :class:`JobSettings` of the one *run* (a dict of
     :func:`roughcontact.study.runs.naming.runs`): its surface, seed, optional axes and, where it
     slides (*sliding*: friction > 0), its partial-slip path."""
-    rng = study.forces[kind]
-    slip_loads = ((tuple(range(rng.count)) if study.tangential.at is None
-                   else nearest_loads(rng.normalized(), study.tangential.at)) if sliding else ())
     return dict(hurst=float(run["hurst"]), radius=float(run["radius"]), h_rms=float(run["h_rms"]),
-                seed=int(run["seed"]), options=options_of(run), slip_loads=slip_loads,
-                slip_steps=study.tangential.steps if sliding else 0)
+                seed=int(run["seed"]), options=options_of(run), **slip_path(study, kind, sliding))
+
+
+def slip_path(study: StudySettings, kind: str, sliding: bool) -> dict:
+    """``slip_loads`` and ``slip_steps`` of a run of the surface *kind* that slides (*sliding*,
+    :func:`slides`): the loads of ``tangential.at`` (every load without it) and
+    ``tangential.steps``; ``()`` and ``0`` for one that does not. The merge checks a run file's
+    against them (:func:`roughcontact.study.analysis.merge.read_declared`)."""
+    if not sliding:
+        return dict(slip_loads=(), slip_steps=0)
+    rng = study.forces[kind]
+    loads = tuple(range(rng.count)) if study.tangential.at is None else nearest_loads(rng.normalized(),
+                                                                                       study.tangential.at)
+    return dict(slip_loads=loads, slip_steps=study.tangential.steps)
 
 
 def nearest_loads(forces, at) -> tuple:

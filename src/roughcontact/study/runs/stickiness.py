@@ -152,20 +152,3 @@ def stickiness_run(s) -> dict:
         "work_of_adhesion": work, "pastewka_robbins_number": criterion.number, "range_ratio": criterion.range_ratio,
         "loading_slope": slope,
     }
-
-
-def run_stickiness_job(s, output) -> dict:
-    """``stickiness_run`` rule: the run *s* (:class:`~.settings.StickinessRun`, the rule's
-    ``params``) -> its run file *output* (NetCDF, atomic; its provenance records *s*:
-    ``config`` is :meth:`~.settings.StickinessRun.record`, ``config_hash`` its hash;
-    :func:`roughcontact.study.files.runfile.write_run`)."""
-    from ..files import provenance, runfile
-
-    out = stickiness_run(s)
-    runfile.write_run(output, out, kind="stickiness", attrs=provenance.provenance_attrs(
-        config=s.record(), hurst=s.hurst, number=s.number, seed=s.seed, grid_n=s.n, grid_length=s.length,
-        e_star=s.e_star, periodic=1, cutoff_cells=s.cutoff, area=s.area, solver_tol=s.tol,
-        interaction="Maugis-Dugdale (roughcontact.bem.cohesive)",
-        reference="L. Pastewka and M. O. Robbins, PNAS 111 (2014) 3298 (doi:10.1073/pnas.1320846111)"))
-    logger.info("wrote %s", output)
-    return out
