@@ -281,6 +281,11 @@ def pipeline(tmp_path_factory):
     h = _scan(work / "inputs" / "scan.nc")
     _psd(work / "inputs" / "psd.csv")
     cfg = _cfg(topography=[{"file": "inputs/scan.nc", "detrend": "none"}], hurst=[], h_rms=[])
+    return work, _run_sweep(work, cfg), h, config.resolve_config(cfg, base_dir=work)
+
+
+def _run_sweep(work, cfg) -> Path:
+    """Run the workflow on *cfg* (written to *work*/study.yaml) in *work*/run, on 2 cores; the run directory."""
     (work / "study.yaml").write_text(yaml.safe_dump(cfg))
     run_dir = work / "run"
     run_dir.mkdir()
@@ -289,7 +294,7 @@ def pipeline(tmp_path_factory):
                            str(work / "study.yaml"), "--cores", "2"], cwd=run_dir, capture_output=True,
                           text=True, timeout=600, env=env)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return work, run_dir, h, config.resolve_config(cfg, base_dir=work)
+    return run_dir
 
 
 def test_merged_scan_has_units_dims_and_provenance(pipeline):
@@ -349,14 +354,7 @@ def test_spectrum_only_sweep_ends_in_a_landing_page(tmp_path):
     _psd(tmp_path / "inputs" / "psd.csv")
     cfg = {k: v for k, v in _cfg(hurst=[], h_rms=[], spectrum=["inputs/psd.csv"], seeds=2,
                                  grid={"n": 33, "length": 3.2}).items() if k != "tile"}
-    (tmp_path / "study.yaml").write_text(yaml.safe_dump(cfg))
-    run_dir = tmp_path / "run"
-    run_dir.mkdir()
-    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
-    proc = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--configfile",
-                           str(tmp_path / "study.yaml"), "--cores", "2"], cwd=run_dir, capture_output=True,
-                          text=True, timeout=600, env=env)
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    run_dir = _run_sweep(tmp_path, cfg)
     page = (run_dir / "results/summary.html").read_text()
     assert html.escape(NO_GENERATED) in page
     assert "Spectrum psd" in page
