@@ -1,10 +1,10 @@
 """The normal solver's preconditioners on a fixed contact set: how the CG iterations grow with the grid.
 
 Issue 41: the constrained CG's iterations grow with n, and on a fixed contact set the error of today's
-preconditioner falls less per iteration as the grid is refined. This benchmark isolates that phase: the contact
-set ``C`` of the largest load (2·10⁻² E*L²) of the default sphere (R = 0.5 L, H = 0.7, h_rms = 9·10⁻³ L, seed 0,
-non-periodic, solved by ``bem.solve`` to tol 10⁻⁸) is frozen and the linear system of the force-controlled
-problem on it, ``P K_CC p = −P lift_C`` with ``Σ p`` fixed (``P`` removes the mean on ``C``), is solved by
+preconditioner falls less per iteration as the grid is refined. This benchmark isolates that phase: the
+contact set ``C`` of the largest load (2·10⁻² E*L²) of the default sphere (R = 0.5 L, H = 0.7,
+h_rms = 9·10⁻³ L, seed 0, non-periodic, solved by ``bem.solve`` to tol 10⁻⁸) is frozen and the linear
+system of the force-controlled problem on it, ``P K_CC p = −P lift_C`` with ``Σ p`` fixed (``P`` removes the mean on ``C``), is solved by
 preconditioned CG from the uniform pressure to ``‖r‖ ≤ 10⁻⁸ ‖r₀‖``. Prints per n and preconditioner the
 iterations and the condition number of the preconditioned operator estimated from CG's Lanczos coefficients.
 
@@ -26,11 +26,19 @@ outside ``C``; all symmetric positive definite on zero-mean vectors of ``C``):
     ``P (M_CC − M_CF [m₀⁻¹ Σ_{j≤k} N^j] M_FC) P`` with ``M_FF = m₀ (I − N)``: the Schur complement whose
     exact form ``M_CC − M_CF M_FF⁻¹ M_FC = ((M⁻¹)_CC)⁻¹`` is the inverse of the window's operator restricted
     to C, with ``M_FF⁻¹`` by k + 1 terms of its Neumann series; ``k + 2`` FFT pairs on the window per
-    application (``fft``: one). ``polonsky_keer(..., boundary_terms=k)``.
+    application (``fft``: one). ``polonsky_keer(..., boundary_terms=k)``; ``schur:63`` is the exact
+    complement to single precision, the floor of this family.
+
+``--path`` also solves the default sphere path (the 27 loads 10⁻⁷ … 2·10⁻² E*L² of ``large_grid.py``, tol
+10⁻⁸, ``bem.iter_load_path``) with ``polonsky_keer(..., boundary_terms=k)`` for k = None (today), 0, 1, 3, 63,
+and prints the iterations over all loads, those of the largest load, the CPU seconds of the path (process time:
+comparable between rows of one run on a loaded machine, unlike the wall time; the kernel's table is
+built before the first row) and the largest relative
+difference of the depth from today's (k = None) over the loads.
 
 Usage::
 
-    python benchmarks/fixed_set.py [--n 129 257 513 1025] [--hertz]
+    python benchmarks/fixed_set.py [--n 129 257 513 1025] [--hertz] [--path]
 
 ``--hertz``: a smooth sphere (one round contact) instead of the rough one.
 """
@@ -38,6 +46,7 @@ Usage::
 from __future__ import annotations
 
 import argparse
+import functools
 import sys
 import time
 from pathlib import Path
@@ -50,13 +59,15 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, machine_lines  # noqa: E402
 
+from large_grid import FORCES  # noqa: E402
+
 from roughcontact import bem, surfaces  # noqa: E402
-from roughcontact.bem import contact  # noqa: E402
+from roughcontact.bem import contact, solver  # noqa: E402
 from roughcontact.bem.preconditioner import fourier_inverse  # noqa: E402
 
 FORCE = 2e-2
 TOL = 1e-8
-VARIANTS = ("none", "fft", "sqrt-d", "1/sqrt-d", "edge-diag", "schur:0", "schur:1", "schur:3", "schur:7")
+VARIANTS = ("none", "fft", "sqrt-d", "1/sqrt-d", "edge-diag", "schur:0", "schur:1", "schur:3", "schur:7", "schur:63")
 
 
 def frozen_set(n: int, hertz: bool):
@@ -90,7 +101,7 @@ def preconditioners(inverse, shape, mask, cells):
         "1/sqrt-d": lambda r: project(down * inverse(shape, cells, down * r)),
         "edge-diag": lambda r: project(inverse(shape, cells, r) - edge * r),
     }
-    for k in (0, 1, 3, 7):
+    for k in (0, 1, 3, 7, 63):
         table[f"schur:{k}"] = (lambda k: lambda r: inverse(shape, cells, r, boundary_terms=k))(k)
     return table
 
@@ -145,11 +156,37 @@ def measure(n: int, hertz: bool, variants) -> list[tuple[str, int, int, float]]:
     return [(name, cells.size, *pcg(apply, table[name], rhs)) for name in variants]
 
 
+def path_rows(n: int, terms=(None, 0, 1, 3, 63)) -> list[tuple]:
+    """Per ``boundary_terms``: iterations over the default sphere path, of its largest load, CPU seconds, and the
+    largest relative depth difference from the first entry's."""
+    heights = surfaces.rough_sphere(n, radius=RADIUS, hurst=HURST, h_rms=H_RMS, length=LENGTH, seed=0)
+    forces = np.geomspace(*FORCES[:2], FORCES[2]) * E_STAR * LENGTH**2
+    rows, reference = [], None
+    contact.operator_for(n, LENGTH, E_STAR, False).coefficients  # the whole table: the first row does not pay it
+    try:
+        for k in terms:
+            contact.polonsky_keer = functools.partial(solver.polonsky_keer, boundary_terms=k)
+            tick = time.process_time()
+            states = [(s.iterations, s.depth, s.converged)
+                      for s in bem.iter_load_path(heights, forces, length=LENGTH, e_star=E_STAR, tol=TOL)]
+            seconds = time.process_time() - tick
+            iterations, depths, converged = (np.array(column) for column in zip(*states))
+            if not converged.all():
+                raise RuntimeError(f"n = {n}, boundary_terms = {k}: a load did not converge")
+            reference = depths if reference is None else reference
+            rows.append((k, int(iterations.sum()), int(iterations.max()), seconds,
+                         float(np.abs(depths / reference - 1).max())))
+    finally:
+        contact.polonsky_keer = solver.polonsky_keer
+    return rows
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--n", type=int, nargs="+", default=[129, 257, 513, 1025])
     parser.add_argument("--hertz", action="store_true", help="a smooth sphere instead of the rough one")
     parser.add_argument("--variants", nargs="+", default=list(VARIANTS), choices=VARIANTS)
+    parser.add_argument("--path", action="store_true", help="also the default sphere path per boundary_terms")
     args = parser.parse_args(argv)
     for line in machine_lines([]):
         print(line)
@@ -159,6 +196,12 @@ def main(argv=None) -> int:
     for n in args.n:
         for name, cells, iterations, kappa in measure(n, args.hertz, args.variants):
             print(f"{n:5d} {cells:7d} | {name:>14} | {iterations:10d} {kappa:7.1f}", flush=True)
+    if args.path:
+        print(f"default sphere path, {FORCES[2]} loads, tol {TOL:g}; CPU s = process time of the path")
+        print(f"{'n':>5} | {'boundary_terms':>14} | {'iterations':>10} {'largest':>7} | {'CPU s':>7} | depth vs None")
+        for n in args.n:
+            for k, total, largest, seconds, depth in path_rows(n):
+                print(f"{n:5d} | {str(k):>14} | {total:10d} {largest:7d} | {seconds:7.2f} | {depth:.1e}", flush=True)
     return 0
 
 
