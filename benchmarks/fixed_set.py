@@ -4,9 +4,10 @@ Issue 41: the constrained CG's iterations grow with n, and on a fixed contact se
 preconditioner falls less per iteration as the grid is refined. This benchmark isolates that phase: the
 contact set ``C`` of the largest load (2·10⁻² E*L²) of the default sphere (R = 0.5 L, H = 0.7,
 h_rms = 9·10⁻³ L, seed 0, non-periodic, solved by ``bem.solve`` to tol 10⁻⁸) is frozen and the linear
-system of the force-controlled problem on it, ``P K_CC p = −P lift_C`` with ``Σ p`` fixed (``P`` removes the mean on ``C``), is solved by
-preconditioned CG from the uniform pressure to ``‖r‖ ≤ 10⁻⁸ ‖r₀‖``. Prints per n and preconditioner the
-iterations and the condition number of the preconditioned operator estimated from CG's Lanczos coefficients.
+system of the force-controlled problem on it, ``P K_CC p = −P lift_C`` with ``Σ p`` fixed (``P`` removes
+the mean on ``C``), is solved by preconditioned CG from the uniform pressure to ``‖r‖ ≤ 10⁻⁸ ‖r₀‖``.
+Prints per n and preconditioner the iterations and the condition number of the preconditioned operator
+estimated from CG's Lanczos coefficients.
 
 Preconditioners (``M = E*|q|/2`` on the window of the solve, ``m₀`` its diagonal, ``F`` the window's cells
 outside ``C``; all symmetric positive definite on zero-mean vectors of ``C``):
