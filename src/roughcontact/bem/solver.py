@@ -91,7 +91,7 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter, *, boundary_ter
     ``((M⁻¹)_WW)⁻¹``, the inverse of the window's half-space restricted to ``W``, where ``M_WW`` alone
     overestimates that inverse at the boundary cells (:meth:`FourierInverse.__call__`). It costs ``k + 1``
     more FFT pairs on the window per iteration and cuts the iterations of the default sphere path by
-    18–31 % (``k`` = 0 … 3) on 257² … 1025², but not their growth with the grid, and leaves the time per
+    17–32 % (``k`` = 0 … 3) on 257² … 1025², but not their growth with the grid, and leaves the time per
     load unchanged (``k`` ≤ 1) or longer (``benchmarks/fixed_set.py``, ``docs/guide/solver.md``).
 
     Restarts: Polonsky & Keer reset the direction ``t`` whenever a cell enters
