@@ -18,6 +18,9 @@ number of ``P_W M K`` stays bounded as the grid is refined: the iterations per l
 like ``n^(1/2)`` as those of unpreconditioned CG (the condition number of ``K`` on ``m`` cells
 grows like ``m^(1/2)``).
 
+Optional (``boundary_terms``, off by default): the correction of ``M`` at the set's edge by the Schur
+complement of the window's operator (:meth:`FourierInverse._schur`); measured in ``benchmarks/fixed_set.py``.
+
 The transform runs in single precision on the window itself (not on the zero-padded size of the
 convolution), a quarter of the convolution's cost: the preconditioner need only be a fixed,
 symmetric, positive operator, not an exact inverse (the stopping test is on the gap).
@@ -103,7 +106,6 @@ class FourierInverse:
         if deflate:
             result -= result.mean()
         return result
-
 
     def _schur(self, shape, cells, response, terms):
         """``R_W [y − M R_Fᵀ (Σ_{k≤terms} N^k) R_F y / m₀]``, ``y = M R_Wᵀ r`` the window's response,
