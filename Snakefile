@@ -45,7 +45,6 @@ localrules:
     all,
     model_curves,
     merge,
-    fit_zeta,
     crossover,
     exponents,
     claims,
@@ -81,7 +80,6 @@ rule all:
         (
             [
                 rules.merge.output,
-                rules.fit_zeta.output,
                 rules.crossover.output,
                 rules.exponents.output,
                 rules.claims.output,

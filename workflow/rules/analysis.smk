@@ -35,7 +35,7 @@ rule merge:
         ensemble="results/ensemble.nc",
     log:
         "logs/merge.log",
-    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -129,34 +129,20 @@ rule fine_reference:
         "../scripts/fine_reference.py"
 
 
-rule fit_zeta:
+# zeta(H) of eq. 11 and the crossover force of eqs. 16, 17 (which uses it): one job, stiffness.nc
+# read once (study.rules.crossover); the critical path merge, crossover, figures, summary.
+rule crossover:
     input:
         stiffness=rules.merge.output.stiffness,
     output:
-        csv="results/zeta.csv",
-        html=report(
+        zeta_csv="results/zeta.csv",
+        zeta_html=report(
             "results/zeta.html",
             caption="../report/zeta_table.rst",
             category="Tables",
             labels={"table": "zeta(H)"},
         ),
-        nc="results/zeta.nc",
-    log:
-        "logs/fit_zeta.log",
-    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
-    conda:
-        "../../envs/roughcontact.yaml"
-    params:
-        cfg=config,
-    script:
-        "../scripts/fit_zeta.py"
-
-
-rule crossover:
-    input:
-        stiffness=rules.merge.output.stiffness,
-        zeta=rules.fit_zeta.output.csv,
-    output:
+        zeta_nc="results/zeta.nc",
         csv="results/crossover.csv",
         html=report(
             "results/crossover.html",
@@ -167,7 +153,7 @@ rule crossover:
         nc="results/crossover.nc",
     log:
         "logs/crossover.log",
-    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -195,7 +181,7 @@ rule exponents:
         ),
     log:
         "logs/exponents.log",
-    priority: ANALYSIS_PRIORITY + 1  # claims waits for it: beside zeta and crossover
+    priority: ANALYSIS_PRIORITY + 1  # claims waits for it: beside crossover
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -208,8 +194,8 @@ rule claims:
     input:
         crossover=rules.crossover.output.csv,
         replicates=rules.crossover.output.nc,
-        zeta=rules.fit_zeta.output.csv,
-        zeta_replicates=rules.fit_zeta.output.nc,
+        zeta=rules.crossover.output.zeta_csv,
+        zeta_replicates=rules.crossover.output.zeta_nc,
         stiffness=rules.merge.output.stiffness,
         exponents=rules.exponents.output.csv,
         pull_off=pull_off_table,
@@ -238,7 +224,7 @@ rule claims:
 rule models:
     input:
         stiffness=rules.merge.output.stiffness,
-        zeta=rules.fit_zeta.output.csv,
+        zeta=rules.crossover.output.zeta_csv,
         grid_error=grid_error_table,
         fine_reference=fine_reference_table,
         model_curves=rules.model_curves.output.nc,

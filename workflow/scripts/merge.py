@@ -1,7 +1,7 @@
-"""Snakemake `merge` job: all run files -> results/stiffness.nc, results/ensemble.nc (a group per surface kind)."""
+"""Snakemake `merge` job (and `merge_coarse`, `merge_fine`): run files -> stiffness.nc, ensemble.nc (a group per surface kind)."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.analysis.merge import run_merge
+from roughcontact.study.rules import merge
 
 snakemake = globals()["snakemake"]
 with log_to(snakemake.log[0]):
-    run_merge(snakemake.params.cfg, snakemake.input.runs, snakemake.output.stiffness, snakemake.output.ensemble)
+    merge.run(snakemake.params.cfg, snakemake.input.runs, snakemake.output.stiffness, snakemake.output.ensemble)

@@ -30,7 +30,7 @@ ANALYSIS_CODE = {
                "roughcontact.study.analysis.measured_spectrum"),
     "claims": ("roughcontact.study.report.claims",),
     "area": ("roughcontact.study.report.area",),
-    "figures": ("roughcontact.study.report.figures",),
+    "figures": ("roughcontact.study.rules.figures",),
     "model_curves": ("roughcontact.study.rules.model_curves",),
     "summary": ("roughcontact.study.rules.summary",),
     "grid_error": ("roughcontact.study.analysis.grid_error",),
