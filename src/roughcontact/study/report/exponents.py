@@ -5,7 +5,7 @@ from __future__ import annotations
 import logging
 
 from ..analysis.exponents import empty_reason, exponent_table
-from .plotting import pyplot, save_png
+from .plotting import fixed_layout, pyplot, save_png
 
 __all__ = ["run_exponents", "curves", "exponents_figure"]
 
@@ -47,5 +47,5 @@ def exponents_figure(table, path) -> None:
         ax.legend(fontsize=6)
     if not kinds:
         axes[0][0].text(0.5, 0.5, "no resolved window", ha="center")
-    fig.tight_layout()
+    fixed_layout(fig, left=0.7, right=0.18, bottom=0.62, top=0.38, wspace=0.72)
     save_png(fig, path)
