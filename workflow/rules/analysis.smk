@@ -10,14 +10,16 @@ CODE = {rule: code_fingerprint(rule) for rule in ANALYSIS_CODE}
 
 
 # The models' curves that need no run (Persson, Greenwood-Tripp, MDR, this package's models at the
-# sphere loads; Fig. 3's Greenwood-Tripp curve), once, from the config: computed while the runs
-# are, read by the models and figures rules (study.analysis.model_curves).
+# sphere loads; Fig. 3's Greenwood-Tripp curve), once, from the config: computed while the last
+# runs are, read by the models and figures rules (study.analysis.model_curves).
 rule model_curves:
     output:
         nc="results/model_curves.nc",
     log:
         "logs/model_curves.log",
-    priority: ANALYSIS_PRIORITY  # needs no run: off the analysis' critical path
+    # needs no run: after every indent job has started, on the core the last runs leave idle and
+    # beside merge (with the analysis' priority it took a core from the first runs)
+    priority: 1
     conda:
         "../../envs/roughcontact.yaml"
     params:
