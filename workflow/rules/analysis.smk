@@ -10,16 +10,26 @@ CODE = {rule: code_fingerprint(rule) for rule in ANALYSIS_CODE}
 
 
 # The models' curves that need no run (Persson, Greenwood-Tripp, MDR, this package's models at the
-# sphere loads; Fig. 3's Greenwood-Tripp curve), once, from the config: computed while the last
-# runs are, read by the models and figures rules (study.analysis.model_curves).
+# sphere loads; Fig. 3's Greenwood-Tripp curve), once, from the config: computed while the runs
+# are, read by the models and figures rules (study.analysis.model_curves). Its priority puts it
+# after the costliest indent jobs and before the cheapest ones, which fill the end of the run phase:
+# first, it took a core from the first runs; last, it held figures and models back after them
+# (benchmarks/RESULTS.md, section 9).
+MODEL_CURVES_PRIORITY = 1 + min(
+    (
+        study_runs.indent_priority(STUDY, study_runs.combo_name(c), INDENT_BATCH)
+        for c in study_runs.combinations(STUDY)
+    ),
+    default=0,
+)
+
+
 rule model_curves:
     output:
         nc="results/model_curves.nc",
     log:
         "logs/model_curves.log",
-    # needs no run: after every indent job has started, on the core the last runs leave idle and
-    # beside merge (with the analysis' priority it took a core from the first runs)
-    priority: 1
+    priority: MODEL_CURVES_PRIORITY  # before the cheapest indent jobs
     conda:
         "../../envs/roughcontact.yaml"
     params:
