@@ -55,6 +55,25 @@ def run(tmp_path_factory):
     return work, cfg
 
 
+
+def test_the_crossover_job_writes_what_its_two_steps_write(run, tmp_path):
+    """Rule crossover (ζ(H) and the crossover table in one job, stiffness.nc read once) writes
+    zeta.csv, zeta.nc, crossover.csv and crossover.nc as the two steps of the analysis do one
+    after the other, each from the files (the rules fit_zeta and crossover before issue 40): the
+    same numbers, to the bit."""
+    from roughcontact.study.analysis.crossover import run_crossover
+    from roughcontact.study.analysis.zeta.fit import run_fit_zeta
+
+    work, cfg = run
+    stiffness = work / "results/stiffness.nc"
+    run_fit_zeta(cfg, stiffness, tmp_path / "zeta.csv", tmp_path / "zeta.nc")
+    run_crossover(cfg, stiffness, tmp_path / "zeta.csv", tmp_path / "crossover.csv", tmp_path / "crossover.nc")
+    for name in ("zeta.csv", "crossover.csv"):
+        pd.testing.assert_frame_equal(pd.read_csv(work / "results" / name), pd.read_csv(tmp_path / name))
+    for name in ("zeta.nc", "crossover.nc"):
+        with xr.open_dataset(work / "results" / name) as job, xr.open_dataset(tmp_path / name) as steps:
+            xr.testing.assert_equal(job, steps)
+
 def test_merged_file_has_a_group_per_kind_without_padding(run):
     """stiffness.nc: one group per surface kind with its own force grid: nothing NaN, counts integers."""
     work, cfg = run

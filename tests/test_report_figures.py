@@ -189,3 +189,38 @@ def test_fig3_says_fitted_only_when_zeta_was_fitted(fitted):
             assert eq16 and all(t == "eq. 16, ζ = 1.7/(H+1) = 1 (eq. 13)" for t in eq16), eq16
     finally:
         plt.close(fig)
+
+
+def test_fixed_layout_places_the_panels_at_its_margins():
+    """report.plotting.fixed_layout: the outer panels' edges at the margins and the gap between two
+    columns as given, in inches (a 10 x 4 in figure of 2 panels; to 1e-9 in)."""
+    from roughcontact.study.report.plotting import fixed_layout
+
+    plt = pyplot()
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    try:
+        fixed_layout(fig, left=1.0, right=0.5, bottom=0.6, top=0.4, wspace=0.8)
+        a, b = (ax.get_position() for ax in (left, right))
+        assert (a.x0 * 10, (1 - b.x1) * 10, a.y0 * 4, (1 - a.y1) * 4) == pytest.approx((1.0, 0.5, 0.6, 0.4), abs=1e-9)
+        assert (b.x0 - a.x1) * 10 == pytest.approx(0.8, abs=1e-9)
+    finally:
+        plt.close(fig)
+
+
+@pytest.mark.parametrize("fitted", [False, True])
+def test_fig3_text_lies_inside_the_figure(fitted):
+    """Fig. 3 with its fixed margins (no tight_layout): every tick label, axis label and title is
+    drawn inside the figure (its bounding box within the figure's, to half a pixel)."""
+    row = {**NOT_FITTED, "zeta": 1.1, "source": "flat"} if fitted else NOT_FITTED
+    figures, inputs, key = _sphere_inputs([row])
+    plt = pyplot()
+    fig = figures.fig3(plt, inputs, key)
+    try:
+        renderer = fig.canvas.get_renderer()
+        frame = fig.bbox
+        for ax in fig.axes:
+            box = ax.get_tightbbox(renderer)
+            assert box.x0 >= frame.x0 - 0.5 and box.y0 >= frame.y0 - 0.5, (ax.get_title(), box, frame)
+            assert box.x1 <= frame.x1 + 0.5 and box.y1 <= frame.y1 + 0.5, (ax.get_title(), box, frame)
+    finally:
+        plt.close(fig)

@@ -29,11 +29,9 @@ VARIANTS = {
     "partial_slip_figures": "tangential_figures",
 }
 
-#: rules whose scripts still call the layers directly, each to be converted by the session that owns
-#: it (issue #42, item 3); the list only shrinks
-NOT_YET = {
-    "fit_zeta", "crossover", "figures",   # the speed helper's rules
-}
+#: rules whose scripts still call the layers directly (none since 2026-11-29: every rule follows the
+#: convention; a rule added here must say why)
+NOT_YET: set = set()
 
 #: the package modules a script may import beside its rule's module (not an entry point)
 HELPERS = {"roughcontact.study.files.logs"}

@@ -11,13 +11,25 @@ CODE = {rule: code_fingerprint(rule) for rule in ANALYSIS_CODE}
 
 # The models' curves that need no run (Persson, Greenwood-Tripp, MDR, this package's models at the
 # sphere loads; Fig. 3's Greenwood-Tripp curve), once, from the config: computed while the runs
-# are, read by the models and figures rules (study.analysis.model_curves).
+# are, read by the models and figures rules (study.analysis.model_curves). Its priority puts it
+# after the costliest indent jobs and before the cheapest ones, which fill the end of the run phase:
+# first, it took a core from the first runs; last, it held figures and models back after them
+# (benchmarks/RESULTS.md, section 9).
+MODEL_CURVES_PRIORITY = 1 + min(
+    (
+        study_runs.indent_priority(STUDY, study_runs.combo_name(c), INDENT_BATCH)
+        for c in study_runs.combinations(STUDY)
+    ),
+    default=0,
+)
+
+
 rule model_curves:
     output:
         nc="results/model_curves.nc",
     log:
         "logs/model_curves.log",
-    priority: ANALYSIS_PRIORITY  # needs no run: off the analysis' critical path
+    priority: MODEL_CURVES_PRIORITY  # before the cheapest indent jobs
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -35,7 +47,7 @@ rule merge:
         ensemble="results/ensemble.nc",
     log:
         "logs/merge.log",
-    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -129,34 +141,20 @@ rule fine_reference:
         "../scripts/fine_reference.py"
 
 
-rule fit_zeta:
+# zeta(H) of eq. 11 and the crossover force of eqs. 16, 17 (which uses it): one job, stiffness.nc
+# read once (study.rules.crossover); the critical path merge, crossover, figures, summary.
+rule crossover:
     input:
         stiffness=rules.merge.output.stiffness,
     output:
-        csv="results/zeta.csv",
-        html=report(
+        zeta_csv="results/zeta.csv",
+        zeta_html=report(
             "results/zeta.html",
             caption="../report/zeta_table.rst",
             category="Tables",
             labels={"table": "zeta(H)"},
         ),
-        nc="results/zeta.nc",
-    log:
-        "logs/fit_zeta.log",
-    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
-    conda:
-        "../../envs/roughcontact.yaml"
-    params:
-        cfg=config,
-    script:
-        "../scripts/fit_zeta.py"
-
-
-rule crossover:
-    input:
-        stiffness=rules.merge.output.stiffness,
-        zeta=rules.fit_zeta.output.csv,
-    output:
+        zeta_nc="results/zeta.nc",
         csv="results/crossover.csv",
         html=report(
             "results/crossover.html",
@@ -167,7 +165,7 @@ rule crossover:
         nc="results/crossover.nc",
     log:
         "logs/crossover.log",
-    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, zeta, crossover, figures
+    priority: ANALYSIS_PRIORITY + 2  # the critical path: merge, crossover, figures
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -195,7 +193,7 @@ rule exponents:
         ),
     log:
         "logs/exponents.log",
-    priority: ANALYSIS_PRIORITY + 1  # claims waits for it: beside zeta and crossover
+    priority: ANALYSIS_PRIORITY + 1  # claims waits for it: beside crossover
     conda:
         "../../envs/roughcontact.yaml"
     params:
@@ -208,8 +206,8 @@ rule claims:
     input:
         crossover=rules.crossover.output.csv,
         replicates=rules.crossover.output.nc,
-        zeta=rules.fit_zeta.output.csv,
-        zeta_replicates=rules.fit_zeta.output.nc,
+        zeta=rules.crossover.output.zeta_csv,
+        zeta_replicates=rules.crossover.output.zeta_nc,
         stiffness=rules.merge.output.stiffness,
         exponents=rules.exponents.output.csv,
         pull_off=pull_off_table,
@@ -238,7 +236,7 @@ rule claims:
 rule models:
     input:
         stiffness=rules.merge.output.stiffness,
-        zeta=rules.fit_zeta.output.csv,
+        zeta=rules.crossover.output.zeta_csv,
         grid_error=grid_error_table,
         fine_reference=fine_reference_table,
         model_curves=rules.model_curves.output.nc,

@@ -9,7 +9,7 @@ FIGURE_SPECS = _figures.figure_specs(STUDY)
 rule figures:
     input:
         ensemble=rules.merge.output.ensemble,
-        zeta=rules.fit_zeta.output.csv,
+        zeta=rules.crossover.output.zeta_csv,
         crossover=rules.crossover.output.csv,
         model_curves=rules.model_curves.output.nc,
     output:
@@ -41,7 +41,7 @@ rule summary:
     input:
         claims=rules.claims.output.csv if STUDY.generated else [],
         crossover=rules.crossover.output.csv if STUDY.generated else [],
-        zeta=rules.fit_zeta.output.csv if STUDY.generated else [],
+        zeta=rules.crossover.output.zeta_csv if STUDY.generated else [],
         models=rules.models.output.csv if STUDY.generated else [],
         figures=rules.figures.output if STUDY.generated else [],
         measured_fits=measured_tables("measured_spectrum"),

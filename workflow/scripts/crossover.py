@@ -1,10 +1,10 @@
-"""Snakemake `crossover` job: stiffness + zeta -> results/crossover.csv (eq. 16 fitted, F_tr with a 95 % interval)."""
+"""Snakemake `crossover` job: stiffness.nc -> results/zeta.csv, zeta.nc (eq. 11) and results/crossover.csv,
+crossover.nc (eq. 16 fitted, F_tr with a 95 % interval), each table with its report page."""
 from roughcontact.study.files.logs import log_to
-from roughcontact.study.analysis.crossover import run_crossover
-from roughcontact.study.report.tables import csv_to_html
+from roughcontact.study.rules import crossover
 
 snakemake = globals()["snakemake"]
+out = snakemake.output
 with log_to(snakemake.log[0]):
-    run_crossover(snakemake.params.cfg, snakemake.input.stiffness, snakemake.input.zeta, snakemake.output.csv,
-                  snakemake.output.nc)
-    csv_to_html(snakemake.output.csv, snakemake.output.html, "crossover")
+    crossover.run(snakemake.params.cfg, snakemake.input.stiffness, zeta_csv=out.zeta_csv, zeta_html=out.zeta_html,
+                  zeta_nc=out.zeta_nc, crossover_csv=out.csv, crossover_html=out.html, crossover_nc=out.nc)

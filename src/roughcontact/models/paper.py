@@ -23,7 +23,6 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from scipy.special import gamma
 
 from .._validate import check_finite_positive, check_hurst
 from ..surfaces.bodies import body_height, radial_distance
@@ -53,6 +52,8 @@ __all__ = [
 
 def kappa(hurst):
     """κ(H) = H ∫₀¹ ξ^(H−1)/√(1−ξ²) dξ = (√π/2) H Γ(H/2)/Γ(H/2 + 1/2) (eq. 8)."""
+    from scipy.special import gamma   # here: a job that only reads runs does not load scipy.special
+
     hurst = np.asarray(hurst, dtype=float)
     return np.sqrt(np.pi) / 2.0 * hurst * gamma(hurst / 2.0) / gamma(hurst / 2.0 + 0.5)
 

@@ -32,7 +32,7 @@ ANALYSIS_CODE = {
     "claims": ("roughcontact.study.rules.claims",),
     "area": ("roughcontact.study.rules.area",),
     "histograms_figure": ("roughcontact.study.rules.histograms_figure",),
-    "figures": ("roughcontact.study.report.figures",),
+    "figures": ("roughcontact.study.rules.figures",),
     "model_curves": ("roughcontact.study.rules.model_curves",),
     "summary": ("roughcontact.study.rules.summary",),
     "grid_error": ("roughcontact.study.rules.grid_error",),

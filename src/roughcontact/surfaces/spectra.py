@@ -29,7 +29,6 @@ import dataclasses
 import math
 
 import numpy as np
-from scipy.special import j0
 
 from .._validate import check_finite_positive, check_grid_size, check_hurst
 from .roughness import band, wavevectors
@@ -126,6 +125,8 @@ class Spectrum:
         spectrum (J0: Bessel function of the first kind); ``SF → 2 h_rms²`` for lags much longer
         than the longest wavelength. Vectorised over *lag*.
         """
+        from scipy.special import j0   # here: scipy.special costs every job that imports the package 0.2 s
+
         lag = np.asarray(lag, dtype=float)
         return 2.0 * np.sum(self.variance * (1.0 - j0(np.multiply.outer(lag, self.q))), axis=-1)
 

@@ -2,7 +2,7 @@
 :func:`roughcontact.study.analysis.exponents.exponent_table` measures, drawn for the report."""
 from __future__ import annotations
 
-from .plotting import pyplot, save_png
+from .plotting import fixed_layout, pyplot, save_png
 
 __all__ = ["curves", "exponents_figure"]
 
@@ -32,5 +32,5 @@ def exponents_figure(table, path) -> None:
         ax.legend(fontsize=6)
     if not kinds:
         axes[0][0].text(0.5, 0.5, "no resolved window", ha="center")
-    fig.tight_layout()
+    fixed_layout(fig, left=0.7, right=0.18, bottom=0.62, top=0.38, wspace=0.72)
     save_png(fig, path)

@@ -17,6 +17,7 @@ from ..config import axes
 from ..runs import naming as runs
 from ..analysis.ensemble import resolved
 from ..config.settings import StudySettings
+from .plotting import fixed_layout
 
 log = logging.getLogger(__name__)
 
@@ -139,7 +140,7 @@ def fig1(plt, inputs: Inputs, _key):
     a.set(title=f"(a) H = {H0:g}, h_rms = {h0:g}, seed {seed}", xlabel="x", ylabel="y")
     b.plot((np.arange(n) + 0.5) * L / n, z[:, n // 2], lw=0.8)
     b.set(title="(b) cut at y = L/2", xlabel="x", ylabel="z")
-    fig.tight_layout()
+    fixed_layout(fig, left=0.7, right=0.2, bottom=0.6, top=0.4, wspace=1.45)
     return fig
 
 
@@ -238,7 +239,7 @@ def fig3(plt, inputs: Inputs, key):
     if beyond:
         other.set(xscale="log", yscale="log", xlabel="F / (E* L²)", title="beyond the paper")
         other.legend(fontsize=6.5, loc="upper left")
-    fig.tight_layout()
+    fixed_layout(fig, left=0.8, right=0.32, bottom=0.62, top=0.38, wspace=0.36)
     return fig
 
 
@@ -258,7 +259,7 @@ def fig4(plt, inputs: Inputs, _key):
         ax.set(title=title, xlabel="r")
     axes[0].set_ylabel("z")
     fig.suptitle(f"R = {R0:g}, H = {H0:g}, h_rms = {h0:g}, {inputs.zeta_label(H0)}", fontsize=9)
-    fig.tight_layout()
+    fixed_layout(fig, left=0.78, right=0.18, bottom=0.6, top=0.68, wspace=0.67)
     return fig
 
 
@@ -288,7 +289,7 @@ def zeta(plt, inputs: Inputs, _key):
         ax.text(0.03, 0.03, f"ζ not fitted at H = {hs}: {'; '.join(why)} (zeta.csv)", transform=ax.transAxes,
                 fontsize=7, va="bottom", ha="left", wrap=True, color="0.3")
     ax.legend(fontsize=7, loc="upper right")
-    fig.tight_layout()
+    fixed_layout(fig, left=0.7, right=0.28, bottom=0.6, top=0.18)
     return fig
 
 
@@ -334,7 +335,7 @@ def collapse(plt, inputs: Inputs, _key):
         ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr", title=f"H = {hurst:g}")
         ax.legend(fontsize=6)
     fig.suptitle("all sphere runs (ensemble means, >= fit.resolved_cells contact cells) over eq. 16", fontsize=9)
-    fig.tight_layout()
+    fixed_layout(fig, left=0.8, right=0.18, bottom=0.62, top=0.68, wspace=0.42, hspace=1.0)
     return fig
 
 

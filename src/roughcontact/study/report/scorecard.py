@@ -11,7 +11,7 @@ from ..analysis import decision
 from ..analysis import not_modelled as unmodelled
 from ..analysis.scorecard import empty_reason
 from ..config import axes
-from .plotting import MAX_CURVES, chunks, panel_grid, pyplot, save_png
+from .plotting import MAX_CURVES, chunks, fixed_layout, panel_grid, pyplot, save_png
 from .tables import not_measured, write_html_table
 
 __all__ = ["scorecard_lead", "scorecard_figure", "write_scorecard_page"]
@@ -81,7 +81,7 @@ def scorecard_figure(path, label: str, curve, table) -> None:
         ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1")
         ax.legend(fontsize=7)
     fig.suptitle(label + ("" if "grid_error" in curve else " (grid error not measured)"), fontsize=10)
-    fig.tight_layout()
+    fixed_layout(fig, left=0.82, right=0.18, bottom=0.62, top=0.62, wspace=0.42, hspace=1.0)
     save_png(fig, path)
 
 
