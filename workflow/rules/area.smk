@@ -21,6 +21,7 @@ rule area:
         ),
     log:
         "logs/area.log",
+    priority: ANALYSIS_PRIORITY  # needs only merge: beside crossover and figures, not alone at the end
     conda:
         "../../envs/roughcontact.yaml"
     params:
