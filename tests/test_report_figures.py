@@ -111,6 +111,33 @@ def test_scorecard_figure_is_faceted(tmp_path, monkeypatch):
         pyplot().close(figures[0])
 
 
+def test_scorecard_figure_scales_to_the_scored_loads(tmp_path, monkeypatch):
+    """An unresolved load whose grid error is 3e15 (as on a coarse companion with no contact there)
+    does not set the axis: the y-range stays that of the scored loads' bands and models (within
+    ±0.5 here, where the largest |value| drawn at a resolved load is 0.3)."""
+    import pandas as pd
+
+    from roughcontact.study.report import scorecard
+
+    figures = []
+    monkeypatch.setattr(scorecard, "save_png", lambda fig, path, **_: figures.append(fig))
+    force = np.geomspace(1e-5, 1e-2, 6)
+    resolved = np.array([0, 1, 1, 1, 1, 1])
+    curve = xr.Dataset({"eq16_paper": ("force", np.array([9.0, 0.1, 0.05, 0.0, -0.05, -0.1])),
+                        "band_low": ("force", np.array([-50.0, -0.1, -0.1, -0.1, -0.1, -0.1])),
+                        "band_high": ("force", np.array([50.0, 0.1, 0.1, 0.1, 0.1, 0.1])),
+                        "grid_error": ("force", np.array([3e15, 0.3, 0.2, 0.1, 0.0, 0.0])),
+                        "resolved": ("force", resolved)}, coords={"force_normalized": ("force", force)})
+    table = pd.DataFrame([{"combination": "c", "model": "eq16_paper", "max_rel_dev": 0.1, "not_modelled": "",
+                           "decision": "worse"}])
+    scorecard.scorecard_figure(tmp_path / "f.png", "c", curve, table)
+    try:
+        low, high = figures[0].axes[0].get_ylim()
+        assert -0.5 < low and high < 0.5, (low, high)
+    finally:
+        pyplot().close(figures[0])
+
+
 def _sphere_inputs(zeta_rows):
     """figures.Inputs of one sphere combination (H 0.7, R 0.5, h 0.01 on 33²) whose ensemble follows
     eq. 16, with the ζ table *zeta_rows* (dicts of zeta.csv's columns) and no crossover row."""

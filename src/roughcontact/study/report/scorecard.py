@@ -60,13 +60,15 @@ def scorecard_figure(path, label: str, curve, table) -> None:
     panels = max(1, math.ceil(len(names) / (MAX_CURVES - 1)))
     groups = chunks(names, math.ceil(len(names) / panels) if names else 1)
     fig, axes = panel_grid(plt, len(groups), width=6, height=4, max_columns=2, sharey=True)
+    # the bands at the scored (resolved) loads only: at an unresolved load the grid error can be
+    # 1e15 or infinite, and the axis would hide every model
+    low, high = curve["band_low"].values[shown], curve["band_high"].values[shown]
     for ax, group in zip(axes, groups):
         if "grid_error" in curve:
-            g = np.abs(curve["grid_error"].values)
-            ax.fill_between(force, -np.sqrt(curve["band_low"].values ** 2 + g ** 2),
-                            np.sqrt(curve["band_high"].values ** 2 + g ** 2), color="0.93",
+            g = np.abs(curve["grid_error"].values[shown])
+            ax.fill_between(force[shown], -np.sqrt(low ** 2 + g ** 2), np.sqrt(high ** 2 + g ** 2), color="0.93",
                             label="band and grid error")
-        ax.fill_between(force, curve["band_low"], curve["band_high"], color="0.85", label="BEM ensemble, 95 % band")
+        ax.fill_between(force[shown], low, high, color="0.85", label="BEM ensemble, 95 % band")
         ax.axhline(0, color="0.4", lw=0.8)
         for name in group:
             mark = table[(table["combination"] == label) & (table["model"] == name)]
