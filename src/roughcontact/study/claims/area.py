@@ -18,7 +18,7 @@ regime, is where one summit's Hertz area ``π (3F R_s/(4E*))^(2/3)`` meets the l
 (:func:`roughcontact.models.area.laws.single_asperity_force`), with the summit radius ``R_s =
 c_s/h″_rms`` of :mod:`roughcontact.models.area.three_regime` (``c_s`` = 1.34, fitted on its
 calibration sweep before any cutoff study; ``h″_rms`` the grid spectrum's rms Laplacian). The bound
-is that closed form, chosen before the cutoff studies' κ was read per load, not where κ reaches 2.
+is that closed form with those constants as they are, not moved toward where the measured κ reaches 2.
 Pastewka & Robbins' own words on the regime's end were not at hand offline (only their abstract):
 the criterion is this package's (``docs/guide/area.md``).
 
