@@ -24,7 +24,11 @@ from roughcontact.study.files.directory import StudyDirectory
 DOCS = Path(__file__).resolve().parent
 #: the figure shown for each preset (a file of results/figures/, first match)
 FIGURE = {"zeta": ["zeta.png"], "zeta-law": ["zeta.png"], "zeta-law-fine": ["zeta.png"], "finite-size": ["../exponents/local_exponents.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"],
-          "adhesion": ["../adhesion_figures/pull_off.png"], "tangential": ["../tangential/ratio.png"]}
+          "adhesion": ["../adhesion_figures/pull_off.png"], "tangential": ["../tangential/ratio.png"],
+          "area-cutoff": ["../area/area.png"]}
+#: the area scorecard's columns shown (results/area/area_models.csv), where a preset has area-resolved loads
+AREA_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "rms_rel_dev", "systematic_low", "systematic_low_ci_low",
+                "systematic_low_ci_high", "systematic_low_verdict", "n_loads"]
 SCORE_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "max_rel_dev_ci_low", "max_rel_dev_ci_high",
                  "rms_rel_dev", "n_loads"]
 #: the scorecard's decision (roughcontact.study.analysis.decision), shown where models.csv has it
@@ -128,6 +132,16 @@ def make_page(preset: str, workdir: Path, wall: float | None) -> Path:
                      "the grid error is in it)."
                      if decided else ""),
                   "", _table(models[columns]), ""]
+    area = results / "area" / "area_models.csv"
+    if area.is_file() and area.stat().st_size > 1:
+        table = pd.read_csv(area)
+        table = table[table["n_loads"] > 0].sort_values(["combination", "rank"])
+        if len(table):
+            lines += ["## Area scorecard", "",
+                      "Per area model over the area-resolved loads: the largest and the rms of `|A_model/A_BEM - 1|`, "
+                      "and the mean deviation below F_A (each load weighted by the inverse variance of the ensemble "
+                      "mean) with its 95 % bootstrap-over-seeds interval (docs/guide/area.md).", "",
+                      _table(table[[c for c in AREA_COLUMNS if c in table]]), ""]
     if study.has("stickiness"):
         lines += ["## Stickiness of flat surfaces (claim q)", "",
                   "Per Pastewka & Robbins number N: the mean loading slope F/A (units of h'E*) where the contact "

@@ -1,4 +1,5 @@
-"""Claims (u), (v) and the area scorecard on ensembles built from the area laws themselves (closed forms)."""
+"""Claims (u), (v), (w) and the area scorecard on ensembles built from the area laws themselves (closed forms),
+and the closed form of the end of the one-asperity regime, F_1."""
 from __future__ import annotations
 
 import math
@@ -9,7 +10,7 @@ import pytest
 import xarray as xr
 
 from roughcontact.models import area as area_models
-from roughcontact.models.area import laws
+from roughcontact.models.area import laws, three_regime
 from roughcontact.models.scorecard import Surface
 from roughcontact.study.analysis import area as area_analysis
 from roughcontact.study.claims import ClaimInputs, claims
@@ -23,24 +24,29 @@ H_LINEAR, H_HERTZ = 9e-3, 2e-3
 FORCE = np.geomspace(1e-6, 4e-2, 13)
 
 
-def _study(h_rms):
-    """One sphere combination on 513² without a cutoff (2 cells per shortest wavelength), 4 seeds."""
+def _study(h_rms, cutoff=None, radius=RADIUS):
+    """One sphere combination on 513² without a cutoff (2 cells per shortest wavelength) or with
+    *cutoff* (length), 4 seeds."""
     return StudySettings.of(resolve_config({
-        "grid": {"n": N}, "hurst": [HURST], "radius": [RADIUS], "h_rms": [h_rms], "seeds": 4,
-        "forces": {"sphere": {"from": 1e-6, "to": 4e-2, "count": 13}}, "fit": {"bootstrap": 200}}))
+        "grid": {"n": N}, "hurst": [HURST], "radius": [radius], "h_rms": [h_rms], "seeds": 4,
+        "cutoff": [cutoff], "forces": {"sphere": {"from": 1e-6, "to": 4e-2, "count": 13}}, "fit": {"bootstrap": 200}}))
 
 
-def _slope(h_rms):
-    return area_models.rms_slope(Surface(hurst=HURST, h_rms=h_rms, radius=RADIUS, length=1.0, n=N, e_star=1.0))
+def _surface(h_rms, cutoff=None, radius=RADIUS):
+    return Surface(hurst=HURST, h_rms=h_rms, radius=radius, length=1.0, n=N, e_star=1.0, cutoff=cutoff)
 
 
-def _groups(area_per_seed: np.ndarray, h_rms, cells=None) -> dict:
+def _slope(h_rms, cutoff=None):
+    return area_models.rms_slope(_surface(h_rms, cutoff))
+
+
+def _groups(area_per_seed: np.ndarray, h_rms, cells=None, cutoff=None, radius=RADIUS) -> dict:
     """A merged sphere group of one combination with the areas *area_per_seed* (seed, force) and
     the contact cells A n²/L² (or *cells*)."""
     seeds = area_per_seed.shape[0]
     cells = np.rint(area_per_seed * N**2).astype(int) if cells is None else cells
-    axes = {"hurst": [HURST], "radius": [RADIUS], "exponent": [2.0], "h_rms": [h_rms], "rolloff": [1.0],
-            "cutoff": [0.0], "hardness": [math.inf]}
+    axes = {"hurst": [HURST], "radius": [radius], "exponent": [2.0], "h_rms": [h_rms], "rolloff": [1.0],
+            "cutoff": [cutoff or 0.0], "hardness": [math.inf]}
     dims = (*axes, "seed", "force")
     shape = (1,) * len(axes)
     ds = xr.Dataset({"stiffness": (dims, np.ones(shape + area_per_seed.shape)),
@@ -50,10 +56,10 @@ def _groups(area_per_seed: np.ndarray, h_rms, cells=None) -> dict:
     return {"sphere": ds}
 
 
-def _rows(letter, h_rms, area=None, cells=None):
+def _rows(letter, h_rms, area=None, cells=None, cutoff=None, radius=RADIUS):
     area = _joined(h_rms) if area is None else area
-    inputs = ClaimInputs(cross=pd.DataFrame(), replicates=None, zeta=pd.DataFrame(), study=_study(h_rms),
-                         groups=_groups(area, h_rms, cells))
+    inputs = ClaimInputs(cross=pd.DataFrame(), replicates=None, zeta=pd.DataFrame(),
+                         study=_study(h_rms, cutoff, radius), groups=_groups(area, h_rms, cells, cutoff, radius))
     return table_rows(claims()[letter], inputs)
 
 
@@ -157,3 +163,127 @@ def test_systematic_deviation_weighs_each_load_by_its_inverse_variance():
     mean = np.ones(2)
     value = area_analysis._systematic(np.array([1.1, 1.3]), mean, boot, np.array([True, True]), 0.95)[0]
     assert value == pytest.approx(0.12, rel=1e-12)
+
+
+# --- the end of the one-asperity regime, F_1, and the window of claim (u) -----------------------------
+
+#: the cutoff study's spectrum on 513²: λ_c = L/64 (8 cells per shortest wavelength), h_rms = 2e-2, so that
+#: 0.1 F_1 (5e-6) lies above two loads of FORCE and F_1 (5e-5) well below 0.1 F_A (7e-3)
+CUTOFF, H_SUMMIT = 1.0 / 64, 2e-2
+
+
+def _summit():
+    """``(R_s, F_1, h′_rms, h″_rms)`` of the cutoff spectrum (:func:`area_analysis.area_context`'s)."""
+    surface = _surface(H_SUMMIT, CUTOFF)
+    curvature = three_regime.rms_curvature(surface)
+    slope = area_models.rms_slope(surface)
+    summit = three_regime.SUMMIT / curvature
+    return summit, laws.single_asperity_force(summit_radius=summit, e_star=1.0, rms_slope=slope), slope, curvature
+
+
+def test_at_f1_one_summit_s_hertz_area_equals_the_linear_law_s():
+    """At F_1, π (3 F_1 R_s/(4E*))^(2/3) = 2 F_1/(E* h′_rms) (relative 1e-10)."""
+    summit, f_1, slope, curvature = _summit()
+    one = three_regime.summit_area(f_1, e_star=1.0, rms_curvature=curvature)
+    assert one == pytest.approx(laws.linear_area(f_1, e_star=1.0, rms_slope=slope), rel=1e-10)
+
+
+def test_f1_is_the_hertz_crossover_with_the_summit_radius():
+    """F_1 = F_A (R_s/R)² (relative 1e-12): the same closed form, R_s for R."""
+    summit, f_1, slope, _ = _summit()
+    f_a = laws.area_crossover_force(radius=RADIUS, e_star=1.0, rms_slope=slope)
+    assert f_1 == pytest.approx(f_a * (summit / RADIUS) ** 2, rel=1e-12)
+
+
+def test_f1_vanishes_as_the_curvature_grows():
+    """F_1 ∝ 1/h″_rms² at fixed h′_rms: a 1000 times sharper summit lowers it 1e6 times (relative 1e-12);
+    without a cutoff h″_rms grows with the grid and the one-asperity regime leaves the sweep."""
+    summit, f_1, slope, _ = _summit()
+    sharp = laws.single_asperity_force(summit_radius=summit / 1000, e_star=1.0, rms_slope=slope)
+    assert sharp == pytest.approx(f_1 * 1e-6, rel=1e-12)
+
+
+def test_below_f1_the_summit_s_area_is_the_larger():
+    """At F_1/8 the one-summit area is 8^(1/3) = 2 times the linear law's (relative 1e-10)."""
+    summit, f_1, slope, curvature = _summit()
+    ratio = (three_regime.summit_area(f_1 / 8, e_star=1.0, rms_curvature=curvature)
+             / laws.linear_area(f_1 / 8, e_star=1.0, rms_slope=slope))
+    assert ratio == pytest.approx(2.0, rel=1e-10)
+
+
+def _three_regimes(kappa=2.0, seeds=4):
+    """Every seed's area one summit's Hertz area below F_1 (A ∝ F^(2/3)), κ F/(E* h′) from F_1 to F_A,
+    Hertz above, on the cutoff spectrum."""
+    _, f_1, slope, curvature = _summit()
+    one = three_regime.summit_area(FORCE, e_star=1.0, rms_curvature=curvature)
+    linear = laws.linear_area(FORCE, e_star=1.0, rms_slope=slope, kappa=kappa)
+    hertz = laws.hertz_area(FORCE, radius=RADIUS, e_star=1.0)
+    f_a = laws.area_crossover_force(radius=RADIUS, e_star=1.0, rms_slope=slope)
+    area = np.where(FORCE < f_1, one, np.where(FORCE < f_a, linear, hertz))
+    return area[None, :].repeat(seeds, 0)
+
+
+def _cutoff_rows(letter, area):
+    """Claim *letter* on the cutoff spectrum, every load resolved (1000 contact cells)."""
+    return _rows(letter, H_SUMMIT, area, cells=np.full(area.shape, 1000), cutoff=CUTOFF)
+
+
+def test_linear_claim_skips_the_one_asperity_regime():
+    """Areas ∝ F^(2/3) below F_1 and 2F/(E* h′) above: (u)'s κ is 2 (relative 1e-12), consistent (the
+    five loads below F_1, whose κ is 2.3 to 7.4, are left out)."""
+    kappa = _cutoff_rows("u", _three_regimes())[0]
+    assert kappa["measured"] == pytest.approx(2.0, rel=1e-12), kappa["loads"]
+    assert kappa["verdict"] == "consistent", kappa["reason"]
+
+
+def test_linear_claim_exponent_above_f1_is_one():
+    """The same ensemble: (u)'s exponent over F_1 ≤ F ≤ 0.1 F_A is 1 (relative 1e-12)."""
+    exponent = _cutoff_rows("u", _three_regimes())[1]
+    assert exponent["measured"] == pytest.approx(1.0, rel=1e-12), exponent["loads"]
+
+
+def test_linear_claim_with_kappa_three_differs():
+    """Areas 3F/(E* h′) above F_1: κ = 3 (relative 1e-12), 50 % above 2: differs."""
+    kappa = _cutoff_rows("u", _three_regimes(kappa=3.0))[0]
+    assert kappa["measured"] == pytest.approx(3.0, rel=1e-12), kappa["loads"]
+    assert kappa["verdict"] == "differs", kappa["reason"]
+
+
+def test_the_window_states_f1():
+    """The row names F_1 and its formula."""
+    kappa = _cutoff_rows("u", _three_regimes())[0]
+    _, f_1, _, _ = _summit()
+    assert f"F_1 = {f_1:.3g} E* L^2" in kappa["loads"], kappa["loads"]
+
+
+def test_single_asperity_claim_on_a_summit_s_hertz_area_has_exponent_two_thirds():
+    """Areas π (3F R_s/(4E*))^(2/3) below F_1: (w)'s exponent over F ≤ 0.1 F_1 is 2/3 (relative 1e-12)."""
+    exponent = _cutoff_rows("w", _three_regimes())[0]
+    assert exponent["measured"] == pytest.approx(2.0 / 3.0, rel=1e-12), exponent["loads"]
+
+
+def test_single_asperity_claim_with_scatter_is_consistent():
+    """The same areas times 5 % scatter per seed and load (8 seeds, seeded): (w)'s interval holds 2/3."""
+    scatter = 1 + 0.05 * np.random.default_rng(11).standard_normal((8, FORCE.size))
+    exponent = _cutoff_rows("w", _three_regimes(seeds=8) * scatter)[0]
+    assert exponent["verdict"] == "consistent", exponent["reason"]
+
+
+def test_single_asperity_claim_on_a_linear_area_differs():
+    """Areas 2F/(E* h′) at every load: (w)'s exponent is 1 (relative 1e-12): differs from 2/3."""
+    slope = _slope(H_SUMMIT, CUTOFF)
+    area = laws.linear_area(FORCE, e_star=1.0, rms_slope=slope)[None, :].repeat(4, 0)
+    exponent = _cutoff_rows("w", area)[0]
+    assert exponent["measured"] == pytest.approx(1.0, rel=1e-12), exponent["loads"]
+    assert exponent["verdict"] == "differs", exponent["reason"]
+
+
+def test_a_sphere_with_no_linear_regime_is_not_swept():
+    """R = 0.03 on the cutoff spectrum (R_s = 0.013): R/R_s < √10, F_1 ≥ 0.1 F_A, the window of (u) is
+    empty: both rows untested: not swept, naming the empty window."""
+    radius = 0.03
+    area = laws.hertz_area(FORCE, radius=radius, e_star=1.0)[None, :].repeat(4, 0)
+    rows = _rows("u", H_SUMMIT, area, cells=np.full(area.shape, 1000), cutoff=CUTOFF, radius=radius)
+    for r in rows:
+        assert (r["verdict"], r["untested_because"]) == ("untested", "not swept"), r["reason"]
+        assert "is empty" in r["reason"], r["reason"]

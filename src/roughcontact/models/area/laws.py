@@ -12,6 +12,10 @@ Pastewka & Robbins (2016), not the one-profile slope ``⟨(∂h/∂x)²⟩ = h�
 * The linear law joined to Hertz (Pastewka & Robbins, Appl. Phys. Lett. 108, 221601 (2016),
   doi:10.1063/1.4950802: linear below the crossover, Hertz above): ``A = min(κ F/(E* h′_rms), π a²)``,
   the two equal at :func:`area_crossover_force`.
+* The end of the one-asperity regime (this package's criterion; Pastewka & Robbins 2016 describe the
+  regime, a Hertz contact on the first summit, ``A ∝ F^(2/3)``): the force where one summit's Hertz
+  area ``π (3F R_s/(4E*))^(2/3)`` equals the linear law's, :func:`single_asperity_force`, the same
+  closed form as ``F_A`` with the summit radius ``R_s`` for ``R``: ``F_1 = F_A (R_s/R)²``.
 * Persson's area under the sphere's nominal pressure: the flat-surface law
   ``A/A0 = erf(√2 p/(E* h′_rms))`` (Persson 2001; Surf. Sci. Rep. 61, 201 (2006),
   doi:10.1016/j.surfrep.2006.04.001: ``erf(p/(2√G))``, ``G = E*² h′_rms²/8``) applied at each
@@ -30,7 +34,7 @@ from scipy.special import erf
 from ..paper import hertz_contact_radius
 
 __all__ = ["PERSSON_KAPPA", "SIMULATION_KAPPA", "hertz_area", "linear_area", "joined_area", "area_crossover_force",
-           "persson_area", "persson_area_fraction", "persson_fraction_at"]
+           "single_asperity_force", "persson_area", "persson_area_fraction", "persson_fraction_at"]
 
 #: κ of Persson's theory, √(8/π) ≈ 1.596 (small-pressure limit of erf, Persson 2001)
 PERSSON_KAPPA = math.sqrt(8.0 / math.pi)
@@ -61,6 +65,19 @@ def area_crossover_force(*, radius: float, e_star: float, rms_slope: float, kapp
     """The force where ``κ F/(E* h′_rms) = π a²``: ``F_A = (π/κ)³ (3R/4)² E* h′_rms³`` (there Hertz's mean
     pressure ``F/(π a²)`` equals ``E* h′_rms/κ``)."""
     return (math.pi / kappa) ** 3 * (0.75 * radius) ** 2 * e_star * rms_slope**3
+
+
+def single_asperity_force(*, summit_radius: float, e_star: float, rms_slope: float,
+                          kappa: float = SIMULATION_KAPPA):
+    """The force where one summit's Hertz area equals the linear law's (force units):
+    ``π (3 F R_s/(4E*))^(2/3) = κ F/(E* h′_rms)`` at ``F_1 = (π/κ)³ (3R_s/4)² E* h′_rms³``
+    (:func:`area_crossover_force` with the summit radius ``R_s`` for the sphere's ``R``).
+
+    Below ``F_1`` the contact is one (or a few) summits near the apex and ``A ∝ F^(2/3)``; above it
+    the linear law's area is the larger. Assumes an elastic paraboloidal summit of radius *summit_radius*
+    (length) and the linear law with *kappa*.
+    """
+    return area_crossover_force(radius=summit_radius, e_star=e_star, rms_slope=rms_slope, kappa=kappa)
 
 
 def persson_area_fraction(beta):

@@ -30,7 +30,8 @@ import math
 import numpy as np
 
 from ...models import area as area_models
-from ...models.area.laws import SIMULATION_KAPPA, area_crossover_force
+from ...models.area.laws import SIMULATION_KAPPA, area_crossover_force, single_asperity_force
+from ...models.area.three_regime import SUMMIT, rms_curvature
 from ..config.settings import StudySettings
 from .combination import combination, combo_label
 from .ensemble import combinations
@@ -76,6 +77,14 @@ class AreaContext:
         ``h′_rms = √⟨|∇h|²⟩`` of the grid's spectrum (:func:`roughcontact.models.area.rms_slope`).
     crossover_force : float
         ``F_A`` of the linear law with κ = 2 and Hertz (force units).
+    summit_radius : float
+        ``R_s = c_s/h″_rms`` (length): the summit radius of
+        :mod:`roughcontact.models.area.three_regime` (``c_s`` its fitted ``SUMMIT``, ``h″_rms`` the
+        grid spectrum's rms Laplacian); ``inf`` where the spectrum has no curvature.
+    summit_force : float
+        ``F_1``, the end of the one-asperity regime: the force where one summit's Hertz area
+        ``π (3F R_s/(4E*))^(2/3)`` equals the linear law's with κ = 2
+        (:func:`roughcontact.models.area.laws.single_asperity_force`; force units).
     wavelength_cells : float
         ``λ_s/Δ`` (:func:`cells_per_wavelength`).
     min_cells : float
@@ -89,6 +98,8 @@ class AreaContext:
     surface: object
     rms_slope: float
     crossover_force: float
+    summit_radius: float
+    summit_force: float
     wavelength_cells: float
     min_cells: float
     resolved: np.ndarray
@@ -107,8 +118,12 @@ def area_context(where: dict, data, study) -> AreaContext:
     scale = "no cutoff: the roughness reaches the grid scale; " if wavelength <= 2 else ""
     why = (f"area needs >= {needed:g} mean contact cells at {wavelength:g} cells per shortest wavelength "
            f"(grid study, {MEASURED_ON}; {scale}a cutoff of more cells or a larger grid.n lowers it)")
+    curvature = rms_curvature(surface)
+    summit = SUMMIT / curvature if curvature > 0 else math.inf
     return AreaContext(surface, slope, area_crossover_force(radius=surface.radius, e_star=surface.e_star,
                                                             rms_slope=slope, kappa=SIMULATION_KAPPA),
+                       summit, single_asperity_force(summit_radius=summit, e_star=surface.e_star, rms_slope=slope,
+                                                     kappa=SIMULATION_KAPPA),
                        wavelength, needed, cells >= needed, why)
 
 

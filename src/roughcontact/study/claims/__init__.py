@@ -25,9 +25,10 @@ exponents of flat surfaces against Pastewka et al. (2013) and Pohrt & Popov (201
 Tangential contact (axes ``poisson``, ``friction``): (r) the full-stick k_t/k_n against Mindlin's
 2(1−ν)/(2−ν) on each branch; (s) k_t(Q) against Cattaneo–Mindlin above the crossover and
 Ciavarella–Jäger below it; (t) the largest micro-slip against Grzemba et al.'s μ d E*/G*.
-Real contact area (Hyun et al. 2004; Pastewka & Robbins 2016): (u) below the crossover
-A = κ F/(E* h′_rms) with κ ≈ 2; (v) above it A → π a² (Hertz), each at the loads whose area is
-resolved (:mod:`roughcontact.study.analysis.area`).
+Real contact area (Hyun et al. 2004; Pastewka & Robbins 2016): (u) between the one-asperity
+regime's end F_1 and the crossover A = κ F/(E* h′_rms) with κ ≈ 2; (v) above the crossover A → π a²
+(Hertz); (w) below F_1 one summit, A ∝ F^(2/3); each at the loads whose area is resolved
+(:mod:`roughcontact.study.analysis.area`).
 
 Each claim is one :class:`Claim` (its letter, statement, the inputs it needs and its estimator:
 ``rows(inputs)`` over the whole study, or ``estimate(combination)`` over one sweep combination
@@ -35,7 +36,7 @@ with ``applies``, the rule of the combinations it is tested on; the registry loo
 combinations), registered by a module of
 this package: :mod:`roughcontact.study.claims.paper` (a)-(h), :mod:`roughcontact.study.claims.zeta_law` (c'), :mod:`roughcontact.study.claims.effects` (i)-(k),
 :mod:`roughcontact.study.claims.exponents` (l), (m), :mod:`roughcontact.study.claims.adhesion` (n)-(q),
-:mod:`roughcontact.study.claims.tangential` (r)-(t), :mod:`roughcontact.study.claims.area` (u), (v).
+:mod:`roughcontact.study.claims.tangential` (r)-(t), :mod:`roughcontact.study.claims.area` (u)-(w).
 :func:`claims_table` loops over the registry; a new claim is one
 object in one module (worked example in the package guide, ``docs/guide/package.md``); a claim
 that reads a table of its own registers it (:class:`InputTable`, made by a rule of the user's). A claim

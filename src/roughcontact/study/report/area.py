@@ -2,7 +2,7 @@
 :mod:`roughcontact.study.rules.area`): the area scorecard of
 :func:`roughcontact.study.analysis.area.area_scorecard` as ``area/area_models.csv`` and its HTML page,
 and ``area/area.png``, the ensemble's ``A(F)`` of every sphere combination against Hertz's ``π a²``,
-the linear law (κ = 2) and Persson's area. Claims (u) and (v) on the area are rows of the claims table
+the linear law (κ = 2) and Persson's area. Claims (u)-(w) on the area are rows of the claims table
 (:mod:`roughcontact.study.claims.area`)."""
 from __future__ import annotations
 
