@@ -25,7 +25,7 @@ DOCS = Path(__file__).resolve().parent
 #: the figure shown for each preset (a file of results/figures/, first match)
 FIGURE = {"zeta": ["zeta.png"], "zeta-law": ["zeta.png"], "zeta-law-fine": ["zeta.png"], "finite-size": ["../exponents/local_exponents.png"], "plastic": ["fig3_H0.7_R0.5_h0.009_hardness0.2.png", "collapse.png"],
           "adhesion": ["../adhesion_figures/pull_off.png"], "tangential": ["../tangential/ratio.png"],
-          "area-cutoff": ["../area/area.png"]}
+          "area-cutoff": ["../area/area.png"], "area-hertz": ["../area/area.png"]}
 #: the area scorecard's columns shown (results/area/area_models.csv), where a preset has area-resolved loads
 AREA_COLUMNS = ["combination", "model", "rank", "max_rel_dev", "rms_rel_dev", "systematic_low", "systematic_low_ci_low",
                 "systematic_low_ci_high", "systematic_low_verdict", "n_loads"]
