@@ -39,7 +39,7 @@ from .statistics import BOOTSTRAP_SEED, bootstrap_indices, interval, verdict
 from ..config.settings import StudySettings
 from ..runs import naming as runs
 
-__all__ = ["Eq16Fit", "fit_eq16", "SphereCase", "VerdictWindows", "SphereVerdicts", "sphere_verdicts", "crossover_table", "run_crossover",
+__all__ = ["Eq16Fit", "fit_eq16", "SphereCase", "VerdictWindows", "SphereVerdicts", "sphere_verdicts", "crossover_table",
            "CROSSOVER_COLUMNS", "NO_SPHERE"]
 
 log = logging.getLogger(__name__)
@@ -299,19 +299,3 @@ def crossover_table(groups: dict, zeta_df, study):
         attrs={"bootstrap_over": "seeds (the same resampled indices for every combination)",
                "bootstrap_seed": BOOTSTRAP_SEED})
     return pd.DataFrame(rows), reps
-
-
-def run_crossover(study, stiffness_nc, zeta_csv, out_csv, out_nc):
-    """``crossover`` rule: stiffness.nc and zeta.csv -> crossover.csv and the
-    bootstrap replicates of F_tr in crossover.nc."""
-    import pandas as pd
-
-    from ..files import provenance
-    from ..files.io import read_groups, write_csv, write_netcdf
-
-    study = StudySettings.of(study)
-    table, reps = crossover_table(read_groups(stiffness_nc), pd.read_csv(zeta_csv), study)
-    reps.attrs.update(provenance.provenance_attrs(config=study.config, title="roughcontact: crossover force replicates"))
-    write_csv(table, out_csv, reason=NO_SPHERE)
-    write_netcdf(reps, out_nc)
-    log.info("crossover:\n%s", table.to_string())

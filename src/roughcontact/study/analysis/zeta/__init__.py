@@ -2,7 +2,7 @@
 intervals (``zeta.csv``, ``zeta.nc``); :mod:`roughcontact.study.analysis.zeta.law` chooses a law ζ(H) over the swept Hurst
 exponents from candidate forms (claim c′). The candidate forms and the calibrated law that
 the models use are :mod:`roughcontact.models.zeta_law`."""
-from .fit import fit_zeta, paper_setting, run_fit_zeta
+from .fit import fit_zeta, paper_setting
 from .law import MIN_HURST, ZetaLaw, fit_law, fit_zeta_law
 
-__all__ = ["fit_zeta", "paper_setting", "run_fit_zeta", "MIN_HURST", "ZetaLaw", "fit_law", "fit_zeta_law"]
+__all__ = ["fit_zeta", "paper_setting", "MIN_HURST", "ZetaLaw", "fit_law", "fit_zeta_law"]

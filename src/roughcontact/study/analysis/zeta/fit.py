@@ -18,7 +18,7 @@ from ...files.io import read_groups, write_csv, write_netcdf
 from ..statistics import bootstrap_indices, log_log_slope
 from ...config.settings import StudySettings
 
-__all__ = ["paper_setting", "off_paper", "fit_zeta", "run_fit_zeta"]
+__all__ = ["paper_setting", "off_paper", "fit_zeta"]
 
 log = logging.getLogger(__name__)
 
@@ -183,11 +183,3 @@ def fit_zeta(groups, study):
         config=study.config, title="zeta(H) fitted from eq. 11 (k/(E* L) = zeta (F/(E* h L))^(1/(H+1)))",
         bootstrap_resamples=n_boot, bootstrap_over="seeds", forces="F/(E* L^2)"))
     return df, zds
-
-
-def run_fit_zeta(study, stiffness_nc, out_csv, out_nc):
-    """``fit_zeta`` rule: stiffness.nc -> zeta.csv and zeta.nc (eq. 11)."""
-    df, zds = fit_zeta(read_groups(stiffness_nc), study)
-    write_csv(df, out_csv, reason=NO_HURST)
-    write_netcdf(zds, out_nc)
-    log.info("zeta(H):\n%s", df.to_string())
