@@ -35,7 +35,7 @@ from ...models.area.three_regime import SUMMIT, rms_curvature
 from ..config.settings import StudySettings
 from .combination import combination, combo_label
 from .ensemble import combinations
-from .statistics import UNRESOLVED, bootstrap_indices, interval, inverse_variance_weights, untested, verdict
+from .statistics import UNRESOLVED, bootstrap_indices, interval, untested, verdict, weighted_deviation
 
 __all__ = ["AREA_TOLERANCE", "MIN_AREA_CELLS", "MEASURED_ON", "AreaContext", "cells_per_wavelength",
            "min_area_cells", "area_context", "area_scorecard", "AREA_COLUMNS"]
@@ -137,14 +137,11 @@ AREA_COLUMNS = ("model", "hurst", "radius", "h_rms", "combination", "max_rel_dev
 
 def _systematic(a_model, mean, a_boot, use, level) -> tuple:
     """Mean of ``A_model/A_BEM − 1`` over the loads *use*, each weighted by the inverse variance of
-    the ensemble mean there (:func:`~.statistics.inverse_variance_weights`, as the stiffness
-    scorecard's systematic deviation), its bootstrap interval and verdict on 0."""
+    the ensemble mean there, its bootstrap interval (:func:`~.statistics.weighted_deviation`, the
+    stiffness scorecard's systematic deviation too) and verdict on 0."""
     if not use.any():
         return math.nan, math.nan, math.nan, untested(UNRESOLVED, "no area-resolved load on this branch")
-    weight = inverse_variance_weights(a_boot, mean, use)
-    weight = weight / weight.sum()
-    low, high = interval((a_model[use] / a_boot[:, use] - 1) @ weight, level)
-    value = float(np.sum(weight * (a_model[use] / mean[use] - 1)))
+    value, low, high = weighted_deviation(a_model, mean, a_boot, use, level)
     return value, low, high, verdict(0.0, low, high)
 
 

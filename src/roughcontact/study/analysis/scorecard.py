@@ -64,7 +64,7 @@ from ..runs import naming as runs
 from . import not_modelled as unmodelled
 from .combination import Combination, combination, combo_label
 from .ensemble import combinations, resolved
-from .statistics import bootstrap_indices, interval, inverse_variance_weights, verdict
+from .statistics import bootstrap_indices, interval, inverse_variance_weights, verdict, weighted_deviation
 from .crossover import NO_SPHERE
 from ..config.settings import StudySettings
 
@@ -98,9 +98,7 @@ def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict
     if use.sum() < 1:
         return {**dict.fromkeys(keys, math.nan), f"systematic_{branch}_verdict": "untested: no resolved load",
                 f"n_loads_{branch}": 0}
-    weight = inverse_variance_weights(k_boot, k_mean, use)
-    value = float(np.sum(weight * (k_model[use] / k_mean[use] - 1)) / weight.sum())
-    low, high = interval((k_model[use] / k_boot[:, use] - 1) @ weight / weight.sum(), level)
+    value, low, high = weighted_deviation(k_model, k_mean, k_boot, use, level)
     return {keys[0]: value, keys[1]: low, keys[2]: high, f"systematic_{branch}_verdict": verdict(0.0, low, high),
             f"n_loads_{branch}": int(use.sum())}
 

@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-__all__ = ["BOOTSTRAP_SEED", "bootstrap_indices", "interval", "verdict", "verdict_bound", "judge", "untested",
+__all__ = ["BOOTSTRAP_SEED", "bootstrap_indices", "interval", "weighted_deviation", "verdict", "verdict_bound", "judge", "untested",
            "split_verdict", "log_log_slope", "inverse_variance_weights", "UNTESTED_BECAUSE", "VERDICTS", "CONSISTENT", "DIFFERS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
            "OUT_OF_RANGE", "NO_PREDICTION"]
 
@@ -130,6 +130,17 @@ def inverse_variance_weights(boot: np.ndarray, mean: np.ndarray, use) -> np.ndar
     without scatter weigh equally (their variance is floored at ``eps²``)."""
     relative = boot[:, use] / mean[use]
     return 1.0 / np.maximum(relative.var(axis=0, ddof=1), np.finfo(float).eps ** 2)
+
+
+def weighted_deviation(model: np.ndarray, mean: np.ndarray, boot: np.ndarray, use, level: float) -> tuple:
+    """A model's systematic deviation on a branch (the stiffness and area scorecards'): the mean of
+    ``model/mean − 1`` over the loads *use*, each weighted by :func:`inverse_variance_weights`, and
+    the *level* interval of the same weighted mean over the bootstrap's ensembles *boot*
+    ``(resample, load)``: ``(value, low, high)``. *use* must hold a load."""
+    weight = inverse_variance_weights(boot, mean, use)
+    value = float(np.sum(weight * (model[use] / mean[use] - 1)) / weight.sum())
+    low, high = interval((model[use] / boot[:, use] - 1) @ weight / weight.sum(), level)
+    return value, low, high
 
 
 def interval(samples: np.ndarray, level: float) -> tuple[float, float]:
