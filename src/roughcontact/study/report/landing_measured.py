@@ -15,6 +15,7 @@ from __future__ import annotations
 import html
 import math
 
+from ..analysis.ensemble import resolved
 from .summary import _CELL, _STYLE, _absent, _table, fmt
 from .tables import stamp
 
@@ -72,13 +73,12 @@ def _spectrum_rows(groups: dict, resolved_cells: float) -> list:
         for radius in radii:
             one = ds.sel(radius=radius) if "radius" in ds.dims else ds
             force, k = one["force"].values, one["k_mean"].values
-            cells = one["contact_cells"].mean("seed").values if "contact_cells" in one else None
-            resolved = int((cells >= resolved_cells).sum()) if cells is not None else 0
+            count = int(resolved(one["contact_cells"].mean("seed").values, resolved_cells).sum())
             unit_f = html.escape(str(one["force"].attrs.get("units", "")))
             unit_k = html.escape(str(one["k_mean"].attrs.get("units", "")))
             rows.append([html.escape(kind), _radius(radius), str(one.sizes["seed"]),
                          f"{fmt(force.min())} … {fmt(force.max())} {unit_f}",
-                         f"{fmt(float(k.min()))} … {fmt(float(k.max()))} {unit_k}", f"{resolved} of {len(force)}"])
+                         f"{fmt(float(k.min()))} … {fmt(float(k.max()))} {unit_k}", f"{count} of {len(force)}"])
     return rows
 
 

@@ -9,26 +9,15 @@ from __future__ import annotations
 __all__ = ["run"]
 
 
-def _scans(cfg, fits, scorecards) -> dict:
-    """``{scan name: (fit, scorecard)}`` in the configuration's order (that of the rule's inputs)."""
-    from ..report.summary import _read
-
-    names = [entry["name"] for entry in cfg.get("topography", [])]
-    if not (len(names) == len(fits) == len(scorecards)):
-        raise ValueError(f"summary: {len(fits)} spectrum fits and {len(scorecards)} scorecards for the "
-                         f"{len(names)} scans {names}")
-    return {name: (_read(fit), _read(card)) for name, fit, card in zip(names, fits, scorecards)}
-
-
-def _spectra(cfg, merged, figures) -> dict:
-    """``{spectrum name: (groups of its merged file, its k(F) figure)}`` in the configuration's order."""
-    from ..files.io import read_groups
-
-    names = [entry["name"] for entry in cfg.get("spectrum", [])]
-    if not (len(names) == len(merged) == len(figures)):
-        raise ValueError(f"summary: {len(merged)} merged files and {len(figures)} figures for the "
-                         f"{len(names)} spectra {names}")
-    return {name: (read_groups(path), figure) for name, path, figure in zip(names, merged, figures)}
+def _by_name(cfg, key: str, **paths) -> list[tuple]:
+    """``(name, path, …)`` of every entry of the configuration's *key* (``topography``, ``spectrum``)
+    in its order, that of the rule's inputs *paths* (one list per kind of input)."""
+    names = [entry["name"] for entry in cfg.get(key, [])]
+    lists = [list(p) for p in paths.values()]
+    if any(len(p) != len(names) for p in lists):
+        counts = ", ".join(f"{len(p)} {what}" for what, p in zip(paths, lists))
+        raise ValueError(f"summary: {counts} for the {len(names)} entries of {key} {names}")
+    return list(zip(names, *lists))
 
 
 def run(cfg, out_html, *, claims_csv=None, crossover_csv=None, zeta_csv=None, models_csv=None, figure_paths=(),
@@ -39,11 +28,14 @@ def run(cfg, out_html, *, claims_csv=None, crossover_csv=None, zeta_csv=None, mo
     merged files and k(F) figures (paths, in the order of ``spectrum``)."""
     from ..config.settings import StudySettings
     from ..files import provenance
+    from ..files.io import read_groups
     from ..report import landing_measured
-    from ..report.summary import write_summary
+    from ..report.summary import _read, write_summary
 
-    scans = _scans(cfg, list(measured_fits), list(measured_scorecards))
-    spectra = _spectra(cfg, list(spectrum_merged), list(spectrum_figures))
+    scans = {name: (_read(fit), _read(card)) for name, fit, card in
+             _by_name(cfg, "topography", spectrum_fits=measured_fits, scorecards=measured_scorecards)}
+    spectra = {name: (read_groups(merged), figure) for name, merged, figure in
+               _by_name(cfg, "spectrum", merged_files=spectrum_merged, figures=spectrum_figures)}
     spectra_html = (landing_measured.spectrum_section(spectra, StudySettings.of(cfg).fit.resolved_cells)
                     if spectra else "")
     if claims_csv is not None:
