@@ -66,7 +66,7 @@ import scipy.ndimage
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, machine_lines  # noqa: E402
+from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, print_header  # noqa: E402
 
 from large_grid import FORCES  # noqa: E402
 
@@ -247,9 +247,7 @@ def main(argv=None) -> int:
     parser.add_argument("--variants", nargs="+", default=list(VARIANTS), choices=VARIANTS + SLOW)
     parser.add_argument("--path", action="store_true", help="also the default sphere path per boundary_terms")
     args = parser.parse_args(argv)
-    for line in machine_lines([]):
-        print(line)
-    print(f"started {time.strftime('%Y-%m-%d %H:%M', time.gmtime())} UTC; {'smooth' if args.hertz else 'rough'} "
+    print_header(f"{'smooth' if args.hertz else 'rough'} "
           f"sphere, contact set of F = {FORCE:g} E*L² frozen; PCG to rel. residual {TOL:g}")
     print(f"{'n':>5} {'cells':>7} | {'preconditioner':>14} | {'iterations':>10} {'kappa':>7}")
     for n in args.n:

@@ -29,7 +29,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, machine_lines  # noqa: E402
+from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, print_header  # noqa: E402
 
 #: The default load path of issue 41: 27 loads, F/(E* L²).
 FORCES = (1e-7, 2e-2, 27)
@@ -94,9 +94,7 @@ def main(argv=None) -> int:
         print(json.dumps(child(args.child, args.stiffness)))
         return 0
     sizes = args.n + ([8193] if args.huge and 8193 not in args.n else [])
-    for line in machine_lines([]):
-        print(line)
-    print(f"started {time.strftime('%Y-%m-%d %H:%M', time.gmtime())} UTC; rough sphere R={RADIUS:g}, "
+    print_header(f"rough sphere R={RADIUS:g}, "
           f"H={HURST:g}, h_rms={H_RMS:g}, L={LENGTH:g}, seed 0, non-periodic; {FORCES[2]} loads "
           f"F/(E*L²) = {FORCES[0]:g} … {FORCES[1]:g}, tol {TOL:g}; bem.iter_load_path, one fresh process per n")
     header = (f"{'n':>5} | {'iterations':>10} {'largest':>7} {'cells':>8} | {'wall s':>8} {'stiff s':>8} "

@@ -66,6 +66,14 @@ def machine_lines(peer_names) -> list[str]:
     return lines
 
 
+def print_header(what: str) -> None:
+    """Print the machine lines (:func:`machine_lines`, no peers) and ``started <UTC time> UTC; <what>``:
+    the head of a benchmark's table."""
+    for line in machine_lines([]):
+        print(line)
+    print(f"started {time.strftime('%Y-%m-%d %H:%M', time.gmtime())} UTC; {what}")
+
+
 def run_roughcontact(heights, forces, tol):
     """Load path and tangent stiffness in roughcontact; per-force times from the progress hook."""
     stamps = []

@@ -41,7 +41,7 @@ from scipy.sparse.linalg import LinearOperator, cg
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from large_grid import FORCES, TOL  # noqa: E402
-from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, machine_lines  # noqa: E402
+from run import E_STAR, HURST, H_RMS, LENGTH, RADIUS, print_header  # noqa: E402
 
 from roughcontact import surfaces  # noqa: E402
 from roughcontact.bem import contact, solver  # noqa: E402
@@ -177,9 +177,7 @@ def main(argv=None) -> int:
     parser.add_argument("--n", type=int, nargs="+", default=[513, 1025, 2049])
     parser.add_argument("--trace", action="store_true", help="the iterations of the largest load")
     args = parser.parse_args(argv)
-    for line in machine_lines([]):
-        print(line)
-    print(f"started {time.strftime('%Y-%m-%d %H:%M', time.gmtime())} UTC; one process; fine-grid "
+    print_header(f"one process; fine-grid "
           f"iterations over all {FORCES[2]} loads (largest load), work in fine-grid convolutions, wall")
     forces = np.geomspace(*FORCES[:2], FORCES[2]) * E_STAR * LENGTH**2
     print(f"{'n':>5} | {'start':>8} | {'iterations':>10} {'largest':>7} {'work':>8} | {'wall s':>7}")
