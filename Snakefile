@@ -1,6 +1,7 @@
 # roughcontact parameter study (Pohrt & Popov 2013): `snakemake --cores 2`
 # Sweep: config.yaml (or --configfile presets/*.yaml); output: results/; report:
 # `snakemake --report results/report.html`.  See README.md.
+import sys
 from pathlib import Path
 
 from snakemake.utils import min_version
@@ -12,7 +13,25 @@ min_version("9.0")
 # name takes the schema's default, src/roughcontact/study/config/config.schema.yaml), wherever the
 # study runs (--directory or not); config.yaml is the sweep only when no --configfile is given
 # (then --config KEY=VALUE edits it).
+# config.yaml is read by the package's loader first: an empty or broken file stops in one line naming
+# the file (and the line of a YAML error), not in Snakemake's two naming neither. A file given with
+# --configfile Snakemake reads itself, while parsing its command line, before this file runs
+# (docs/guide/pipeline.md; `roughcontact check-config FILE` gives the line).
 if not workflow.overwrite_configfiles:
+    if Path("config.yaml").is_file():
+        sys.path.insert(0, str(Path(workflow.basedir) / "src"))
+        from roughcontact.errors import ConfigError
+        from roughcontact.study.config.resolve import error_line, load_config
+
+        try:
+            # named as given in the checkout, by its whole path in another directory (--directory)
+            load_config(
+                "config.yaml"
+                if Path.cwd() == Path(workflow.basedir)
+                else Path("config.yaml").absolute()
+            )
+        except ConfigError as err:
+            raise SystemExit(error_line(err))
 
     configfile: "config.yaml"
 

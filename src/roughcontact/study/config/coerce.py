@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
-__all__ = ["coerce", "one_element_lists"]
+__all__ = ["coerce", "one_element_lists", "read_numbers"]
 
 _INF_WORDS = {"inf", ".inf", "+inf", "+.inf", "infinity", "+infinity"}
 _NAN_WORDS = {"nan", ".nan"}
@@ -72,6 +72,12 @@ def _lists(instance, node, root):
         else:
             out[key] = _lists(value, sub, root)
     return out
+
+
+def read_numbers(obj):
+    """:func:`coerce` without :func:`one_element_lists`: the configuration as written, its numbers
+    read (what an error message shows as the value given)."""
+    return _numbers(obj)
 
 
 def _numbers(obj):

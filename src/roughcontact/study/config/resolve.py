@@ -44,8 +44,8 @@ from .measured import resolve_inputs
 from .records import force_grid
 from .renamed import refuse_renamed
 from .settings import StudySettings
-from .coerce import coerce
-from .schema import check_finite, fill_defaults, key_text, load_schema, printable, schema_error
+from .coerce import coerce, read_numbers
+from .schema import check_finite, fill_defaults, given_error, key_text, load_schema, printable, schema_error, short_text
 
 __all__ = [
     "error_line",
@@ -61,26 +61,35 @@ def error_line(err: ConfigError) -> str:
 
 
 def load_config(path: str | os.PathLike) -> dict:
-    """Read a YAML config file (no validation).
+    """Read a YAML config file (no validation of its keys).
 
-    Raises :class:`ConfigError` (one line) if the file cannot be read or is
-    not YAML.
+    Raises :class:`ConfigError` (one line naming the file) if the file cannot be read, is not
+    YAML (the line and column of the problem named), is empty (nothing but blanks and comments)
+    or holds something other than a mapping of config keys at its top level.
     """
     import yaml
 
+    name = printable(str(path))
     try:
         with open(path, encoding="utf-8") as fh:
             data = yaml.safe_load(fh)
     except (OSError, UnicodeError) as err:
-        raise ConfigError(f"cannot read config file {printable(str(path))}: "
+        raise ConfigError(f"cannot read config file {name}: "
                           f"{printable(getattr(err, 'strerror', None) or str(err))}") from err
     except (yaml.YAMLError, ValueError) as err:  # ValueError: an integer of more than 4300 digits
         mark = getattr(err, "problem_mark", None)
         where = f" (line {mark.line + 1}, column {mark.column + 1})" if mark is not None else ""
         problem = getattr(err, "problem", None) or str(err)
-        raise ConfigError(f"config file {printable(str(path))} is not valid YAML{where}: "
+        raise ConfigError(f"config file {name} is not valid YAML{where}: "
                           f"{printable(problem)}") from err
-    return data if data is not None else {}
+    if data is None:
+        raise ConfigError(f"config file {name} is empty; allowed: a YAML mapping of config keys "
+                          f"(hurst, radius, h_rms, seeds, ...)")
+    if not isinstance(data, dict):
+        kind = "a list" if isinstance(data, list) else f"the single value {short_text(data)}"
+        raise ConfigError(f"config file {name} holds {kind}; allowed: a YAML mapping of config keys "
+                          f"(key: value lines: hurst, radius, h_rms, seeds, ...)")
+    return data
 
 
 def resolve_config(raw: dict, schema=None, base_dir: str | os.PathLike | None = None) -> dict:
@@ -125,8 +134,9 @@ def _resolve(raw, schema, base_dir) -> dict:
     validator = jsonschema.Draft202012Validator(root)
     errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), key_text(list(e.absolute_path))))
     if errors:
-        # report the shallowest problem first: an unknown top-level key explains more than its children
-        raise schema_error(errors[0], root)
+        # report the shallowest problem first: an unknown top-level key explains more than its children;
+        # a value made a one-element list is shown as given (seeds: six, not ['six'])
+        raise given_error(errors[0], root, cfg, read_numbers(raw)) or schema_error(errors[0], root)
     # ... then everything, also below schema nodes that leave their contents open
     check_finite(cfg, root, known_only=False)
     fill_defaults(cfg, root, root)

@@ -46,6 +46,7 @@ __all__ = [
     "check_finite",
     "fill_defaults",
     "finite_error",
+    "given_error",
     "key_text",
     "leaves",
     "load_schema",
@@ -154,13 +155,19 @@ def _render(value) -> str:
     if isinstance(value, numbers.Real):
         return _render(float(value))
     if isinstance(value, str):
-        return json.dumps(value)
+        return _quoted(value)
     if isinstance(value, Mapping):
         items = sorted(value.items(), key=lambda kv: str(kv[0]))
-        return "{" + ",".join(f"{json.dumps(str(k))}:{_render(v)}" for k, v in items) + "}"
+        return "{" + ",".join(f"{_quoted(str(k))}:{_render(v)}" for k, v in items) + "}"
     if isinstance(value, (list, tuple)):
         return "[" + ",".join(_render(v) for v in value) + "]"
     return json.dumps(str(value))
+
+
+def _quoted(text: str) -> str:
+    """*text* in single quotes, as the messages quote a key: every non-ASCII or control character
+    escaped as JSON does (one line), a quote inside escaped."""
+    return "'" + json.dumps(text)[1:-1].replace('\\"', '"').replace("'", "\\'") + "'"
 
 
 def short_text(value) -> str:
@@ -213,6 +220,11 @@ def deref(node: dict, root: dict) -> dict:
     return node
 
 
+#: an integer's minimum worded: ``minimum: 1`` is a positive integer, ``minimum: 0`` a non-negative one
+_SIGNED = {1: "positive integer", 0: "non-negative integer"}
+#: the largest seed (and any other integer) a NumPy int64 holds: worded "< 2^63"
+_INT64_MAX = 2**63 - 1
+
 _NOUNS = {"integer": ("an integer", "integers"), "number": ("a number", "numbers"),
           "string": ("a string", "strings"), "boolean": ("true or false", "true or false"), "null": ("null", "null")}
 
@@ -245,11 +257,16 @@ def _describe(node: dict, root: dict, with_doc: bool = True, finite: bool = Fals
                 if kind == "number" and (finite or node.get(ALLOW_INF)):
                     text = ("finite " if plural else "a finite ") + text.split(" ")[-1]
                 bounds = []
-                if "minimum" in node:
+                sign = _SIGNED.get(node.get("minimum")) if kind == "integer" else None
+                if sign is not None:   # a positive integer, not "an integer >= 1"
+                    text = sign + "s" if plural else ("an " if sign[0] in "aeiou" else "a ") + sign
+                elif "minimum" in node:
                     bounds.append(f">= {node['minimum']}")
                 if "exclusiveMinimum" in node:
                     bounds.append(f"> {node['exclusiveMinimum']}")
-                if "maximum" in node:
+                if kind == "integer" and node.get("maximum") == _INT64_MAX:
+                    bounds.append("< 2^63")
+                elif "maximum" in node:
                     bounds.append(f"<= {node['maximum']}")
                 if "exclusiveMaximum" in node:
                     bounds.append(f"< {node['exclusiveMaximum']}")
@@ -293,6 +310,37 @@ def schema_error(err, root: dict) -> ConfigError:
                            key=key_text(path + [missing]))
     return ConfigError(f"config key '{key_text(path)}' = {short_text(err.instance)} is not allowed; "
                        f"allowed: {_describe(_documented(root, path), root)}", key=key_text(path))
+
+
+def given_error(err, root: dict, cfg, given) -> ConfigError | None:
+    """The one-line :class:`ConfigError` of a ``jsonschema`` error about a value that
+    :func:`~roughcontact.study.config.coerce.one_element_lists` made a one-element list although
+    its key also takes a value of another type (``seeds: six``: not ``seeds = ['six']``, but
+    ``seeds = 'six'``, and what ``seeds`` allows); ``None`` for any other error (:func:`schema_error`
+    words it). *cfg*: the configuration validated; *given*: the same as written
+    (:func:`~roughcontact.study.config.coerce.read_numbers`)."""
+    path = list(err.absolute_path)
+    now, was = cfg, given
+    for depth in range(len(path) + 1):
+        if isinstance(now, list) and not isinstance(was, (list, tuple)):
+            prefix = path[:depth]
+            node = _documented(root, prefix)
+            kinds = set()
+            for branch in _branches(node, root):
+                kind = branch.get("type")
+                kinds.update([kind] if isinstance(kind, str) else kind or ())
+            if not kinds - {"array"}:
+                return None   # a list only (hurst: abc): the item's error, hurst[0], says more
+            return ConfigError(f"config key '{key_text(prefix)}' = {short_text(was)} is not allowed; "
+                               f"allowed: {_describe(node, root)}", key=key_text(prefix))
+        if depth == len(path):
+            return None
+        part = path[depth]
+        try:
+            now, was = now[part], was[part]
+        except (KeyError, IndexError, TypeError):
+            return None
+    return None
 
 
 def _documented(root: dict, path) -> dict:
