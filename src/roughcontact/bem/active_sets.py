@@ -31,6 +31,7 @@ has ``g ≤ 0``, and the acceptance tests are a posteriori.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -117,16 +118,15 @@ def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, 
         dense = DenseOperator(operator.influence_matrix(*np.divmod(cells, n)))
         start = _start_pressure(None if initial is None else initial.reshape(-1)[cells],
                                 flat_lift[cells], depth_bound)
-        p_cells, depth, spent, converged, error = kernel(
-            flat_lift[cells], dense, total, start, tol, maxiter - iterations)
-        iterations += spent
-        if depth <= depth_bound or not converged or iterations >= maxiter:
+        result = kernel(flat_lift[cells], dense, total, start, tol, maxiter - iterations)
+        iterations += result.iterations
+        if result.depth <= depth_bound or not result.converged or iterations >= maxiter:
             break
-        depth_bound, initial = depth, np.zeros(n * n)
-        initial[cells] = p_cells
+        depth_bound, initial = result.depth, np.zeros(n * n)
+        initial[cells] = result.pressure
     pressure = np.zeros(n * n)
-    pressure[cells] = p_cells
-    return pressure.reshape(n, n), depth, iterations, converged, error
+    pressure[cells] = result.pressure
+    return dataclasses.replace(result, pressure=pressure.reshape(n, n), iterations=iterations)
 
 
 def dense_limit(operator) -> int:
@@ -205,20 +205,24 @@ def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
     iterations = 0
     round_tol = max(tol, _LOOSE_TOL)
     while True:
-        p_cells, depth, spent, converged, error = kernel(
-            flat_lift[cells], DenseOperator(matrix), total, start, round_tol, maxiter - iterations)
-        iterations += spent
+        result = kernel(flat_lift[cells], DenseOperator(matrix), total, start, round_tol,
+                        maxiter - iterations)
+        iterations += result.iterations
+        p_cells = result.pressure
         pressure = np.zeros(n * n)
         pressure[cells] = p_cells
-        if not converged:
+        if not result.converged:
             break
         gap = flat_lift + operator(pressure.reshape(n, n)).reshape(-1)
         gap[cells] = math.inf
-        entering = np.flatnonzero(gap < depth)
+        entering = np.flatnonzero(gap < result.depth)
         if entering.size == 0 and round_tol == tol:
             break
         if iterations >= maxiter:  # a solution on W, not (yet) on the grid
-            converged = False
+            result = dataclasses.replace(
+                result, converged=False,
+                diagnosis=f"{iterations} iterations spent on working sets of up to {cells.size} cells; "
+                          f"{entering.size} cells outside the last one still penetrate")
             break
         if entering.size == 0:
             round_tol, start = tol, p_cells
@@ -227,9 +231,8 @@ def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
         if entering.size > most:  # the deepest first: the others may lift off
             entering = np.sort(entering[np.argpartition(gap[entering], most - 1)[:most]])
         if cells.size + entering.size > limit:  # continue on the whole grid
-            pressure, depth, spent, converged, error = kernel(
-                lift, operator, total, pressure.reshape(n, n), tol, maxiter - iterations)
-            return pressure, depth, iterations + spent, converged, error
+            result = kernel(lift, operator, total, pressure.reshape(n, n), tol, maxiter - iterations)
+            return result.spent(iterations)
         old, size = cells.size, cells.size + entering.size
         new_rows, new_cols = np.divmod(entering, n)
         storage = _grown(storage, old, size, limit)
@@ -240,7 +243,7 @@ def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
         cells = np.concatenate([cells, entering])
         rows, cols = np.concatenate([rows, new_rows]), np.concatenate([cols, new_cols])
         start = np.concatenate([p_cells, np.zeros(entering.size)])
-    return pressure.reshape(n, n), depth, iterations, converged, error
+    return dataclasses.replace(result, pressure=pressure.reshape(n, n), iterations=iterations)
 
 
 def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, periodic, kernel):
@@ -268,8 +271,9 @@ def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, perio
     Returns
     -------
     tuple
-        ``(pressure, depth, iterations, converged, error, window)``, the
-        pressure on the whole grid and ``window`` the slices of the last pass.
+        ``(result, window)``: the :class:`~roughcontact.bem.result.KernelResult` with the
+        pressure on the whole grid and the iterations of all passes, and ``window`` the
+        slices of the last pass.
     """
     n = lift.shape[0]
     full = (slice(0, n), slice(0, n))
@@ -289,24 +293,23 @@ def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, perio
         if solution is None:  # from the neighbouring solution, or uniform pressure
             start = _start_pressure(initial, lift, math.inf)
             solution = kernel(lift, operator, total, start, tol, maxiter)
-        p, depth, iterations, converged, error = solution
-        return p, depth, iterations, converged, error, window
+        return solution, window
     iterations = 0
     while True:
         window = _window_box(lift <= depth_bound, operator)
         local = lift[window]
         start = _start_pressure(None if initial is None else initial[window], local, depth_bound)
-        p_window, depth, spent, converged, error = kernel(
-            local, operator, total, start, tol, maxiter - iterations)
-        iterations += spent
+        result = kernel(local, operator, total, start, tol, maxiter - iterations)
+        iterations += result.iterations
         lowest_outside = _lowest_outside(lift, window)
-        if depth < lowest_outside or not converged or iterations >= maxiter:
+        if result.depth < lowest_outside or not result.converged or iterations >= maxiter:
             break
         # The box solution is an upper bound of the true depth: one more
         # enlargement (at most 4× the bound) suffices or progresses.
+        depth = result.depth
         depth_bound = min(depth, 4.0 * depth_bound) if depth_bound > 0 else depth
         initial = np.zeros((n, n))
-        initial[window] = p_window
+        initial[window] = result.pressure
     p = np.zeros((n, n))
-    p[window] = p_window
-    return p, depth, iterations, converged, error, window
+    p[window] = result.pressure
+    return dataclasses.replace(result, pressure=p, iterations=iterations), window

@@ -96,6 +96,10 @@ class ContactState:
         cumulative over the load history up to and including this state: the
         indenter acts as if its heights were ``heights + plastic_displacement``.
         Read-only; all zero (a broadcast view, no memory) when nothing flowed.
+    diagnosis : str
+        Empty when converged; otherwise the kernel's one sentence on why it stopped, what it
+        tried and where the stopping test is violated
+        (:attr:`roughcontact.bem.result.KernelResult.diagnosis`).
     """
 
     force: float
@@ -116,6 +120,7 @@ class ContactState:
     hardness: float | None = None
     plastic: np.ndarray | None = None
     plastic_displacement: np.ndarray | None = None
+    diagnosis: str = ""
 
     def __post_init__(self):
         shape = self.heights.shape
@@ -178,8 +183,9 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
     # unloading (elastic until the cap is reached again) starts from the elastic solution.
     if (hardness is None or initial is None or not np.any(initial >= hardness)
             or initial.sum() >= total):
-        p, depth, iterations, converged, error, window = equilibrium(
+        result, window = equilibrium(
             lift, operator, total, initial, depth_bound, tol, maxiter, periodic, polonsky_keer)
+        p, depth, iterations = result.pressure, result.depth, result.iterations
         if hardness is not None and p.max() > hardness:
             # the capped solution is softer: its depth exceeds the elastic one
             depth_bound = depth if depth_bound is None else max(depth_bound, depth)
@@ -195,10 +201,10 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
         bearing = float(np.partition(lift, cells - 1, axis=None)[cells - 1])
         depth_bound = bearing if depth_bound is None else max(depth_bound, bearing)
         kernel = functools.partial(capped_kernel, hardness=float(hardness))
-        p, depth, spent, converged, error, window = equilibrium(
+        result, window = equilibrium(
             lift, operator, total, initial, depth_bound, tol, max(maxiter - iterations, 1),
             periodic, kernel)
-        iterations += spent
+        p, depth, iterations = result.pressure, result.depth, iterations + result.iterations
     if not periodic:
         edge = np.concatenate([p[0], p[-1], p[:, 0], p[:, -1]])
         if not edge_contact and np.any(edge > 0):
@@ -217,8 +223,8 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
             plastic_displacement.flags.writeable = False
     return ContactState(
         force=float(p.sum() * (length / n) ** 2), depth=float(depth), pressure=p,
-        contact=p > 0, iterations=int(iterations), converged=bool(converged),
-        gap_error=float(error), heights=heights, length=float(length), e_star=float(e_star),
+        contact=p > 0, iterations=int(iterations), converged=bool(result.converged),
+        gap_error=float(result.error), diagnosis=result.diagnosis, heights=heights, length=float(length), e_star=float(e_star),
         periodic=bool(periodic), tol=float(tol), maxiter=int(maxiter), window=window,
         edge_contact=bool(edge_contact),
         hardness=None if hardness is None else float(hardness), plastic=flowed,

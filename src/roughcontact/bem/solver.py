@@ -2,8 +2,10 @@
 
 * :func:`polonsky_keer` — force-controlled constrained conjugate gradients of
   Polonsky & Keer, Wear 231, 206 (1999), ``p ≥ 0``;
-* :func:`capped_kernel` — the same with ``0 ≤ p ≤ H``
-  (:func:`roughcontact.bem.plastic.bounded_polonsky_keer`).
+* :func:`capped_kernel` — the same problem with ``0 ≤ p ≤ H``
+  (:func:`roughcontact.bem.bounded.bounded_cg`).
+
+Both return a :class:`~roughcontact.bem.result.KernelResult`.
 
 Where they run (windows, candidate cells, working sets) is decided by
 :func:`roughcontact.bem.active_sets.equilibrium`.
@@ -15,10 +17,11 @@ import math
 
 import numpy as np
 
-from .plastic import bounded_polonsky_keer
+from .bounded import bounded_cg
 from .preconditioner import fourier_inverse
+from .result import KernelResult
 
-__all__ = ["capped_kernel", "polonsky_keer"]
+__all__ = ["KernelResult", "capped_kernel", "polonsky_keer"]
 
 #: Incremental displacement updates between two exact (FFT) recomputations.
 _REFRESH = 50
@@ -51,8 +54,7 @@ def _gap_state(gap, pressure, support):
 
 
 def polonsky_keer(lift, operator, total, pressure, tol, maxiter, *, boundary_terms=None):
-    """Preconditioned Polonsky & Keer (1999) CG on one window; returns (p, depth, iterations,
-    converged, error).
+    """Preconditioned Polonsky & Keer (1999) CG on one window; returns a :class:`KernelResult`.
 
     ``lift`` are the heights above the lowest point, ``total`` the required
     ``Σ p`` (force/Δ²). Stopping test, with ``g = lift + u(p)`` and ``ḡ`` its
@@ -153,7 +155,8 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter, *, boundary_ter
             np.add(displacement, lift, out=gap)
             depth, error, below = _gap_state(flat_gap, flat_pressure, support)
         if error <= tol:
-            return pressure, depth, iteration, True, error
+            return KernelResult(pressure=pressure, depth=depth, iterations=iteration, converged=True,
+                                error=error)
         if iteration == maxiter:
             break
         working = np.concatenate([support, below])
@@ -207,9 +210,10 @@ def polonsky_keer(lift, operator, total, pressure, tol, maxiter, *, boundary_ter
             exact, since_exact = False, since_exact + 1
         else:
             displacement, exact, since_exact = convolve(pressure), True, 0
-    return pressure, depth, maxiter, False, error
+    return KernelResult(pressure=pressure, depth=depth, iterations=maxiter, converged=False, error=error,
+                        diagnosis=f"{maxiter} iterations spent, relative gap error {error:.3g} > tol {tol:.3g}")
 
 
 def capped_kernel(lift, operator, total, pressure, tol, maxiter, *, hardness):
-    """:func:`~roughcontact.bem.plastic.bounded_polonsky_keer` with the elastic kernel's signature."""
-    return bounded_polonsky_keer(lift, operator, total, hardness, pressure, tol, maxiter)
+    """:func:`~roughcontact.bem.bounded.bounded_cg` with the elastic kernel's signature."""
+    return bounded_cg(lift, operator, total, hardness, pressure, tol=tol, maxiter=maxiter)
