@@ -21,8 +21,8 @@ from . import tangential
 from .path import LoadPath
 from .jobs import JobSettings
 
-__all__ = ["PathSettings", "solve_load_path", "path_settings", "make_surface", "compute_run", "write_run",
-           "run_indent"]
+__all__ = ["PathSettings", "solve_load_path", "solved_loads", "path_settings", "make_surface", "compute_run",
+           "partial_path", "write_run", "run_indent"]
 
 logger = logging.getLogger(__name__)
 
@@ -161,10 +161,24 @@ def solve_load_path(z: np.ndarray, forces: np.ndarray, p: PathSettings, progress
     follow = LoadPath(p.name, total, record, progress=progress)
     path = bem.iter_load_path(z, forces, length=L, e_star=E, periodic=p.periodic, tol=p.tol, maxiter=p.maxiter,
                               hardness=p.hardness, edge_contact=p.edge_contact)
-    with follow.failing(DomainTooSmallError, edge):
-        for i, state in enumerate(path):
-            follow(i, state)
+    try:
+        with follow.failing(DomainTooSmallError, edge):
+            for i, state in enumerate(path):
+                follow(i, state)
+    except IndentError as exc:   # the loads solved before travel with the error (run_indent keeps them)
+        exc.solved = solved_loads(out, follow.done, total)
+        raise
     return out
+
+
+def solved_loads(out: dict, done: int, total: int) -> dict:
+    """The per-load arrays of *out* (a path of *total* loads) cut to the first *done* loads: what a
+    failed path keeps (the fields, histograms and partial-slip arrays, which need the whole path's
+    layout, are left out)."""
+    slip = {*runfile.SLIP_VARIABLES, "slip_load", "slip_step"}
+    return {name: values[:done] for name, values in out.items()
+            if name not in slip and isinstance(values, np.ndarray) and values.ndim == 1
+            and values.shape[0] == total}
 
 
 def compute_run(s: JobSettings, progress=None) -> dict:
@@ -204,8 +218,8 @@ def _record(p: PathSettings, out: dict, i: int, state, cell: float) -> None:
     if not state.converged:
         raise IndentError(
             f"indent {p.name}: the contact solver did not converge at {where}, {state.iterations} iterations, "
-            f"tol = {p.tol:g}); raise solver.maxiter, loosen solver.tol, use more cells (grid.n) or a smaller "
-            f"load ({p.force_key})"
+            f"tol = {p.tol:g}): {state.diagnosis or 'no diagnosis'}; raise solver.maxiter, loosen solver.tol, "
+            f"use more cells (grid.n) or a smaller load ({p.force_key})"
         )
     load = quantities.Load(settings=p, index=i, total=total, where=where, cell=cell)
     for name in quantities.recorded(p):
@@ -228,8 +242,18 @@ def _fields(state, cell: float) -> dict:
             "cell_size": float(np.sqrt(cell)), "force": float(state.force)}
 
 
-def write_run(path, s: JobSettings, out: dict) -> None:
-    """Write one generated run (:func:`roughcontact.study.files.runfile.write_run`) with provenance."""
+def partial_path(output) -> str:
+    """Where a failed run keeps its solved loads: ``<output without .nc>.partial.nc`` (not an output
+    of the rule, so a workflow neither deletes it nor takes it for the run)."""
+    text = str(output)
+    return (text[:-3] if text.endswith(".nc") else text) + ".partial.nc"
+
+
+def write_run(path, s: JobSettings, out: dict, *, failure: str | None = None) -> None:
+    """Write one generated run (:func:`roughcontact.study.files.runfile.write_run`) with provenance;
+    *failure*: the loads of a run that failed at the next one, with the reason as the ``failure``
+    attribute."""
+    extra = {} if failure is None else {"failure": failure, "loads_solved": len(out["force"])}
     runfile.write_run(path, out, variables=quantities.variables(out), stiffness_method=s.stiffness_method,
                       scalars={name: getattr(s, name) for name in runfile.SCALARS},
                       attrs=provenance.provenance_attrs(
@@ -237,30 +261,43 @@ def write_run(path, s: JobSettings, out: dict) -> None:
                           e_star=s.e_star, periodic=s.periodic, solver_tol=s.tol, solver_maxiter=s.maxiter,
                           stiffness_method=s.stiffness_method, stiffness_rel_step=s.rel_step,
                           force_normalized_from=s.force_from, force_normalized_to=s.force_to,
-                          force_count=s.force_count, **s.axes()))
+                          force_count=s.force_count, **s.axes(), **extra))
 
 
-def run_indent(settings: JobSettings, output, log=None, progress: bool = False) -> dict:
+def run_indent(settings: JobSettings, output, log=None, progress=False) -> dict:
     """Compute one run and write it to *output* (NetCDF, atomic).
 
     *log*: a file that receives the ``roughcontact`` log lines (one per
-    load step). *progress*: also draw a ``tqdm`` bar on stderr (the command
-    line). Errors are logged before they propagate.
+    load step). *progress*: also draw a ``tqdm`` bar on stderr; or a function
+    ``progress(total=..., desc=...)`` that builds the bar (the command line's,
+    :func:`roughcontact.cli.progress.progress_bar`), which is given each load
+    step's words as its postfix. Errors are logged before they propagate.
     """
-    from tqdm.auto import tqdm
-
     from ..files.logs import log_to
 
-    with log_to(log), tqdm(total=settings.force_count, disable=not progress, unit="load",
-                           desc=f"H={settings.hurst:g} R={settings.radius:g} seed={settings.seed}",
-                           dynamic_ncols=True) as bar:
+    desc = f"H={settings.hurst:g} R={settings.radius:g} seed={settings.seed}"
+    if callable(progress):
+        made = progress(total=settings.force_count, desc=desc)
+    else:
+        from tqdm.auto import tqdm
+
+        made = tqdm(total=settings.force_count, disable=not progress, unit="load", desc=desc, dynamic_ncols=True)
+    with log_to(log), made as bar:
         def advance(i, total, text):
-            bar.set_postfix_str(text.split(": ", 1)[1][:60], refresh=False)
+            bar.set_postfix_str(text.split(": ", 1)[1], refresh=False)   # the bar fits it to its line
             bar.update(1)
 
         try:
             out = compute_run(settings, progress=advance)
             write_run(output, settings, out)
+        except IndentError as exc:   # keep the loads solved before the failure beside the output
+            logger.error("indent %s failed", settings.describe(), exc_info=True)
+            solved = getattr(exc, "solved", None)
+            if solved and len(solved["force"]):
+                kept = partial_path(output)
+                write_run(kept, settings, solved, failure=str(exc))
+                exc.args = (f"{exc} (the {len(solved['force'])} loads solved before it: {kept})",)
+            raise
         except Exception:   # the details for the log; the caller words the failure
             logger.error("indent %s failed", settings.describe(), exc_info=True)
             raise
