@@ -25,7 +25,7 @@ from ..study.registries import REGISTRIES, listing
 from ..study.runs import indent, naming as runs
 from ..study.runs.jobs import JobSettings, job_settings
 from . import measured
-from .common import add_output_options, add_solver_options, flagged
+from .common import add_output_options, add_solver_options, flagged, output_error
 from .measured import measured_study_from_args
 
 __all__ = ["COMMANDS", "build_parser", "main", "measured_study_from_args", "plain_text", "settings_from_args"]
@@ -215,13 +215,19 @@ def main(argv=None) -> int:
         return measured.run(args)
     if args.command == "list":
         return _list(args)
+    refused = output_error(args.output)
+    if refused is not None:
+        print(f"roughcontact indent: invalid argument: {refused}", file=sys.stderr)
+        return 2
     try:
         settings = settings_from_args(args)
     except ConfigError as err:
         print(f"roughcontact indent: invalid argument: {flagged(err)}", file=sys.stderr)
         return 2
+    from .progress import progress_bar   # tqdm, imported when a bar is drawn
+
     try:
-        indent.run_indent(settings, args.output, log=args.log, progress=not args.quiet)
+        indent.run_indent(settings, args.output, log=args.log, progress=False if args.quiet else progress_bar)
     except IndentError as err:
         print(f"roughcontact indent: FAILED: {err}", file=sys.stderr)
         return 1

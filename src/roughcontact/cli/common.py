@@ -1,5 +1,5 @@
 """What the subcommands of the command line share: the flags named by a configuration error, and
-the solver's and the output's options."""
+the solver's and the output's options, the output's check."""
 from __future__ import annotations
 
 from ..errors import ConfigError
@@ -34,7 +34,8 @@ def add_solver_options(parser, *, defaults: str) -> None:
 
 def add_output_options(parser) -> None:
     """The output file and the log file, shared by ``indent`` and ``measured``."""
-    parser.add_argument("-o", "--output", required=True, help="NetCDF file to write (atomically)")
+    parser.add_argument("-o", "--output", required=True,
+                        help="NetCDF file to write (atomically); a path, not - (standard output)")
     parser.add_argument("--log", default=None, help="also append progress lines to this file")
 
 
@@ -47,3 +48,13 @@ def flagged(err: ConfigError, flags: dict | None = None) -> str:
     if flag is None:
         return message
     return message.replace(f"config key '{err.key}'", f"{flag} ({err.key})", 1)
+
+
+def output_error(output: str) -> str | None:
+    """Why ``-o`` *output* cannot be written, in one line (``None``: it can). ``-`` is refused: a
+    NetCDF file is binary and written by its path (atomically, by renaming a temporary file
+    beside it), so standard output would be no use; without this, a file named ``-`` appeared."""
+    if output == "-":
+        return ("-o -: a NetCDF file cannot be written to standard output; "
+                "give a file path, e.g. -o run.nc")
+    return None

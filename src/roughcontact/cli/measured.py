@@ -13,7 +13,7 @@ from ..study.config.measured import (FORCE_UNITS, LENGTH_UNITS, PRESSURE_UNITS, 
 from ..study.config.resolve import study_settings
 from ..study.config.settings import StudySettings
 from ..study.runs import naming as runs
-from .common import add_output_options, add_solver_options, flagged, indent_flags
+from .common import add_output_options, add_solver_options, flagged, indent_flags, output_error
 
 #: ``--detrend`` of ``roughcontact measured`` (the config's ``topography[].detrend``)
 _DETRENDS = ("height", "slope", "curvature", "center", "none")
@@ -148,6 +148,9 @@ def run(args) -> int:
         print(f"roughcontact measured: invalid argument: {message}", file=sys.stderr)
         return 2
 
+    refused = output_error(args.output)
+    if refused is not None:
+        return bad(refused)
     try:
         study = measured_study_from_args(args)
     except ConfigError as err:
