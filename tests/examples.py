@@ -59,6 +59,27 @@ def target_of(example: Path) -> Path:
     return Path("src", *module_of(example).split(".")).with_suffix(".py")
 
 
+def example_files() -> list:
+    """Every worked example of :data:`EXAMPLES`: the new modules (``*_example.py``) and the rule's
+    workflow files (``*_example.smk``, ``*_example_*.py``)."""
+    return sorted({*EXAMPLES.glob("*_example.py"), *EXAMPLES.glob("*_example.smk"), *EXAMPLES.glob("*_example_*.py")})
+
+
+def without_examples(root: Path):
+    """An ``ignore`` for ``shutil.copytree`` of a folder of the checkout *root* (``src``, ``workflow``):
+    caches, and every file an example becomes (:func:`target_of`) where it was copied in already, as
+    the guide says to. A scratch copy made with it is the checkout without the examples, whether or
+    not they were copied in: a test that copies some in finds no other (e.g. the rule's
+    ``workflow/rules/extra/resolved_loads.smk`` without its module, which stops every ``snakemake``)."""
+    copied = {root / target_of(example) for example in example_files()}
+
+    def ignore(folder, names):
+        return {name for name in names if name == "__pycache__" or name.endswith(".egg-info")
+                or Path(folder, name) in copied}
+
+    return ignore
+
+
 def _forget_schema() -> None:
     """Drop the configuration schema built from the axes registry (it is rebuilt when read)."""
     from roughcontact.study.config import schema

@@ -26,7 +26,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
-from examples import EXAMPLES, module_of, target_of
+from examples import EXAMPLES, module_of, target_of, without_examples
 
 #: runs the Snakemake workflow end to end (left out of the quick subset: -m "not workflow")
 pytestmark = pytest.mark.workflow
@@ -75,14 +75,6 @@ def _target(where: Path, example: Path) -> Path:
     return where / "src" / Path(*module_of(example).split(".")).with_suffix(".py")
 
 
-def _without_examples(folder: str, names: list) -> set:
-    """What ``shutil.copytree`` leaves out of the package: caches, and the examples where they
-    were copied in already (the study before them runs without them; the fixture copies them in)."""
-    examples = {_target(ROOT, example) for example in EXAMPLES.glob("*_example.py")}
-    return ({name for name in names if name == "__pycache__" or name.endswith(".egg-info")}
-            | {name for name in names if Path(folder, name) in examples})
-
-
 def _copy_in(where: Path, example: Path) -> None:
     """Copy *example* as the new module its first line names, into the scratch copy *where*."""
     target = _target(where, example)
@@ -98,8 +90,10 @@ def scratch(tmp_path_factory):
     Yields the directory, the run files before, and ``{"model and claim": jobs, "axis": jobs}``
     of the two dry runs (``{rule: count}``)."""
     where = tmp_path_factory.mktemp("extending")
-    shutil.copytree(ROOT / "src", where / "src", ignore=_without_examples)
-    shutil.copytree(ROOT / "workflow", where / "workflow", ignore=shutil.ignore_patterns("__pycache__"))
+    # without every example where it was copied in (the study before them runs without them; the
+    # fixture copies three in): the rule's workflow files too, whose module is left out with the others
+    shutil.copytree(ROOT / "src", where / "src", ignore=without_examples(ROOT))
+    shutil.copytree(ROOT / "workflow", where / "workflow", ignore=without_examples(ROOT))
     shutil.copytree(ROOT / "envs", where / "envs")
     shutil.copy(ROOT / "Snakefile", where / "Snakefile")
     shutil.copy(ROOT / "config.yaml", where / "config.yaml")

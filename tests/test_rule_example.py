@@ -25,7 +25,8 @@ import pandas as pd
 import pytest
 import xarray as xr
 import yaml
-from examples import EXAMPLES, loaded, module_of, scoped_registry, target_of  # noqa: F401 -- scoped_registry: autouse
+from examples import (EXAMPLES, loaded, module_of, scoped_registry,  # noqa: F401 -- scoped_registry: autouse
+                      target_of, without_examples)
 
 ROOT = Path(__file__).resolve().parents[1]
 RULE_FILES = ("rule_example.smk", "rule_example_script.py", "rule_example.py")
@@ -145,6 +146,32 @@ def fingerprints(tmp_path_factory):
     page.write_text(page.read_text() + "\n# edited\n")
     steps.append(_fingerprint(src))
     return steps
+
+
+def test_a_scratch_copy_leaves_out_the_rule_copied_in(tmp_path):
+    """The guide followed (the rule's three files copied into a checkout): a scratch copy of its
+    src/ and workflow/ made with examples.without_examples holds none of them, so the study of
+    tests/test_extending.py runs before the examples as in a checkout without them (with the rule's
+    .smk kept and its module left out, every snakemake of that test stopped at code_fingerprint)."""
+    root = tmp_path / "checkout"
+    for name in RULE_FILES:
+        target = root / target_of(EXAMPLES / name)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(EXAMPLES / name, target)
+    (root / "workflow" / "rules" / "common.smk").write_text("# kept\n")
+    copy = tmp_path / "copy"
+    for folder in ("src", "workflow"):
+        shutil.copytree(root / folder, copy / folder, ignore=without_examples(root))
+    assert sorted(str(p.relative_to(copy)) for p in copy.rglob("*") if p.is_file()) == ["workflow/rules/common.smk"]
+
+
+def test_the_guide_copies_each_rule_file_where_its_first_line_says():
+    """The guide's copy commands ("Adding a rule"): the folder workflow/rules/extra/ made first (it is
+    not in the repository), then each of the rule's three files to the place its first line names."""
+    guide = (ROOT / "docs" / "guide" / "package.md").read_text()
+    block = guide.split("### Adding a rule", 1)[1].split("```bash\n", 1)[1].split("```", 1)[0].splitlines()
+    assert block == ["mkdir -p workflow/rules/extra",
+                     *(f"cp docs/guide/extending/{name} {target_of(EXAMPLES / name)}" for name in RULE_FILES)]
 
 
 def test_the_rule_passes_its_modules_fingerprint():
