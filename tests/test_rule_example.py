@@ -104,10 +104,11 @@ def _claim_rows(table: pd.DataFrame | None, study) -> list:
 
 
 def test_the_claim_judges_each_row_of_the_table(study):
-    """Ratios 0.5, 2 and none: consistent, differs, untested (unresolved)."""
+    """Intervals [0.25, 0.5], [1.5, 2] and none: consistent, differs, untested (unresolved)."""
     table = pd.DataFrame({"hurst": [0.7] * 3, "radius": [0.5, 1.0, 2.0], "h_rms": [0.02] * 3, "loads": [8] * 3,
                           "resolved_loads": [4, 4, 0], "first_resolved_force": [1e-4, 4e-4, math.nan],
-                          "crossover_force_eq17": [2e-4] * 3, "first_resolved_ratio": [0.5, 2.0, math.nan]})
+                          "crossover_force_eq17": [2e-4] * 3, "first_resolved_ratio": [0.5, 2.0, math.nan],
+                          "previous_ratio": [0.25, 1.5, math.nan]})
     rows = _claim_rows(table, study)
     assert [(r["radius"], r["verdict"]) for r in rows] == [(0.5, "consistent"), (1.0, "differs"),
                                                            (2.0, "untested")]
@@ -305,10 +306,11 @@ def test_the_claim_has_the_tables_value_per_sphere_combination(scratch):
 
 
 @workflow
-def test_the_claims_verdict_follows_its_ratio(scratch):
+def test_the_claims_verdict_follows_its_interval(scratch):
     claims = pd.read_csv(scratch[0] / "results" / "claims.csv")
     y = claims[claims["claim"] == "y"]
-    assert (y["verdict"] == np.where(y["measured"] < 1, "consistent", "differs")).all(), y.to_string()
+    expected = np.where(y["ci_high"] < 1, "consistent", np.where(y["ci_low"] > 1, "differs", "untested"))
+    assert (y["verdict"] == expected).all(), y.to_string()
 
 
 @workflow

@@ -1,7 +1,9 @@
 # module: roughcontact.study.rules.resolved_loads
 """The resolved loads of every sphere combination (``resolved_loads.csv``, the rule
 ``resolved_loads`` of ``workflow/rules/extra/resolved_loads.smk``): how many loads of its path are
-resolved, the smallest of them and where it lies against eq. 17's crossover force.
+resolved, the smallest of them and the load before it (the resolution threshold lies between the
+two: the interval the claim of the guide's table-claim example judges), and where they lie against
+eq. 17's crossover force.
 
 A load is resolved where its ensemble-mean contact has at least ``fit.resolved_cells`` cells
 (:func:`roughcontact.study.analysis.ensemble.resolved`, the rule every fit of the study applies);
@@ -27,7 +29,7 @@ log = logging.getLogger(__name__)
 
 #: the columns of resolved_loads.csv after the sphere's sweep axes
 RESOLVED_COLUMNS = ("loads", "resolved_loads", "first_resolved_force", "crossover_force_eq17",
-                    "first_resolved_ratio")
+                    "first_resolved_ratio", "previous_ratio")
 #: why resolved_loads.csv has no row
 NO_SPHERE_ROW = "the sweep has no sphere combination"
 
@@ -44,7 +46,8 @@ def _crossover(where: dict, length: float) -> float:
 def resolved_loads_table(sphere, study: StudySettings):
     """One row per combination of the merged sphere runs *sphere* (``stiffness.nc``'s group):
     its sweep axes, the loads of its path, how many are resolved, the smallest resolved
-    F/(E* L²) (NaN where none is), eq. 17's crossover force and their ratio."""
+    F/(E* L²) (NaN where none is), eq. 17's crossover force, their ratio and the ratio of the load
+    before the smallest resolved one (0 where the path's first load is resolved)."""
     import pandas as pd
 
     rows = []
@@ -52,10 +55,12 @@ def resolved_loads_table(sphere, study: StudySettings):
         ok = np.asarray(resolved(sub["contact_cells"].values.mean(0), study.fit.resolved_cells))
         force = sub["force_normalized"].values
         first = float(force[ok][0]) if ok.any() else math.nan
+        index = int(np.argmax(ok)) if ok.any() else 0
+        previous = float(force[index - 1]) if ok.any() and index > 0 else (0.0 if ok.any() else math.nan)
         crossover = _crossover(where, study.grid.length)
         rows.append({**where, "loads": int(force.size), "resolved_loads": int(ok.sum()),
                      "first_resolved_force": first, "crossover_force_eq17": crossover,
-                     "first_resolved_ratio": first / crossover})
+                     "first_resolved_ratio": first / crossover, "previous_ratio": previous / crossover})
     return pd.DataFrame(rows)
 
 

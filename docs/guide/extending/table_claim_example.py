@@ -25,17 +25,19 @@ register_table(InputTable("resolved_loads", "results/resolved_loads.csv"))
 
 def below_crossover(inputs):
     """One row per sphere combination of the table: the smallest resolved load over eq. 17's
-    crossover force (a count of the sweep, no interval: both bounds are the value), consistent
-    below 1, untested (unresolved) where no load is resolved."""
+    crossover force, with the interval in which the resolution threshold lies (from the load before
+    it to it: the load grid's resolution); consistent where the whole interval is below 1, differs
+    where it is above, untested where it holds 1 or no load is resolved."""
     rows = []
     for _, r in inputs.tables["resolved_loads"].iterrows():
         where = {name: float(r[name]) for name in r.index if name in AXES}
         ratio = float(r["first_resolved_ratio"])
         note = (f"measured: smallest resolved F/(E* L^2) = {r['first_resolved_force']:.4g} over F_tr(eq. 17, "
                 f"zeta = 1.7/(H+1)) = {r['crossover_force_eq17']:.4g}")
-        verdict = (verdict_bound(1.0, ratio, ratio, side="below") if math.isfinite(ratio)
+        previous = float(r["previous_ratio"])
+        verdict = (verdict_bound(1.0, previous, ratio, side="below") if math.isfinite(ratio)
                    else untested(UNRESOLVED, "no resolved load"))
-        rows.append(row("y", STATEMENT, ratio, ratio, ratio, 1.0, verdict, note=note,
+        rows.append(row("y", STATEMENT, ratio, previous, ratio, 1.0, verdict, note=note,
                         loads=f"{int(r['resolved_loads'])} of {int(r['loads'])} loads resolved", **where))
     return rows
 

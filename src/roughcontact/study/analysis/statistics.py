@@ -5,7 +5,8 @@ Every interval of the study is a percentile bootstrap over the seeds (Efron & Ti
 An Introduction to the Bootstrap, Chapman & Hall 1993, doi 10.1201/9780429246593) with one
 fixed random state, :data:`BOOTSTRAP_SEED`, so that every run of the analysis gives the same
 numbers. A claim is ``consistent`` when its predicted value lies inside the measured interval,
-``differs`` when it lies outside and ``untested`` when it cannot be decided.
+``differs`` when it lies outside and ``untested`` when it cannot be decided; an interval that is a
+point (one seed, one load, no scatter) decides nothing (:func:`untested_if_degenerate`).
 
 An untested verdict of the claims table always names why, in one word of the closed vocabulary
 :data:`UNTESTED_BECAUSE` (the ``untested_because`` column of ``claims.csv``), beside its free-text
@@ -20,6 +21,7 @@ import math
 import numpy as np
 
 __all__ = ["BOOTSTRAP_SEED", "bootstrap_indices", "interval", "weighted_deviation", "verdict", "verdict_bound", "judge", "untested",
+           "untested_if_degenerate", "DEGENERATE",
            "split_verdict", "log_log_slope", "inverse_variance_weights", "UNTESTED_BECAUSE", "VERDICTS", "CONSISTENT", "DIFFERS", "NOT_SWEPT", "OFF_PAPER", "HOLDS_THRESHOLD", "UNRESOLVED",
            "OUT_OF_RANGE", "NO_PREDICTION"]
 
@@ -88,9 +90,35 @@ def split_verdict(text: str) -> tuple[str, str, str]:
     return word, because, rest[len(because) + 2:]
 
 
+#: why a verdict whose interval is a point is no verdict (:func:`untested_if_degenerate`)
+DEGENERATE = ("the interval is a point ([{low:.4g}, {high:.4g}]): it rests on one seed, one load or no scatter "
+              "between seeds, and a verdict needs a sampling interval (at least 2 seeds)")
+
+
+def untested_if_degenerate(text: str, low: float, high: float) -> str:
+    """*text* (a verdict text), or :func:`untested` (:data:`UNRESOLVED`, :data:`DEGENERATE`) when it
+    is ``consistent`` or ``differs`` and its interval ``[low, high]`` is missing or has no width: a
+    percentile bootstrap over one seed, or over seeds that agree exactly, is a point and decides
+    nothing. The one rule every row of the claims table passes
+    (:func:`roughcontact.study.claims.registry.row`)."""
+    word = text.partition(":")[0]
+    if word not in (CONSISTENT, DIFFERS):
+        return text
+    try:
+        low, high = float(low), float(high)
+    except (TypeError, ValueError):
+        low = high = math.nan
+    if math.isfinite(low) and math.isfinite(high) and high > low:
+        return text
+    if not (math.isfinite(low) and math.isfinite(high)):
+        return untested(UNRESOLVED, "no interval")
+    return untested(UNRESOLVED, DEGENERATE.format(low=low, high=high))
+
+
 def verdict(value: float, low: float, high: float) -> str:
-    """``consistent`` if ``low ≤ value ≤ high``, ``differs`` otherwise (``untested`` for a NaN interval)."""
-    if not (math.isfinite(low) and math.isfinite(high) and math.isfinite(value)):
+    """``consistent`` if ``low ≤ value ≤ high``, ``differs`` otherwise (``untested`` for a NaN interval
+    or one that is a point, :func:`untested_if_degenerate`)."""
+    if not (math.isfinite(low) and math.isfinite(high) and math.isfinite(value)) or not high > low:
         return "untested"
     return CONSISTENT if low <= value <= high else DIFFERS
 
@@ -102,6 +130,8 @@ def judge(value: float, low: float, high: float) -> str:
         return untested(NO_PREDICTION, "no finite paper value")
     if not (math.isfinite(low) and math.isfinite(high)):
         return untested(UNRESOLVED, "no interval")
+    if not high > low:
+        return untested(UNRESOLVED, DEGENERATE.format(low=low, high=high))
     return verdict(value, low, high)
 
 
@@ -112,6 +142,8 @@ def verdict_bound(bound: float, low: float, high: float, *, side: str) -> str:
     bound, or (:data:`UNRESOLVED`) if there is no interval."""
     if not (math.isfinite(low) and math.isfinite(high)):
         return untested(UNRESOLVED, "no interval")
+    if not high > low:
+        return untested(UNRESOLVED, DEGENERATE.format(low=low, high=high))
     inside, outside = (high < bound, low > bound) if side == "below" else (low > bound, high < bound)
     if inside:
         return CONSISTENT

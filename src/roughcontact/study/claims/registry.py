@@ -16,7 +16,7 @@ import numpy as np
 from ..._registry import add
 from ..config import axes
 from ..config.axes import AXES, optional_axes
-from ..analysis.statistics import OFF_PAPER, split_verdict, untested
+from ..analysis.statistics import OFF_PAPER, split_verdict, untested, untested_if_degenerate
 
 __all__ = ["Claim", "ClaimInputs", "Combination", "CLAIMS", "InputTable", "TABLES", "register", "register_table",
            "row", "AXIS_COLUMNS", "EFFECT_CLAIM",
@@ -256,8 +256,10 @@ def row(claim, statement, measured, low, high, paper, verdict_text, *, sweep="",
     column; any other untested text raises ``ValueError``: an ``error`` row); *where* the
     combination's axes (missing ones NaN; an axis of the tangential problem only where given, so a
     study without them has the columns it had). The *note* says what the measured value is; it states
-    no verdict (a second comparison is a row of its own)."""
-    word, because, reason = split_verdict(verdict_text)
+    no verdict (a second comparison is a row of its own). A verdict whose interval is a point or
+    missing is made ``untested`` here (:func:`~roughcontact.study.analysis.statistics.untested_if_degenerate`),
+    whatever the claim said: no verdict without an interval."""
+    word, because, reason = split_verdict(untested_if_degenerate(verdict_text, low, high))
     return {"claim": claim, "statement": statement,
             **{k: where.get(k, math.nan) for k, spec in AXES.items() if spec.normal or k in where},
             "measured": measured, "ci_low": low, "ci_high": high, "paper_value": paper,
