@@ -12,8 +12,8 @@ load's deviation enlarged by the grid error there::
 
 the largest rms error on either branch that the grid could hide. Every resolved load counts
 alike (an inverse-variance weight, as in ``systematic_*``, would let the Hertz end, where every
-model agrees, decide). A row *holds* (``holds``, :func:`holds`) when on each branch with resolved
-loads its systematic deviation is within :data:`HOLDS_SYSTEMATIC` (3 %), or within
+model agrees, decide). A row *holds* (``holds``, :func:`holds`) when both branches have resolved
+loads and on each its systematic deviation is within :data:`HOLDS_SYSTEMATIC` (3 %), or within
 :data:`HOLDS_SYSTEMATIC_CONSISTENT` (5 %) and consistent with 0 once the grid error is added
 (``systematic_*_total_verdict``; the sampling verdict ``systematic_*_verdict`` where no grid error
 is measured), and it lies inside the ensemble's band widened by the grid error at a fraction
@@ -52,11 +52,12 @@ import math
 
 import numpy as np
 
+from .grid_error import NO_COMPANION
 from .statistics import CONSISTENT, interval
 
 __all__ = ["RULE", "DECISIONS", "OUTSIDE", "HOLDS_SYSTEMATIC", "HOLDS_SYSTEMATIC_CONSISTENT", "HOLDS_INSIDE",
            "HOLDS_CRITERION",
-           "inputs", "score", "holds", "decide", "sort", "matrix", "matrix_html", "grid_note"]
+           "inputs", "score", "holds", "both_branches", "decide", "sort", "matrix", "matrix_html", "grid_note"]
 
 #: the column naming why a row lies outside its model's stated range
 OUTSIDE = "outside_range"
@@ -152,7 +153,7 @@ def holds(row: dict) -> bool:
     Returns
     -------
     bool
-        False without a resolved load on either branch.
+        False without a resolved load on both branches.
     """
     def finite(key):
         value = row.get(key, math.nan)
@@ -162,13 +163,29 @@ def holds(row: dict) -> bool:
     inside = row["inside_band_total"] if measured else row.get("inside_band", math.nan)
     if not (isinstance(inside, (int, float)) and inside >= HOLDS_INSIDE):
         return False
-    branches = [b for b in ("low", "high") if row.get(f"n_loads_{b}", 0) and finite(f"systematic_{b}")]
-    for b in branches:
+    if not all(both_branches(row)):   # a model is said to hold on both branches or not at all
+        return False
+    for b in ("low", "high"):
         value = abs(row[f"systematic_{b}"])
         verdict = row.get(f"systematic_{b}_total_verdict" if measured else f"systematic_{b}_verdict", "")
         if not (value <= HOLDS_SYSTEMATIC or (value <= HOLDS_SYSTEMATIC_CONSISTENT and verdict == CONSISTENT)):
             return False
-    return bool(branches)
+    return True
+
+
+def both_branches(row) -> tuple[bool, bool]:
+    """Whether the low and the high branch of a scorecard row have a resolved load and a finite
+    systematic deviation (``n_loads_*`` > 0): a row holds only with both (:func:`holds`), and the
+    pages say "no: a branch has no resolved load" for the others."""
+    def scored(b):
+        try:
+            loads = float(row.get(f"n_loads_{b}", 0) or 0)
+            value = float(row.get(f"systematic_{b}", math.nan))
+        except (TypeError, ValueError):
+            return False
+        return loads > 0 and math.isfinite(value)
+
+    return scored("low"), scored("high")
 
 
 def _scored(row: dict) -> bool:
@@ -268,13 +285,17 @@ def matrix(table, models=None):
                         index=pd.Index(sorted(cells), name="combination"))
 
 
-def grid_note(table) -> str:
+def grid_note(table, reason: str = NO_COMPANION) -> str:
     """Whether the scores include a measured grid error.
 
     Parameters
     ----------
     table : pandas.DataFrame
         A scorecard with ``grid_error_measured``.
+    reason : str
+        Why the study's grid error is not measured
+        (:attr:`~roughcontact.study.analysis.grid_error.GridErrorStatement.reason`), said when no
+        combination has it.
 
     Returns
     -------
@@ -293,12 +314,11 @@ def grid_note(table) -> str:
     if measured:
         return (f"The grid error is measured (grid.coarse) for {measured} of {total} combinations only; on the "
                 "others (grid_error_measured false) S and the ties hold the sampling error only.")
-    return ("Grid error NOT measured for this study (grid.coarse is null: no companion study): S and the ties "
-            "hold the sampling "
+    return (f"Grid error NOT measured for this study ({reason}): S and the ties hold the sampling "
             "error only, and a reader cannot tell the grid's share of a deviation.")
 
 
-def matrix_html(table, models=None) -> str:
+def matrix_html(table, models=None, *, grid_reason: str = NO_COMPANION) -> str:
     """The compact matrix of the report's page.
 
     Parameters
@@ -327,5 +347,5 @@ def matrix_html(table, models=None) -> str:
             tds.append(f'<td class="number"{style}>{html.escape(text)}</td>')
         body.append(f"<tr><td>{html.escape(str(combination))}</td>{''.join(tds)}</tr>")
     return (f"<h2>Which model: S per combination (★ recommended, ≈ tied, n.s. not scored)</h2>"
-            f'<p class="lead">{html.escape(RULE)} {html.escape(grid_note(table))}</p>'
+            f'<p class="lead">{html.escape(RULE)} {html.escape(grid_note(table, grid_reason))}</p>'
             f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table><h2>Every row</h2>")

@@ -19,6 +19,7 @@ import math
 
 from ..analysis import decision
 from ..analysis.crossover import NO_SPHERE
+from ..analysis.grid_error import NO_COMPANION
 from ..claims import NO_CLAIM
 from ..config import axes
 from ..analysis.statistics import VERDICTS
@@ -123,28 +124,19 @@ def _absent(text: str) -> str:
     return f'<p class="rc-absent"><i>{html.escape(not_measured(text))}</i></p>'
 
 
-def _branches_scored(row) -> bool:
-    """Whether both branches of a scorecard row were scored (a resolved load below and above F_tr)."""
-    counts = [row.get(c) for c in ("n_loads_low", "n_loads_high")]
-    if any(c is None for c in counts):
-        return True   # a table without the counts: its holds column decides
-    try:
-        return all(float(c) > 0 for c in counts)
-    except (TypeError, ValueError):
-        return False
-
-
 def _holds(row) -> str:
-    """The ``holds`` cell: yes or no where both branches were scored, else why not; a dash for a row
-    without a model or a table without the column."""
+    """The ``holds`` cell, read from the row's ``holds`` column: yes, or no (with "a branch has no
+    resolved load" where that is why, :func:`~roughcontact.study.analysis.decision.both_branches`);
+    a dash for a row without a model or a table without the column."""
     if str(row.get("model")) == NO_RECOMMENDATION:
         return "—"
     text = str(row.get("holds")).strip().lower()
     if text not in ("true", "false"):
         return "—"
-    if not _branches_scored(row):
-        return "not scored: a branch has no resolved load"
-    return {"true": "yes", "false": "no"}[text]
+    if text == "true":
+        return "yes"
+    has_counts = all(row.get(c) is not None for c in ("n_loads_low", "n_loads_high"))
+    return "no: a branch has no resolved load" if has_counts and not all(decision.both_branches(row)) else "no"
 
 
 def _why_empty(kind: str, size, table=None) -> str:
@@ -221,7 +213,9 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
                      "only where both branches have a resolved load); the systematic deviation of k from the "
                      "ensemble below and above the crossover force (mean relative deviation, 95 % interval, "
                      "verdict).</p>")
-        parts.append(f"<p>{html.escape(decision.grid_note(models))}</p>")
+        grid = size.grid_error if size is not None else None
+        reason = grid.reason if grid is not None and not grid.measured else NO_COMPANION
+        parts.append(f"<p>{html.escape(decision.grid_note(models, reason))}</p>")
         rows = []
         for r in recommended_models(models):
             rows.append([_combination(r, length),
@@ -251,11 +245,14 @@ def _read(path):
 
 
 def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_paths, out_html, *,
-                  extra: str = "") -> None:
+                  grid_error_csv=None, extra: str = "") -> None:
     """``summary`` rule: the landing page's fragment to *out_html* (atomic). *cfg* is the resolved
     configuration; *figure_paths* are the ``figures`` rule's outputs, in the order of
     :func:`~roughcontact.study.report.figures.figure_specs`; the Fig. 3 shown is the one of the
-    combination Figs. 1, 2 and 4 show; *extra*: HTML of further sections (:func:`summary_html`)."""
+    combination Figs. 1, 2 and 4 show; *grid_error_csv*: ``grid_error.csv`` (``None`` without
+    ``grid.coarse``), the one statement of the grid error every mention reads; *extra*: HTML of
+    further sections (:func:`summary_html`)."""
+    from ..analysis.grid_error import statement
     from .figures import figure_specs, shown_combination
 
     specs = figure_specs(cfg)
@@ -269,6 +266,7 @@ def write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_p
         title = f" (H = {labels['H']}, R = {labels['R']}, h_rms = {labels['h_rms']}; the others: category " \
                 f"\"Fig. 3 stiffness vs force\")"
     text = summary_html(_read(claims_csv), _read(crossover_csv), _read(zeta_csv), _read(models_csv),
-                        chosen[1] if chosen else None, fig3_title=title, size=answer.StudySize.of(cfg),
+                        chosen[1] if chosen else None, fig3_title=title, size=answer.StudySize.of(cfg, statement(
+                            read_csv(grid_error_csv) if grid_error_csv else None, cfg["grid"].get("coarse"))),
                         length=float(cfg["grid"]["length"]), extra=extra)
     provenance.write_text(text, out_html)
