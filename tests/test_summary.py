@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pandas as pd
 
+from roughcontact.study.analysis.grid_error import GridErrorStatement
 from roughcontact.study.report import answer, summary
 
 
@@ -95,14 +96,33 @@ def test_tallies_count_comparisons_not_claim_letters():
 def test_the_answer_names_the_comparisons_that_differ():
     claims = _claims([("a", "eq. 16 within 10 %", "consistent", ""), ("b", "F_tr of eq. 17", "differs", ""),
                       ("g", "F_tr ~ R", "untested", "not swept"), ("d", "low slope", "untested", "unresolved")])
+    grid = GridErrorStatement(measured=True, coarse=193, largest=0.16, median=0.092)
     text = answer.answer_html(answer.comparisons(claims), answer.StudySize(n=385, seeds=6, spheres=12, flats=6,
-                                                                           coarse=193))
+                                                                           grid_error=grid))
     assert "In part" in text
     assert "1 differ wherever tested (claim <b>b</b>)" in text
-    assert "1 more is untested here (most often: unresolved)" in text
+    assert "The other 2 are untested here" in text
+    assert "1 is unresolved" in text
     assert "1 needs an axis" in text
-    assert "6 seeds each, on 385² (grid error measured against 193²)" in text
+    assert "6 seeds each, on 385² (grid error measured against 193²: up to 16 % (median 9.2 %)" in text
     assert "presets/crossover.yaml" in text
+
+
+def test_untested_counts_add_up_and_name_their_reason():
+    """Nothing tested: the counts per reason add up to the comparisons, and a comparison off the
+    paper's setting is not said to wait for a larger preset (issue 48)."""
+    claims = _claims([("a", "s1", "untested", "off the paper's setting"), ("b", "s2", "untested", "off the paper's setting"),
+                      ("g", "s3", "untested", "not swept")])
+    text = answer.answer_html(answer.comparisons(claims))
+    assert "none of the 3 comparisons with the paper is tested here: 2 are off the paper&#x27;s setting" in text
+    assert "1 needs an axis" in text
+    assert "larger" not in text.split("The README")[0]
+
+
+def test_the_grid_error_sentence_is_its_statement():
+    grid = GridErrorStatement(measured=False, coarse=65, reason="the sweep has 1 seed")
+    size = answer.StudySize(n=129, seeds=1, spheres=1, flats=0, grid_error=grid)
+    assert "(grid error not measured: the sweep has 1 seed)" in size.sentence()
 
 
 def test_all_consistent_answers_yes():
@@ -121,11 +141,12 @@ def test_each_crossover_prediction_has_its_own_verdict():
     assert row.index("0.000824") < row.index("consistent") < row.index("0.0003") < row.index("differs"), row
 
 
-def test_holds_only_where_both_branches_were_scored():
-    table = _models(recommended=[True, False, True, False], holds=[True] * 4,
+def test_holds_read_from_the_table_with_why_not():
+    """The page shows the table's holds; where it is False for want of a branch, it says so."""
+    table = _models(recommended=[True, False, True, False], holds=[False, False, True, True],
                     n_loads_low=[0, 0, 3, 3], n_loads_high=[5, 5, 4, 4])
     html = _landing(table)
-    assert html.count("not scored: a branch has no resolved load") == 1
+    assert html.count("no: a branch has no resolved load") == 1
     assert html.count("<td style=\"border: 1px solid #bbb; padding: 2px 6px; text-align: left;\">yes</td>") == 1
 
 

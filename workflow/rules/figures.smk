@@ -44,6 +44,7 @@ rule summary:
         zeta=rules.crossover.output.zeta_csv if STUDY.generated else [],
         models=rules.models.output.csv if STUDY.generated else [],
         figures=rules.figures.output if STUDY.generated else [],
+        grid_error=grid_error_table if STUDY.generated else [],
         measured_fits=measured_tables("measured_spectrum"),
         measured_scorecards=measured_tables("measured_scorecard"),
         spectrum_merged=spectrum_outputs("spectrum_merge", "nc"),

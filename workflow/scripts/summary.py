@@ -10,5 +10,6 @@ with log_to(snakemake.log[0]):
     summary.run(snakemake.params.cfg, snakemake.output.html, claims_csv=inputs.claims or None,
                 crossover_csv=inputs.crossover or None, zeta_csv=inputs.zeta or None,
                 models_csv=inputs.models or None, figure_paths=list(inputs.figures),
+                grid_error_csv=inputs.grid_error or None,
                 measured_fits=list(inputs.measured_fits), measured_scorecards=list(inputs.measured_scorecards),
                 spectrum_merged=list(inputs.spectrum_merged), spectrum_figures=list(inputs.spectrum_figures))

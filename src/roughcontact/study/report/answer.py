@@ -15,7 +15,9 @@ import dataclasses
 import html
 import math
 
-from ..analysis.statistics import NOT_SWEPT, VERDICTS
+from ..analysis.grid_error import GridErrorStatement
+from ..analysis.statistics import (HOLDS_THRESHOLD, NO_PREDICTION, NOT_SWEPT, OFF_PAPER, OUT_OF_RANGE, UNRESOLVED,
+                                   VERDICTS)
 from .tables import verdict_word
 
 __all__ = ["README_PRESETS", "Comparison", "StudySize", "answer_html", "comparisons"]
@@ -84,32 +86,34 @@ class StudySize:
         Surface realisations per combination.
     spheres, flats : int
         Combinations of the sweep's axes with a finite radius and with ``R = inf``.
-    coarse : int or None
-        The grid-error companion's grid (``grid.coarse``; ``None``: the grid error is not measured).
+    grid_error : GridErrorStatement or None
+        The study's grid error as stated once
+        (:func:`roughcontact.study.analysis.grid_error.statement`); ``None``: not measured, no reason
+        known.
     """
 
     n: int
     seeds: int
     spheres: int
     flats: int
-    coarse: int | None = None
+    grid_error: GridErrorStatement | None = None
 
     @classmethod
-    def of(cls, cfg) -> "StudySize":
-        """The size of the resolved configuration *cfg*."""
+    def of(cls, cfg, grid_error: GridErrorStatement | None = None) -> "StudySize":
+        """The size of the resolved configuration *cfg*, with its grid error's statement."""
         from ..runs.naming import combinations
 
         combos = combinations(cfg) if cfg.get("hurst") else []
         spheres = sum(1 for c in combos if math.isfinite(c["radius"]))
-        coarse = cfg["grid"].get("coarse")
         return cls(n=int(cfg["grid"]["n"]), seeds=len(cfg.get("seeds", ())), spheres=spheres,
-                   flats=len(combos) - spheres, coarse=None if coarse is None or not spheres else int(coarse))
+                   flats=len(combos) - spheres, grid_error=grid_error)
 
     def sentence(self) -> str:
-        """``12 sphere and 6 flat combinations, 6 seeds each, on 385² (grid error against 193²)``."""
+        """``12 sphere and 6 flat combinations, 6 seeds each, on 385² (grid error measured against
+        193²: up to 16 % …)``; the grid error's words are its statement's."""
         kinds = [f"{count} {kind} combination{'s' if count != 1 else ''}"
                  for count, kind in ((self.spheres, "sphere"), (self.flats, "flat")) if count]
-        grid = (f"grid error measured against {self.coarse}²" if self.coarse is not None
+        grid = (self.grid_error.sentence() if self.grid_error is not None and self.spheres
                 else "grid error not measured" if self.spheres else "no sphere, so no grid error")
         return (f"{' and '.join(kinds) or 'no generated surface'}, {self.seeds} seed{'s' if self.seeds != 1 else ''} "
                 f"each, on {self.n}² ({grid})")
@@ -121,24 +125,48 @@ def _letters(items: list[Comparison]) -> str:
     return f"claim{'s' if len(letters) != 1 else ''} <b>{html.escape(', '.join(letters))}</b>"
 
 
+#: why a comparison is untested, in the answer's words (singular, plural), by ``untested_because``
+_UNTESTED_WORDS = {
+    UNRESOLVED: ("is unresolved (too few resolved loads, seeds or contact cells: a larger study decides it)",
+                 "are unresolved (too few resolved loads, seeds or contact cells: a larger study decides them)"),
+    NOT_SWEPT: ("needs an axis, surface kind or pairing this sweep does not have",
+                "need an axis, surface kind or pairing this sweep does not have"),
+    OFF_PAPER: ("is off the paper's setting (eqs. 11-17 are for an elastic, purely self-affine surface)",
+                "are off the paper's setting (eqs. 11-17 are for an elastic, purely self-affine surface)"),
+    HOLDS_THRESHOLD: ("has an interval that holds the threshold (more seeds may decide it)",
+                      "have an interval that holds the threshold (more seeds may decide them)"),
+    OUT_OF_RANGE: ("lies outside its model's stated range", "lie outside their model's stated range"),
+    NO_PREDICTION: ("has no paper value to compare with here", "have no paper value to compare with here"),
+}
+
+
+def _why_untested(untested: list[Comparison]) -> str:
+    """``15 are unresolved (…), 10 need an axis …``: the untested comparisons counted by their
+    (most frequent) reason, largest count first; the counts add up to ``len(untested)``."""
+    counts = collections.Counter(c.untested_because or UNRESOLVED for c in untested)
+    words = []
+    for because, count in counts.most_common():
+        singular, plural = _UNTESTED_WORDS.get(because, (f"is untested ({because})", f"are untested ({because})"))
+        words.append(f"{count} {singular if count == 1 else plural}")
+    return html.escape("; ".join(words))
+
+
 def answer_html(found: list[Comparison], size: StudySize | None = None) -> str:
     """The answer's paragraph: do the paper's claims hold here; which comparisons differ wherever
     tested and which only in some combinations (their claim letters; the table below has each
-    comparison's counts); how many are
-    untested for want of resolution and how many need an axis the sweep lacks; how large the study
-    is and which presets give the README's numbers."""
+    comparison's counts); the untested ones counted by their reason (:func:`_why_untested`: the
+    counts add up, each reason the one its rows name); how large the study is, its grid error as
+    stated once, and which presets give the README's numbers."""
     tested = [c for c in found if c.tested]
     differs = [c for c in tested if c.counts.get("differs", 0) == c.tested]
     mixed = [c for c in tested if 0 < c.counts.get("differs", 0) < c.tested]
     consistent = len(tested) - len(differs) - len(mixed)
     untested = [c for c in found if not c.tested]
-    not_swept = [c for c in untested if c.untested_because == NOT_SWEPT]
-    unresolved = [c for c in untested if c.untested_because != NOT_SWEPT]
     if not found:
         verdict = "<b>Not answered:</b> this study tests none of the paper's claims (its claims table is empty)."
     elif not tested:
-        verdict = (f"<b>Not answered:</b> none of the {len(found)} comparisons with the paper is tested here (too "
-                   "few resolved loads, seeds or combinations); a larger preset decides them.")
+        verdict = (f"<b>Not answered:</b> none of the {len(found)} comparisons with the paper is tested here: "
+                   f"{_why_untested(untested)}.")
     elif not differs and not mixed:
         verdict = (f"<b>Yes, as far as this study resolves:</b> each of the {len(tested)} comparisons with the "
                    "paper that it tests is consistent wherever tested.")
@@ -151,13 +179,9 @@ def answer_html(found: list[Comparison], size: StudySize | None = None) -> str:
             verdict += f"; {len(mixed)} differ in some combinations only ({_letters(mixed)})"
         verdict += "."
     parts = [verdict]
-    if unresolved:
-        reasons = collections.Counter(c.untested_because for c in unresolved if c.untested_because)
-        why = f" (most often: {html.escape(reasons.most_common(1)[0][0])})" if reasons else ""
-        parts.append(f"{len(unresolved)} more {'are' if len(unresolved) != 1 else 'is'} untested here{why}.")
-    if not_swept:
-        parts.append(f"{len(not_swept)} need{'' if len(not_swept) != 1 else 's'} an axis or surface kind this "
-                     "sweep does not have.")
+    if tested and untested:
+        parts.append(f"The other {len(untested)} {'are' if len(untested) != 1 else 'is'} untested here: "
+                     f"{_why_untested(untested)}.")
     if size is not None:
         parts.append(f"This study: {html.escape(size.sentence())}.")
     parts.append(f"The README's numbers come from larger studies: {html.escape(README_PRESETS)}.")

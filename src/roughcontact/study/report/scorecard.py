@@ -9,6 +9,7 @@ import numpy as np
 from ...models import scorecard as registry
 from ..analysis import decision
 from ..analysis import not_modelled as unmodelled
+from ..analysis.grid_error import NO_COMPANION
 from ..analysis.scorecard import empty_reason
 from ..config import axes
 from .plotting import MAX_CURVES, chunks, fixed_layout, panel_grid, pyplot, save_png
@@ -17,13 +18,16 @@ from .tables import not_measured, write_html_table
 __all__ = ["scorecard_lead", "scorecard_figure", "write_scorecard_page"]
 
 
-def scorecard_lead(table=None) -> str:
+def scorecard_lead(table=None, grid=None) -> str:
     """The lead paragraph of the scorecard page of the report (the registered models' summaries,
-    :data:`roughcontact.study.analysis.decision.RULE` and, given the *table*, whether its grid error is measured)."""
+    :data:`roughcontact.study.analysis.decision.RULE` and, given the *table*, whether its grid error is
+    measured; *grid*: the study's :class:`~roughcontact.study.analysis.grid_error.GridErrorStatement`,
+    whose reason is said where it is not)."""
     summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
                           for model in registry.models().values())
     optional = ", ".join(a.name for a in axes.optional_axes(normal=True))
-    grid = "" if table is None else decision.grid_note(table) + " "
+    reason = grid.reason if grid is not None and not grid.measured else NO_COMPANION
+    grid = "" if table is None else decision.grid_note(table, reason) + " "
     return (f"{decision.RULE} {grid}"
             "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
             "max_rel_dev is the largest |k_model/k_BEM - 1| over the resolved loads of the ensemble "
@@ -87,13 +91,15 @@ def scorecard_figure(path, label: str, curve, table) -> None:
     save_png(fig, path)
 
 
-def write_scorecard_page(table, study, path) -> None:
+def write_scorecard_page(table, study, path, grid=None) -> None:
     """The report's page of the scorecard *table* (:func:`roughcontact.study.analysis.scorecard.scorecard`
     of *study*): the decision matrix above it, :func:`scorecard_lead` (and why the table is empty,
-    where it is) and the columns that decide first."""
+    where it is) and the columns that decide first; *grid*: the study's
+    :class:`~roughcontact.study.analysis.grid_error.GridErrorStatement`."""
     absent = "" if len(table) else f"{not_measured(empty_reason(study))} "
-    write_html_table(table, path, title="Model scorecard", lead=absent + scorecard_lead(table),
-                     above=decision.matrix_html(table, list(registry.models())),
+    reason = grid.reason if grid is not None and not grid.measured else NO_COMPANION
+    write_html_table(table, path, title="Model scorecard", lead=absent + scorecard_lead(table, grid),
+                     above=decision.matrix_html(table, list(registry.models()), grid_reason=reason),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",
                                       "systematic_low_total_verdict", "systematic_high_total_verdict"),
                      first=("combination", "model", "decision", "tied_models", "decision_score", "difference_ci_low",

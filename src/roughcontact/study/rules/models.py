@@ -26,10 +26,11 @@ def run(cfg, *, stiffness, zeta, csv, nc, html, figures, grid_error=None, fine_r
     import pandas as pd
 
     from ..analysis.fine_reference import combined_grid_error
+    from ..analysis.grid_error import statement
     from ..analysis.scorecard import empty_reason, scorecard
     from ..config.settings import StudySettings
     from ..files import provenance
-    from ..files.io import read_groups, write_csv, write_groups
+    from ..files.io import read_csv, read_groups, write_csv, write_groups
     from ..report.scorecard import scorecard_figure, write_scorecard_page
     from ..runs import naming
 
@@ -42,7 +43,8 @@ def run(cfg, *, stiffness, zeta, csv, nc, html, figures, grid_error=None, fine_r
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, csv, reason=empty_reason(study))
     write_groups(nc, curves, attrs)
-    write_scorecard_page(table, study, html)
+    grid = statement(read_csv(grid_error) if grid_error else None, study.grid.coarse)
+    write_scorecard_page(table, study, html, grid)
     names = naming.sphere_names(study, adhesive=False)
     figures = list(figures)
     if len(names) != len(figures):

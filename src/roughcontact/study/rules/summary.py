@@ -21,7 +21,8 @@ def _by_name(cfg, key: str, **paths) -> list[tuple]:
 
 
 def run(cfg, out_html, *, claims_csv=None, crossover_csv=None, zeta_csv=None, models_csv=None, figure_paths=(),
-        measured_fits=(), measured_scorecards=(), spectrum_merged=(), spectrum_figures=()) -> None:
+        grid_error_csv=None, measured_fits=(), measured_scorecards=(), spectrum_merged=(),
+        spectrum_figures=()) -> None:
     """Write the landing page to *out_html* for the resolved configuration *cfg*: the generated
     study's tables (``None`` where the sweep has no generated surface), the measured scans'
     spectrum fits and scorecards (paths, in the order of ``topography``) and the measured spectra's
@@ -41,7 +42,8 @@ def run(cfg, out_html, *, claims_csv=None, crossover_csv=None, zeta_csv=None, mo
     if claims_csv is not None:
         extra = "\n".join(part for part in (landing_measured.measured_section(scans) if scans else "", spectra_html)
                           if part)
-        write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_paths, out_html, extra=extra)
+        write_summary(cfg, claims_csv, crossover_csv, zeta_csv, models_csv, figure_paths, out_html,
+                      grid_error_csv=grid_error_csv, extra=extra)
     elif scans or spectra:
         provenance.write_text(landing_measured.measured_only_html(scans, spectra_html), out_html)
     else:
