@@ -66,6 +66,7 @@ from .combination import Combination, combination, combo_label
 from .ensemble import combinations, resolved
 from .statistics import bootstrap_indices, interval, inverse_variance_weights, verdict, weighted_deviation
 from .crossover import NO_SPHERE
+from .grid_error import statement as grid_error_statement
 from ..config.settings import StudySettings
 
 __all__ = ["Combination", "MODELS_COLUMNS", "scorecard", "combo_label", "empty_reason", "precomputed_curves"]
@@ -104,7 +105,7 @@ def _systematic(k_model, k_mean, k_boot, use, branch: str, level: float) -> dict
 
 
 #: the reason of ``grid_error_note`` without a companion study
-NOT_MEASURED = "grid error not measured: no companion study (grid.coarse is null)"
+NOT_MEASURED = grid_error_statement(None, None).sentence()
 #: ... and with one that has no value at the combination's resolved loads
 NOT_MEASURED_HERE = "grid error not measured: the companion has no value at the resolved loads"
 #: the grid-error columns, NaN where it is not measured
@@ -181,14 +182,16 @@ def empty_reason(study) -> str:
     return f"no sphere combination has a load with at least {study.fit.resolved_cells} contact cells that a model predicts"
 
 
-def scorecard(groups: dict, zeta_df, study, grid_error=None, precomputed=None):
+def scorecard(groups: dict, zeta_df, study, grid_error=None, precomputed=None, *, not_measured: str = NOT_MEASURED):
     """``models.csv`` as a DataFrame (one row per model and sphere combination), and a Dataset of
     the relative deviations ``k_model/k_BEM − 1`` per load with the ensemble's 95 % band.
 
     *grid_error*: the table of :func:`roughcontact.study.analysis.grid_error.grid_error` of the study against
     its companion on ``grid.coarse`` (or ``None``): adds the grid-error columns (module docstring).
     *precomputed*: the groups of ``model_curves.nc`` (:mod:`roughcontact.study.analysis.model_curves`;
-    ``None``: every model computed here), read where they were computed for the same surface and loads."""
+    ``None``: every model computed here), read where they were computed for the same surface and loads.
+    *not_measured*: the ``grid_error_note`` of a combination without a grid error (the study's
+    :class:`~roughcontact.study.analysis.grid_error.GridErrorStatement`'s sentence)."""
     from . import model_curves
 
     import pandas as pd
@@ -230,7 +233,7 @@ def scorecard(groups: dict, zeta_df, study, grid_error=None, precomputed=None):
             branches = {"low": use & (force_norm < f_tr), "high": use & (force_norm >= f_tr)}
             systematic = {**_systematic(k_model, k_mean, k_boot, branches["low"], "low", level),
                           **_systematic(k_model, k_mean, k_boot, branches["high"], "high", level)}
-            grid = _not_measured(NOT_MEASURED) if g is None else _with_grid(dev, band, g, use, branches, k_boot,
+            grid = _not_measured(not_measured) if g is None else _with_grid(dev, band, g, use, branches, k_boot,
                                                                             k_mean, systematic)
             combo_boot.append(decision.inputs(k_model, k_mean, k_boot, use, branches, g))
             combo_rows.append(unmodelled.unscored({

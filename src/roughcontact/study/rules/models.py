@@ -38,12 +38,13 @@ def run(cfg, *, stiffness, zeta, csv, nc, html, figures, grid_error=None, fine_r
     errors = combined_grid_error(pd.read_csv(grid_error) if grid_error else None,
                                  pd.read_csv(fine_reference) if fine_reference else None)
     precomputed = read_groups(model_curves) if model_curves else None
-    table, curves = scorecard(read_groups(stiffness), pd.read_csv(zeta), study, errors, precomputed)
+    grid = statement(read_csv(grid_error) if grid_error else None, study.grid.coarse)
+    table, curves = scorecard(read_groups(stiffness), pd.read_csv(zeta), study, errors, precomputed,
+                              not_measured=grid.sentence())
     attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, csv, reason=empty_reason(study))
     write_groups(nc, curves, attrs)
-    grid = statement(read_csv(grid_error) if grid_error else None, study.grid.coarse)
     write_scorecard_page(table, study, html, grid)
     names = naming.sphere_names(study, adhesive=False)
     figures = list(figures)
