@@ -4,15 +4,19 @@ space, and presets shrunk, through the real ``snakemake`` on grids of at most 65
 :func:`test_drawn_sweeps_run_to_a_report` draws sweeps with hypothesis (sphere only, flat only or
 both; one or two seeds; two or five loads per branch, two being about one on each side of the
 crossover; the optional axes at one and two values; adhesion, hardness, tangential (poisson,
-friction), fields, the grid-error companions (grid.coarse by default, grid.fine, none)); its four
-explicit examples take every one of these, and a measured scan, through the workflow at least once,
+friction), fields, the grid-error companions (grid.coarse by default, grid.fine, none)); its five
+explicit examples (the zoo: flat only with one seed and a scan, one load per branch with adhesion,
+sphere and flat with hardness, cones and a roll-off, tangential with a cutoff, a sphere with one
+seed) take every one of these, and a measured scan, through the workflow at least once,
 the drawn ones (``ROUGHCONTACT_SWEEP_EXAMPLES``, default 1) add combinations, derandomized (the same
 sweeps on every machine). :func:`test_preset_runs_to_a_report` runs the presets of :data:`PRESETS`
 shrunk by :func:`shrink` (one per shape the examples do not take; ``ROUGHCONTACT_ALL_PRESETS=1``:
 every preset, about 40 s each). Each run must end in ``results/summary.html`` (with generated
 surfaces) and the report's landing page (``snakemake --report``) with every table readable (a
-table without a row: its header, and why in its sidecar, :func:`roughcontact.study.files.io.read_csv`),
-or stop before its first solve with one line naming the key. About 40 s per sweep on 2 busy cores.
+table without a row: its header, and why in its sidecar, :func:`roughcontact.study.files.io.read_csv`)
+and the truth of what its landing page says (``tests/report_truth.py``: no verdict on a point
+interval, tallies and counts that are the tables', the grid error as its table states it, the
+recommended models' holds as models.csv's), or stop before its first solve with one line naming the key. About 40 s per sweep on 2 busy cores.
 """
 from __future__ import annotations
 
@@ -30,7 +34,8 @@ hypothesis = pytest.importorskip("hypothesis")
 from hypothesis import HealthCheck, example, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from roughcontact.study.config import axes  # noqa: E402
+from report_truth import check_report_truth  # noqa: E402
+from roughcontact.study.config import axes, load_config, resolve_config  # noqa: E402
 from roughcontact.study.files import io as study_io  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -74,6 +79,9 @@ def run_to_report(cfg: dict, work: Path) -> str:
     report = _snakemake(work, "--configfile", "cfg.yaml", "--report", "results/report.html")
     assert report.returncode == 0, f"{cfg_text}\n{(report.stdout + report.stderr)[-4000:]}"
     assert (work / "results" / "report.html").stat().st_size > 1000
+    # truth as a property: what the pages say is what the tables hold (tests/report_truth.py)
+    resolved = resolve_config(load_config(work / "cfg.yaml"), base_dir=work)
+    check_report_truth(work, coarse=resolved.get("grid", {}).get("coarse"))
     return "report"
 
 
@@ -203,6 +211,7 @@ EXAMPLES = [
     _with(_base("sphere", seeds=1, count=2, n=65), "adhesion"),             # one load per branch
     _with(_base("both"), "hardness", "fine", "fields", exponent=[1.0, 2.0], rolloff=[0.5]),
     _with(_base("sphere"), "tangential", cutoff=[None, 0.125], h_rms=[0.005, 0.02]),
+    _base("sphere", seeds=1),                                                # one seed: no verdict at all
 ]
 
 #: drawn sweeps beyond the explicit examples (each about 40 s on 2 busy cores)
@@ -218,6 +227,7 @@ DRAWN = int(os.environ.get("ROUGHCONTACT_SWEEP_EXAMPLES", "1"))
 @example(cfg=EXAMPLES[1])
 @example(cfg=EXAMPLES[2])
 @example(cfg=EXAMPLES[3])
+@example(cfg=EXAMPLES[4])
 def test_drawn_sweeps_run_to_a_report(tmp_path_factory, cfg):
     work = tmp_path_factory.mktemp("sweep")
     if "units" in cfg:   # the measured scan: where SurfaceTopography is installed, else without it
