@@ -46,7 +46,7 @@ __all__ = ["Indentation1D", "StiffnessEnsemble", "body_profile", "flat_stiffness
 def body_profile(x, *, radius: float, exponent: float = 2.0) -> np.ndarray:
     """MDR profile of the body of revolution ``f = (R/m)(r/R)^m = Q r^m``: ``g = κ(m) Q |x|^m``.
 
-    ``Q = R^(1−m)/m`` as in ``surfaces.body_of_revolution``; κ of eq. 8 (``theory.kappa``).
+    ``Q = R^(1−m)/m`` as in ``surfaces.body_of_revolution``; κ of eq. 8 (:func:`roughcontact.models.paper.kappa`).
     The sphere (m = 2, κ = 2) gives ``g = x²/R``; the cone of slope 1 (m = 1) ``π|x|/2``.
     ``x`` and ``R`` in the length unit; returns ``g`` (length unit).
     """
@@ -262,7 +262,7 @@ def flat_stiffness(force, *, hurst: float, h_rms: float, length: float, n: int,
                    realizations: int = 1000, seed: int | None = 0) -> StiffnessEnsemble:
     """Mean MDR stiffness of a nominally flat rough surface: :func:`sphere_stiffness`, R = ∞.
 
-    The stiffness of the period ``L`` (compare ``theory.fractal_stiffness``, eq. 11);
+    The stiffness of the period ``L`` (compare :func:`roughcontact.models.paper.fractal_stiffness`, eq. 11);
     arguments and units as in :func:`sphere_stiffness`.
     """
     return sphere_stiffness(force, radius=math.inf, hurst=hurst, h_rms=h_rms, length=length,

@@ -238,7 +238,10 @@ def read_psd(path, *, convention: str = "c2d", series: str = CE_SERIES) -> PsdTa
     return PsdTable(q=q, c=c, unit=unit, source=name, series=used_series)
 
 
-def _check_table(q, c):
+def check_table(q, c, *, zero_c: bool = False):
+    """``(q, c)`` as float arrays, checked: 1-D of one length >= 2, finite, ``q > 0`` strictly
+    increasing, ``c > 0`` (``c >= 0`` with *zero_c*); ``ValueError`` naming what is wrong. The one
+    check of a tabulated spectrum (:func:`grid_spectrum`, :func:`roughcontact.surfaces.spectra.from_psd`)."""
     q = np.asarray(q, dtype=float)
     c = np.asarray(c, dtype=float)
     if q.ndim != 1 or q.shape != c.shape or q.size < 2:
@@ -246,10 +249,12 @@ def _check_table(q, c):
                          f"{q.shape} and {c.shape}")
     if not (np.all(np.isfinite(q)) and np.all(np.isfinite(c))):
         raise ValueError("q and c must be finite")
-    if np.any(q <= 0) or np.any(c <= 0):
-        raise ValueError("q and c must be > 0")
+    if np.any(q <= 0):
+        raise ValueError("q must be > 0")
+    if np.any(c < 0) if zero_c else np.any(c <= 0):
+        raise ValueError("c must be >= 0" if zero_c else "c must be > 0")
     if np.any(np.diff(q) <= 0):
-        raise ValueError("q must increase strictly")
+        raise ValueError("q must increase strictly (be strictly ascending)")
     return q, c
 
 
@@ -260,7 +265,7 @@ def grid_spectrum(q, c, n: int, *, length: float, convention: str = "c2d") -> np
     range ``[q_min, q_max]`` (no extrapolation; a grid mode within a relative ``1e-9`` of
     an end counts as inside) and at ``q = 0``.
     """
-    q, c = _check_table(q, c)
+    q, c = check_table(q, c)
     c = _to_c2d(q, c, convention)
     q1 = 2.0 * np.pi * np.fft.fftfreq(n, d=length / n)
     qq = np.hypot(q1[:, None], q1[None, :])

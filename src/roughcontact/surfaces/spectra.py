@@ -31,6 +31,7 @@ import math
 import numpy as np
 
 from .._validate import check_finite_positive, check_grid_size, check_hurst
+from .psd import check_table
 from .roughness import band, wavevectors
 
 __all__ = ["Spectrum", "from_heights", "from_psd", "self_affine_spectrum"]
@@ -358,19 +359,7 @@ def from_psd(q, c, *, length: float, convention: str = "persson") -> Spectrum:
     if convention not in _CONVENTIONS:
         raise ValueError(f"convention must be one of {sorted(_CONVENTIONS)}, got {convention!r}")
     check_finite_positive("length", length)
-    q = np.asarray(q, dtype=float)
-    c = np.asarray(c, dtype=float)
-    if q.ndim != 1 or q.shape != c.shape or q.size < 2:
-        raise ValueError(f"q and c must be 1-D of one length >= 2, got shapes {q.shape}, "
-                         f"{c.shape}")
-    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(c))):
-        raise ValueError("q and c must be finite")
-    if np.any(q <= 0):
-        raise ValueError("q must be > 0")
-    if np.any(c < 0):
-        raise ValueError("c must be >= 0")
-    if np.any(np.diff(q) <= 0):
-        raise ValueError("q must be strictly ascending")
+    q, c = check_table(q, c, zero_c=True)
     area = _log_trapezoid_area(q)
     return Spectrum(q=q, variance=c * _CONVENTIONS[convention] * area, length=length,
                     source=f"tabulated PSD ({convention})", bin_area=area)
