@@ -92,7 +92,7 @@ def _start_pressure(previous, lift, depth_bound):
     return (lift <= depth_bound).astype(float)
 
 
-def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, kernel):
+def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, kernel, min_cells=0):
     """Periodic contact solved on the cells that can touch, with a dense influence matrix.
 
     A periodic displacement satisfies ``u ≥ G_min Σp`` (``G_min < 0`` the most
@@ -105,7 +105,8 @@ def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, 
     second pass with it as the bound succeeds. Returns ``None`` (use the working set
     or the FFT solver) when the candidates are more than :func:`dense_limit`. ``kernel`` is
     :func:`polonsky_keer` or a :func:`capped_kernel` (the argument holds for it
-    too: a contact cell still has ``g ≤ 0``).
+    too: a contact cell still has ``g ≤ 0``). Fewer candidates than ``min_cells`` (with a cap
+    ``H``, ``⌈Σp/H⌉``: the fewest cells that carry the load) also return ``None``.
     """
     n = lift.shape[0]
     flat_lift = lift.reshape(-1)
@@ -113,7 +114,7 @@ def solve_candidates(lift, operator, total, initial, tol, maxiter, depth_bound, 
     iterations = 0
     while True:
         cells = np.flatnonzero(flat_lift <= depth_bound + reach)
-        if cells.size > dense_limit(operator):
+        if cells.size > dense_limit(operator) or cells.size < min_cells:
             return None
         dense = DenseOperator(operator.influence_matrix(*np.divmod(cells, n)))
         start = _start_pressure(None if initial is None else initial.reshape(-1)[cells],
@@ -157,7 +158,7 @@ def _grown(storage: np.ndarray, used: int, size: int, limit: int) -> np.ndarray:
     return grown
 
 
-def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
+def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel, min_cells=0):
     """Warm-started periodic contact solved on a working set of cells with a dense matrix.
 
     An active-set scheme with an a posteriori test, like the windows: solve on a
@@ -181,7 +182,8 @@ def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
     Returns ``None`` (use the FFT solver) when the first working set exceeds
     :func:`dense_limit` cells; when a later one would, the solve continues on
     the whole grid by FFT from the last pressure. ``kernel`` is
-    :func:`polonsky_keer` or a :func:`capped_kernel` (the test holds for it too).
+    :func:`polonsky_keer` or a :func:`capped_kernel` (the test holds for it too); the first
+    working set has at least ``min_cells`` cells (with a cap ``H``, ``⌈Σp/H⌉``).
     """
     n = lift.shape[0]
     limit = dense_limit(operator)
@@ -193,7 +195,7 @@ def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
     gap = flat_lift + operator(previous.reshape(n, n)).reshape(-1)
     gap[support] = -math.inf
     extra = math.ceil(WORKING_MARGIN * support.size * max(total / previous.sum() - 1.0, 0.0)) + 16
-    extra = min(extra, n * n - support.size)
+    extra = min(max(extra, min_cells - support.size + 16), n * n - support.size)
     if support.size + extra > limit:
         return None
     cells = np.sort(np.argpartition(gap, support.size + extra - 1)[: support.size + extra])
@@ -246,7 +248,7 @@ def solve_working_set(lift, operator, total, initial, tol, maxiter, kernel):
     return dataclasses.replace(result, pressure=pressure.reshape(n, n), iterations=iterations)
 
 
-def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, periodic, kernel):
+def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, periodic, kernel, min_cells=0):
     """Windowed (non-periodic) or candidate-cell / working-set (periodic) solve of one load.
 
     Parameters
@@ -267,6 +269,9 @@ def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, perio
     periodic : bool
     kernel : callable
         :func:`polonsky_keer` or a :func:`capped_kernel`.
+    min_cells : int
+        The fewest cells that can carry ``total`` (a capped kernel's ``⌈total/H⌉``; 0: any):
+        the periodic candidate and working sets are at least this large.
 
     Returns
     -------
@@ -286,10 +291,10 @@ def equilibrium(lift, operator, total, initial, depth_bound, tol, maxiter, perio
         solution = None
         if math.isfinite(depth_bound) and depth_bound > 0:
             solution = solve_candidates(lift, operator, total, initial, tol, maxiter,
-                                        depth_bound, kernel)
+                                        depth_bound, kernel, min_cells)
             if solution is None and initial is not None:
                 solution = solve_working_set(lift, operator, total, initial, tol, maxiter,
-                                             kernel)
+                                             kernel, min_cells)
         if solution is None:  # from the neighbouring solution, or uniform pressure
             start = _start_pressure(initial, lift, math.inf)
             solution = kernel(lift, operator, total, start, tol, maxiter)

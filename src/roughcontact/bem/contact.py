@@ -203,7 +203,7 @@ def _solve(heights, force, length, e_star, periodic, tol, maxiter, initial, dept
         kernel = functools.partial(capped_kernel, hardness=float(hardness))
         result, window = equilibrium(
             lift, operator, total, initial, depth_bound, tol, max(maxiter - iterations, 1),
-            periodic, kernel)
+            periodic, kernel, min_cells=cells)
         p, depth, iterations = result.pressure, result.depth, iterations + result.iterations
     if not periodic:
         edge = np.concatenate([p[0], p[-1], p[:, 0], p[:, -1]])
