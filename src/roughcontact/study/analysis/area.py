@@ -148,7 +148,7 @@ def _systematic(a_model, mean, a_boot, use, level) -> tuple:
 def area_scorecard(groups: dict, study):
     """The area scorecard (module docstring): a DataFrame of :data:`AREA_COLUMNS` and per
     combination the curves for the figure, ``{label: {"force", "area" (the ensemble mean), "band_low",
-    "band_high", "resolved", "crossover_force", "min_cells", "rms_slope", "radius", "models": {name: A}}}``
+    "band_high", "resolved", "crossover_force", "min_cells", "rms_slope", "radius", "exponent", "models": {name: A}}}``
     (areas in length², forces in force units)."""
     import pandas as pd
 
@@ -175,7 +175,8 @@ def area_scorecard(groups: dict, study):
         curves[label] = {"force": force, "area": mean, "band_low": band[0], "band_high": band[1],
                          "resolved": context.resolved, "crossover_force": context.crossover_force,
                          "min_cells": context.min_cells, "rms_slope": context.rms_slope,
-                         "radius": context.surface.radius, "models": predicted}
+                         "radius": context.surface.radius, "exponent": context.surface.exponent,
+                         "models": predicted}
         use_all = context.resolved & (mean > 0)
         combo_rows = []
         for name, a_model in predicted.items():

@@ -2,7 +2,7 @@
 :func:`roughcontact.study.analysis.exponents.exponent_table` measures, drawn for the report."""
 from __future__ import annotations
 
-from .plotting import fixed_layout, pyplot, save_png
+from .plotting import layout_with_legends, legend_below, pyplot, save_png
 
 __all__ = ["curves", "exponents_figure"]
 
@@ -17,20 +17,24 @@ def curves(table, kind: str) -> list:
 
 
 def exponents_figure(table, path) -> None:
-    """Local exponents ``d ln k/d ln F`` with their 95 % bands, one panel per surface kind."""
+    """Local exponents ``d ln k/d ln F`` with their 95 % bands, one panel per surface kind, against
+    the fractal law's 1/(H+1) (dotted) and the linear law's 1 (dashed), every line in the legend
+    under its panel."""
     plt = pyplot()
     kinds = sorted(set(table["kind"])) if len(table) else []
     fig, axes = plt.subplots(1, max(1, len(kinds)), figsize=(5.5 * max(1, len(kinds)), 4), squeeze=False)
+    legends = []
     for ax, kind in zip(axes[0], kinds):
         for label, curve in curves(table, kind):
             line = ax.semilogx(curve["force"], curve["local_exponent"], "o-", ms=3, label=label)[0]
             ax.fill_between(curve["force"], curve["ci_low"], curve["ci_high"], color=line.get_color(), alpha=0.2)
         for hurst in sorted(set(table.loc[table["kind"] == kind, "hurst"])):
-            ax.axhline(1 / (hurst + 1), ls=":", color="0.5", lw=0.8)
-        ax.axhline(1.0, ls="--", color="0.3", lw=0.8)
+            ax.axhline(1 / (hurst + 1), ls=":", color="0.5", lw=0.8,
+                       label=f"1/(H+1) = {1 / (hurst + 1):.3g}: fractal law, eq. 11 (H = {hurst:g})")
+        ax.axhline(1.0, ls="--", color="0.3", lw=0.8, label="1: linear law K ∝ p (claim (l))")
         ax.set(xlabel="F / (E* L²)", ylabel="d ln k / d ln F", title=f"{kind}: local exponents (95 % band)")
-        ax.legend(fontsize=6)
+        legends.append(legend_below(ax, gap=0.62, fontsize=6))
     if not kinds:
         axes[0][0].text(0.5, 0.5, "no resolved window", ha="center")
-    fixed_layout(fig, left=0.7, right=0.18, bottom=0.62, top=0.38, wspace=0.72)
+    layout_with_legends(fig, legends, left=0.7, right=0.45, bottom=0.62, top=0.38, wspace=0.9)
     save_png(fig, path)

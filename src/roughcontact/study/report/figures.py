@@ -17,7 +17,7 @@ from ..config import axes
 from ..runs import naming as runs
 from ..analysis.ensemble import resolved
 from ..config.settings import StudySettings
-from .plotting import fixed_layout
+from .plotting import data_limits, edge_mark, fixed_layout, layout_with_legends, legend_below
 
 log = logging.getLogger(__name__)
 
@@ -37,15 +37,18 @@ def _sphere_combos(study: StudySettings) -> list[dict]:
 
 def figure_specs(study) -> list[dict]:
     """One dict per figure: key, file (a PNG name), caption (an ``.rst`` name), category, labels.
+    The figures of a sphere (Figs. 2-4, the collapse) only where the sweep has one (a finite radius).
 
     The workflow places the files and finds the captions; nothing here knows its folders."""
     study = StudySettings.of(study)
+    sphere = any(math.isfinite(r) for r in study.radius)   # Figs. 2 and 4 draw a sphere: none on a flat sweep
     specs = [
         {"key": ("fig1",), "file": "fig1_surface.png", "caption": "fig1.rst",
          "category": "Surfaces", "labels": {"figure": "Fig. 1 self-affine surface"}},
-        {"key": ("fig2",), "file": "fig2_rough_sphere.png", "caption": "fig2.rst",
-         "category": "Surfaces", "labels": {"figure": "Fig. 2 rough sphere"}},
     ]
+    if sphere:
+        specs.append({"key": ("fig2",), "file": "fig2_rough_sphere.png", "caption": "fig2.rst",
+                      "category": "Surfaces", "labels": {"figure": "Fig. 2 rough sphere"}})
     for combo in _sphere_combos(study):
         labels = {"figure": "Fig. 3", "H": f"{combo['hurst']:g}", "R": f"{combo['radius']:g}",
                   "h_rms": f"{combo['h_rms']:g}"}
@@ -53,13 +56,12 @@ def figure_specs(study) -> list[dict]:
             labels["variant"] = combo["variant"]
         specs.append({"key": ("fig3", combo), "file": f"fig3_{combo['name']}.png", "caption": "fig3.rst",
                       "category": "Fig. 3 stiffness vs force", "labels": labels})
-    specs += [
-        {"key": ("fig4",), "file": "fig4_profiles.png", "caption": "fig4.rst",
-         "category": "Surfaces", "labels": {"figure": "Fig. 4 equivalent profiles"}},
-        {"key": ("zeta",), "file": "zeta.png", "caption": "zeta.rst",
-         "category": "zeta(H) and collapse", "labels": {"figure": "zeta(H)"}},
-    ]
-    if any(math.isfinite(r) for r in study.radius):
+    if sphere:
+        specs.append({"key": ("fig4",), "file": "fig4_profiles.png", "caption": "fig4.rst",
+                      "category": "Surfaces", "labels": {"figure": "Fig. 4 equivalent profiles"}})
+    specs.append({"key": ("zeta",), "file": "zeta.png", "caption": "zeta.rst",
+                  "category": "zeta(H) and collapse", "labels": {"figure": "zeta(H)"}})
+    if sphere:
         specs.append({"key": ("collapse",), "file": "collapse.png", "caption": "collapse.rst",
                       "category": "zeta(H) and collapse", "labels": {"figure": "collapse"}})
     return specs
@@ -137,7 +139,9 @@ def fig1(plt, inputs: Inputs, _key):
     fig, (a, b) = plt.subplots(1, 2, figsize=(9, 4), gridspec_kw={"width_ratios": [1, 1.4]})
     im = a.imshow(z.T, cmap="gray", origin="lower", extent=(0, L, 0, L))
     fig.colorbar(im, ax=a, label="z")
-    a.set(title=f"(a) H = {H0:g}, h_rms = {h0:g}, seed {seed}", xlabel="x", ylabel="y")
+    # two short lines: the square image is narrower than its axes' slot, its title must not reach the colorbar
+    a.set_title(f"(a) H = {H0:g}, h_rms = {h0:g}\nseed {seed}", fontsize=10)
+    a.set(xlabel="x", ylabel="y")
     b.plot((np.arange(n) + 0.5) * L / n, z[:, n // 2], lw=0.8)
     b.set(title="(b) cut at y = L/2", xlabel="x", ylabel="z")
     fixed_layout(fig, left=0.7, right=0.2, bottom=0.6, top=0.4, wspace=1.45)
@@ -164,12 +168,70 @@ def fig2(plt, inputs: Inputs, _key):
     return fig
 
 
+def variant_text(combo: dict, length: float) -> str:
+    """The optional axes of a sphere combination off the paper's setting, as ``tag = value``
+    (``m = 1, w = 0.001``; empty at the paper's setting): the title's words for the run name's tags."""
+    out = []
+    for axis in axes.optional_axes():
+        if axis.name not in combo or axis.name not in runs.AXES["sphere"]:
+            continue
+        value = runs.axis_value(axis.name, combo[axis.name], length)
+        if value != axis.paper:
+            out.append(f"{axis.tag} = {value:g}" if isinstance(value, (int, float)) else f"{axis.tag} = {value}")
+    return ", ".join(out)
+
+
+def crossover_row(crossover, combo: dict):
+    """The row of ``crossover.csv`` (a DataFrame) of the sphere combination *combo*, or None."""
+    import numpy as np
+
+    if crossover is None or not len(crossover):
+        return None
+    row = crossover
+    for a in runs.AXES["sphere"]:
+        if a in row:
+            row = row[np.isclose(row[a], combo[a], rtol=1e-12, atol=0) | (np.isinf(row[a]) & np.isinf(combo[a]))]
+    return row.iloc[0] if len(row) else None
+
+
+def _verdict(row, column: str) -> str:
+    """``": verdict"`` of crossover.csv's *column* as the table has it (empty without one)."""
+    word = row.get(column)
+    return f": {word}" if isinstance(word, str) and word else ""
+
+
+def crossover_marks(ax, row, hurst: float) -> None:
+    """Fig. 3's crossover forces of one crossover.csv *row* on *ax* (its limits set): eq. 17 with
+    ζ = 1.7/(H+1) (eq. 13, the paper's prediction) and with the fitted ζ, each labelled with its
+    value and the table's verdict for it (``verdict_estimate``, ``verdict_fit``), and the measured
+    crossover with its 95 % interval (shaded). A predicted force beyond the axes is an arrow at
+    their edge (:func:`~roughcontact.study.report.plotting.edge_mark`)."""
+    zeta_est = float(row.get("zeta_estimate", paper.zeta_estimate(hurst)))
+    estimate = float(row.get("Ftr_pred_estimate", math.nan))
+    if math.isfinite(estimate):
+        edge_mark(ax, estimate, "eq. 17, ζ = 1.7/(H+1)", color="0.35", ls="-.",
+                  label=f"F_tr eq. 17, ζ = 1.7/(H+1) = {zeta_est:.3g}: {estimate:.2g}{_verdict(row, 'verdict_estimate')}")
+    fitted = float(row.get("Ftr_pred_fit", math.nan))
+    if math.isfinite(fitted):
+        zeta_fit = float(row.get("zeta_fit", math.nan))
+        name = f"fitted ζ = {zeta_fit:.3g}" if math.isfinite(zeta_fit) else "fitted ζ"
+        edge_mark(ax, fitted, "eq. 17, fitted ζ", color="C1", ls=(0, (5, 2)),
+                  label=f"F_tr eq. 17, {name}: {fitted:.2g}{_verdict(row, 'verdict_fit')}")
+    low, high = float(row.get("Ftr_ci_low", math.nan)), float(row.get("Ftr_ci_high", math.nan))
+    if math.isfinite(low) and math.isfinite(high):
+        ax.axvspan(low, high, color="C3", alpha=0.15, lw=0,
+                   label=f"F_tr measured = {float(row['Ftr_measured']):.2g} ({low:.2g}-{high:.2g}, 95 %)")
+        ax.axvline(float(row["Ftr_measured"]), color="C3", ls=":", lw=1.2)
+
+
 def fig3(plt, inputs: Inputs, key):
     """Fig. 3 for one sphere combination: the BEM ensemble, eq. 16 (any body),
-    both asymptotes and the crossover force predicted and measured (95 % interval); beside it,
+    both asymptotes and the crossover force predicted (eq. 17 with ζ = 1.7/(H+1) and with the
+    fitted ζ, each with crossover.csv's verdict) and measured (95 % interval); beside it,
     where there are any, the curves beyond the paper (Greenwood-Tripp at the paper's setting, the
     loading tangent of a plastic run) with the BEM ensemble and eq. 16 again, so that no panel
-    holds more than seven curves."""
+    holds more than seven curves. The axes hold the measured values (a curve or force beyond them
+    does not stretch them); the legends lie under the panels."""
     import numpy as np
 
     combo = key[1]
@@ -197,9 +259,10 @@ def fig3(plt, inputs: Inputs, key):
     if beyond:
         other.plot(Fg, paper.stiffness_from_force(Fg * E * L**2, radius=radius, hurst=hurst, h_rms=h, length=L, e_star=E, zeta=zf, exponent=m) / (E * L),
                    "k-", lw=1.5, label=f"eq. 16, {inputs.zeta_label(hurst)}")
+    loading = None
     if plastic:
-        other.plot(F, sub["loading_k_mean"].values / (E * L), "s", mfc="none", color="C1", ms=4,
-                   label="loading tangent (plastic path)")
+        loading = sub["loading_k_mean"].values / (E * L)
+        other.plot(F, loading, "s", mfc="none", color="C1", ms=4, label="loading tangent (plastic path)")
     body = "Hertz, eq. 9" if m == 2 else f"smooth body m = {m:g}, eq. 7"
     curves = [(zf, "k-", f"eq. 16, {inputs.zeta_label(hurst)}")]
     if inputs.zeta_fitted(hurst):  # else the same curve: eq. 13 is what eq. 16 already uses
@@ -218,28 +281,24 @@ def fig3(plt, inputs: Inputs, key):
         shown = (gt.force >= Fg[0] * E * L**2) & (gt.force <= Fg[-1] * E * L**2)
         other.plot(gt.force[shown] / (E * L**2), gt.stiffness[shown] / (E * L), "-.", color="C4", lw=1,
                    label=f"Greenwood-Tripp (mu = {gt.mu:.3g})")
-    cross = inputs.crossover
-    if len(cross):
-        row = cross
-        for a in runs.AXES["sphere"]:
-            if a in row:
-                row = row[np.isclose(row[a], combo[a], rtol=1e-12, atol=0) | (np.isinf(row[a]) & np.isinf(combo[a]))]
-        if len(row):
-            r = row.iloc[0]
-            fp = float(r["Ftr_pred_fit"]) if math.isfinite(r["Ftr_pred_fit"]) else float(r["Ftr_pred_estimate"])
-            ax.axvline(fp, color="0.4", ls="-.", lw=1, label=f"F_tr predicted (eq. 17) = {fp:.2g}")
-            if math.isfinite(r["Ftr_ci_low"]):
-                ax.axvspan(r["Ftr_ci_low"], r["Ftr_ci_high"], color="C3", alpha=0.15, lw=0,
-                           label=f"F_tr measured = {r['Ftr_measured']:.2g} "
-                                 f"({r['Ftr_ci_low']:.2g}-{r['Ftr_ci_high']:.2g}, 95 %): {r['verdict_fit']}")
-                ax.axvline(r["Ftr_measured"], color="C3", ls=":", lw=1.2)
-    title = f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n} {combo['variant']}".strip()
-    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)", title=title)
-    ax.legend(fontsize=6.5, loc="upper left")
+    xlim, ylim = data_limits(F, k, low=np.where(k - err > 0, k - err, np.nan), high=k + err if loading is None
+                             else np.concatenate([k + err, loading]))
+    ax.set(xscale="log", yscale="log", xlabel="F / (E* L²)", ylabel="k / (E* L)")
+    if xlim:
+        ax.set_xlim(xlim)
+    if ylim:
+        ax.set_ylim(ylim)
+    row = crossover_row(inputs.crossover, combo)
+    if row is not None:
+        crossover_marks(ax, row, hurst)
+    variant = variant_text(combo, L)
+    title = f"H = {hurst:g}, R = {radius:g}, h_rms = {h:g}, L = {L:g}, n = {n}" + (f", {variant}" if variant else "")
+    ax.set_title(title, fontsize=10)
+    legends = [legend_below(ax, gap=0.62)]
     if beyond:
         other.set(xscale="log", yscale="log", xlabel="F / (E* L²)", title="beyond the paper")
-        other.legend(fontsize=6.5, loc="upper left")
-    fixed_layout(fig, left=0.8, right=0.32, bottom=0.62, top=0.38, wspace=0.36)
+        legends.append(legend_below(other, gap=0.62))
+    layout_with_legends(fig, legends, left=0.8, right=0.32, bottom=0.62, top=0.38, wspace=0.36)
     return fig
 
 
@@ -301,41 +360,64 @@ def _zeta_source(text) -> str:
     return text[:cut].strip()
 
 
+def adhesive(combo: dict) -> bool:
+    """Whether a sphere combination is adhesive (a work of adhesion > 0): eq. 16 is adhesion-free."""
+    return float(combo.get("work_of_adhesion", 0.0) or 0.0) > 0
+
+
 def collapse(plt, inputs: Inputs, _key):
-    """All sphere combinations as k/k_tr against F/F_tr over the master curves of eq. 16: one
-    panel per Hurst exponent and group of combinations (at most ``MAX_CURVES`` curves a panel,
-    the master curves included), one colour per combination."""
+    """The elastic, adhesion-free comparison of eq. 16: every sphere combination without adhesion as
+    k/k_tr against F/F_tr over the master curves of eq. 16 (the adhesive ones left out, the figure
+    says how many), one panel per Hurst exponent and group of combinations (at most ``MAX_CURVES``
+    curves a panel, the master curves included), one colour per combination; the master curves
+    span the data, the legends lie under the panels."""
     import numpy as np
 
     from .plotting import MAX_CURVES, chunks, panel_grid
 
     study = inputs.study
     L, E = study.grid.length, study.e_star
-    y = np.geomspace(0.05, 30, 300)
+    spheres = _sphere_combos(study)
+    left_out = [c for c in spheres if adhesive(c)]
     facets = []
     for hurst in study.hurst:
-        mine = [c for c in _sphere_combos(study) if c["hurst"] == hurst]
+        mine = [c for c in spheres if c["hurst"] == hurst and not adhesive(c)]
         exponents = sorted({c["exponent"] for c in mine})
         facets += [(hurst, exponents, group) for group in chunks(mine, MAX_CURVES - len(exponents)) if group]
     fig, panels = panel_grid(plt, len(facets), width=5.0, height=4.0, max_columns=3, sharex=True, sharey=True)
     for ax, (hurst, exponents, group) in zip(panels, facets):
-        for m in exponents:
-            ax.plot(y ** (m + 1) + y ** (hurst + 1), y, "k-" if m == 2 else "k--", lw=1,
-                    label=f"eq. 16, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
-        for i, combo in enumerate(group):
+        zf = inputs.zeta_used(hurst)
+        points, ys = [], {m: [0.05, 30.0] for m in exponents}
+        for combo in group:
             m = combo["exponent"]
-            zf = inputs.zeta_used(hurst)
             ftr = paper.crossover_force(combo["radius"], hurst=hurst, h_rms=combo["h_rms"], length=L, e_star=E, zeta=zf, exponent=m)
             ktr = paper.body_stiffness(ftr, radius=combo["radius"], e_star=E, exponent=m)
             sub = inputs.ensemble.sel({a: combo[a] for a in runs.AXES["sphere"]})
             ok = resolved(sub["contact_cells_mean"].values, study.fit.resolved_cells)
-            label = f"R = {combo['radius']:g}, h_rms = {combo['h_rms']:g}" + (f", {combo['variant']}" if combo["variant"] else "")
-            ax.plot(sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr, "o", ms=3, color=f"C{i % 10}",
-                    alpha=0.8, label=label)
-        ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr", title=f"H = {hurst:g}")
-        ax.legend(fontsize=6)
-    fig.suptitle("all sphere runs (ensemble means, >= fit.resolved_cells contact cells) over eq. 16", fontsize=9)
-    fixed_layout(fig, left=0.8, right=0.18, bottom=0.62, top=0.68, wspace=0.42, hspace=1.0)
+            x, y = sub["force"].values[ok] / ftr, sub["k_mean"].values[ok] / ktr
+            points.append((combo, x, y))
+            ys[m] += [v for v in y if np.isfinite(v) and v > 0]
+        for m in exponents:
+            grid = np.geomspace(min(ys[m]) / 2, max(ys[m]) * 2, 300)   # the master curve reaches its points
+            ax.plot(grid ** (m + 1) + grid ** (hurst + 1), grid, "k-" if m == 2 else "k--", lw=1,
+                    label=f"eq. 16, m = {m:g}: F/F_tr = y^(m+1) + y^(H+1)")
+        for i, (combo, x, y) in enumerate(points):
+            variant = variant_text(combo, L)
+            label = f"R = {combo['radius']:g}, h_rms = {combo['h_rms']:g}" + (f", {variant}" if variant else "")
+            ax.plot(x, y, "o", ms=3, color=f"C{i % 10}", alpha=0.8, label=label)
+        ax.set(xscale="log", yscale="log", xlabel="F / F_tr", ylabel="k / k_tr (y)", title=f"H = {hurst:g}")
+    if not facets:
+        panels[0].text(0.5, 0.5, "no adhesion-free sphere combination: eq. 16 has nothing to compare",
+                       ha="center", va="center", fontsize=8, wrap=True, transform=panels[0].transAxes)
+    title = ("sphere runs over eq. 16: ensemble means at the loads\n"
+             f"with >= {study.fit.resolved_cells} contact cells (fit.resolved_cells), ζ of zeta.csv or 1.7/(H+1)")
+    if left_out:
+        title += (f"\n{len(left_out)} adhesive combination{'s' if len(left_out) > 1 else ''} (w > 0) "
+                  "left out: eq. 16 is adhesion-free")
+    fig.suptitle(title, fontsize=8)
+    top = 0.75 + 0.14 * title.count("\n")
+    legends = [legend_below(ax, gap=0.62, fontsize=6) for ax in panels[:len(facets)]]
+    layout_with_legends(fig, legends, left=0.8, right=0.18, bottom=0.62, top=top, wspace=0.42, hspace=1.0)
     return fig
 
 
@@ -362,7 +444,7 @@ def make_figures(study, ensemble_nc, zeta_csv, crossover_csv, outputs, model_cur
         study=study, ensemble=read_groups(ensemble_nc).get("sphere"), zeta=read_csv(zeta_csv),
         crossover=read_csv(crossover_csv),
         hurst=_pick(study.hurst, 0.7), h_rms=_pick(study.h_rms, 9e-3),
-        radius=_pick(finite, 0.5) if finite else 0.5, seed=study.seeds[0],
+        radius=_pick(finite, 0.5) if finite else math.inf, seed=study.seeds[0],
         curves=read_groups(model_curves_nc) if model_curves_nc else None)
     for spec, path in zip(specs, paths):
         save_png(DRAW[spec["key"][0]](plt, inputs, spec["key"]), path)

@@ -9,7 +9,7 @@ contact in units of ``h_rms``, as probability densities; the ensemble's mean (bl
 standard errors over the seeds shaded) over one thin curve per seed (at most
 :data:`~roughcontact.study.report.plotting.MAX_CURVES`); on a sphere beside Hertz's density of the
 smooth sphere's pressure, ``8x/9`` for ``x = p/p̄ < 3/2`` (the share of the area below ``p`` is
-``(p/p₀)²`` and ``p̄ = 2p₀/3``; Johnson 1985, §3.9).
+``(p/p₀)²`` and ``p̄ = 2p₀/3``; Johnson 1985, §3.9). Each panel's legend lies under it.
 """
 from __future__ import annotations
 
@@ -20,7 +20,7 @@ import numpy as np
 
 from ..analysis.histograms import mean_histograms
 from ..config.settings import StudySettings
-from .plotting import MAX_CURVES, pyplot, save_png
+from .plotting import MAX_CURVES, layout_with_legends, legend_below, pyplot, save_png
 
 __all__ = ["make_histogram_figure"]
 
@@ -57,8 +57,8 @@ def make_histogram_figure(study, stiffness_nc, out_png) -> None:
     left.set(xlabel="p / p̄   (p̄ = F/A, the run's mean contact pressure)",
              ylabel="probability density over the contact")
     right.set(xlabel="g / h_rms", ylabel="probability density out of contact")
-    left.legend(fontsize=7)
     fig.suptitle(f"{kind}: {where}, F/(E* L^2) = {float(first['histogram_force_normalized'][0]):.3g}", fontsize=9)
-    fig.tight_layout()
+    legends = [legend_below(ax, gap=0.55, fontsize=7, ncol=2) for ax in (left, right)]   # under the densities
+    layout_with_legends(fig, legends, left=0.7, right=0.2, bottom=0.55, top=0.4, wspace=0.8)
     save_png(fig, out_png)
     log.info("drew the mean histograms of load %d (%s) into %s", int(first["histogram_load"][0]), where, out_png)

@@ -12,7 +12,7 @@ from ..analysis import not_modelled as unmodelled
 from ..analysis.grid_error import NO_COMPANION
 from ..analysis.scorecard import empty_reason
 from ..config import axes
-from .plotting import MAX_CURVES, chunks, fixed_layout, panel_grid, pyplot, save_png
+from .plotting import MAX_CURVES, chunks, layout_with_legends, legend_below, panel_grid, pyplot, save_png
 from .tables import not_measured, write_html_table
 
 __all__ = ["scorecard_lead", "scorecard_figure", "write_scorecard_page"]
@@ -52,11 +52,17 @@ def scorecard_lead(table=None, grid=None) -> str:
             f"grid-error columns are then NaN). {summaries}. models.csv holds every digit.")
 
 
+#: the legend's mark of a model by its decision (models.csv), and what the legend's title says it means
+MARKS = {"recommended": "★", "tied": "≈"}
+MEANING = {"recommended": "recommended by the decision rule", "tied": "tied with the recommended model"}
+
+
 def scorecard_figure(path, label: str, curve, table) -> None:
     """The figure of one sphere combination: every model's ``k_model/k_BEM − 1`` against the load,
     in the ensemble's band (widened by the grid error where measured); the models split evenly
     over as few panels as hold at most :data:`~roughcontact.study.report.plotting.MAX_CURVES` lines
-    each (the zero line included)."""
+    each (the zero line included). The legends lie under the panels; a model recommended by the
+    decision rule is marked ★ in its legend, one tied with it ≈, and the legend's title says so."""
     plt = pyplot()
     force = curve["force_normalized"].values
     shown = curve["resolved"].values.astype(bool)
@@ -67,7 +73,9 @@ def scorecard_figure(path, label: str, curve, table) -> None:
     # the bands at the scored (resolved) loads only: at an unresolved load the grid error can be
     # 1e15 or infinite, and the axis would hide every model
     low, high = curve["band_low"].values[shown], curve["band_high"].values[shown]
+    legends = []
     for ax, group in zip(axes, groups):
+        marks = set()
         if "grid_error" in curve:
             g = np.abs(curve["grid_error"].values[shown])
             ax.fill_between(force[shown], -np.sqrt(low ** 2 + g ** 2), np.sqrt(high ** 2 + g ** 2), color="0.93",
@@ -80,14 +88,17 @@ def scorecard_figure(path, label: str, curve, table) -> None:
             missing = mark[unmodelled.COLUMN].iloc[0] if len(mark) else ""
             if missing:                      # not scored: dashed, the axes it ignores named
                 text += ", not modelled: " + missing
-            if len(mark) and "decision" in mark and mark["decision"].iloc[0] in ("recommended", "tied"):
-                text += " ★" if mark["decision"].iloc[0] == "recommended" else " ≈"
+            if len(mark) and "decision" in mark and mark["decision"].iloc[0] in MARKS:
+                marks.add(mark["decision"].iloc[0])
+                text += " " + MARKS[mark["decision"].iloc[0]]
             ax.semilogx(force[shown], curve[name].values[shown], "o--" if missing else "o-", ms=3,
                         label=name + text)
         ax.set(xlabel="F / (E* L²)", ylabel="k_model / k_BEM − 1")
-        ax.legend(fontsize=7)
+        # the marks the legend uses, explained in its title (models.csv's decision column)
+        title = "; ".join(f"{MARKS[d]} {MEANING[d]}" for d in MARKS if d in marks) or None
+        legends.append(legend_below(ax, gap=0.62, fontsize=7, title=title, title_fontsize=7))
     fig.suptitle(label + ("" if "grid_error" in curve else " (grid error not measured)"), fontsize=10)
-    fixed_layout(fig, left=0.82, right=0.18, bottom=0.62, top=0.62, wspace=0.42, hspace=1.0)
+    layout_with_legends(fig, legends, left=0.82, right=0.18, bottom=0.62, top=0.62, wspace=0.42, hspace=1.0)
     save_png(fig, path)
 
 
