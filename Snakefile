@@ -1,12 +1,35 @@
 # roughcontact parameter study (Pohrt & Popov 2013): `snakemake --cores 2`
-# Sweep: config.yaml (or --configfile presets/*.yaml); output: results/; report:
-# `snakemake --report results/report.html`.  See README.md.
+# Sweep: config.yaml (or --configfile presets/*.yaml); output: results/ (a --configfile's study:
+# studies/<its stem>/results/); report: `snakemake --report results/report.html`.  See README.md.
 import sys
 from pathlib import Path
 
 from snakemake.utils import min_version
 
 min_version("9.0")
+
+
+sys.path.insert(0, str(Path(workflow.basedir) / "src"))
+from roughcontact.study.files import directory as study_directory
+
+# One study, one directory: a --configfile run in the checkout without --directory runs in
+# studies/<the config file's stem>/ (snakemake --cores 2 --configfile presets/paper.yaml writes
+# studies/paper/results/), beside the default study of config.yaml (results/), never over it; with
+# --directory DIR, in DIR. A directory holds one study: common.smk refuses another's there.
+STUDY_DIRECTORY = (
+    study_directory.default_directory(workflow.overwrite_configfiles, workflow.basedir)
+    if workflow.overwrite_workdir is None
+    and Path.cwd().resolve() == Path(workflow.basedir).resolve()
+    else None
+)
+if STUDY_DIRECTORY is not None:
+    if workflow.is_main_process:
+        print(
+            f"This study runs in {STUDY_DIRECTORY}/ (its own directory; --directory DIR for another)",
+            file=sys.stderr,
+        )
+
+    workdir: STUDY_DIRECTORY
 
 
 # One YAML, one study: a file given with --configfile is the whole sweep (every key it does not
@@ -19,7 +42,6 @@ min_version("9.0")
 # (docs/guide/pipeline.md; `roughcontact check-config FILE` gives the line).
 if not workflow.overwrite_configfiles:
     if Path("config.yaml").is_file():
-        sys.path.insert(0, str(Path(workflow.basedir) / "src"))
         from roughcontact.errors import ConfigError
         from roughcontact.study.config.resolve import error_line, load_config
 

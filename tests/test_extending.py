@@ -45,9 +45,12 @@ WITH_AXIS = {**BASE, AXIS: [None, 1.0]}
 
 
 def _snakemake(where: Path, config: Path, *args: str) -> subprocess.CompletedProcess:
+    """Snakemake of the scratch checkout *where*, its study in *where* (``--directory``: a
+    ``--configfile`` run in a checkout would otherwise go to ``studies/<stem>/``) unless *args* name one."""
     env = {**os.environ, "PYTHONPATH": str(where / "src")}
-    return subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "--configfile", str(config), *args],
-                          cwd=where, env=env, capture_output=True, text=True, timeout=900)
+    directory = () if "--directory" in args else ("--directory", str(where))
+    return subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "--configfile", str(config), *directory,
+                           *args], cwd=where, env=env, capture_output=True, text=True, timeout=900)
 
 
 def _ok(done: subprocess.CompletedProcess) -> subprocess.CompletedProcess:
@@ -170,9 +173,10 @@ def test_a_new_axis_reruns_no_run(scratch):
 
 @pytest.fixture(scope="module")
 def with_axis(scratch):
-    """The study with the example axis at its paper value and 1.0, run in the same directory."""
+    """The study edited to sweep the example axis at its paper value and 1.0 (its config file
+    rewritten: one directory, one study), run in the same directory."""
     where, before, _ = scratch
-    config = where / "with_axis.yaml"
+    config = where / "base.yaml"
     config.write_text(yaml.safe_dump(WITH_AXIS))
     planned = _planned_rules(_ok(_snakemake(where, config, "-n")))
     _ok(_snakemake(where, config, "-q"))

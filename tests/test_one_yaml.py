@@ -3,7 +3,10 @@ the schema's defaults, run from the repository or with ``--directory``; a grid n
 grid-error companion, ``(n + 1)/2`` unless ``grid.coarse`` says otherwise."""
 from __future__ import annotations
 
+import contextlib
+import os
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -47,11 +50,19 @@ def _jobs(args, cwd) -> dict:
 
 
 def test_one_yaml_is_one_study_with_or_without_directory(tmp_path):
-    """The same file run from the repository root and with --directory: the same jobs (the 257² grid's
-    companion on 129², no key of config.yaml merged in)."""
-    sweep = tmp_path / "my.yaml"
+    """The same file run from the repository root (its study in studies/<stem>/) and with
+    --directory: the same jobs (the 257² grid's companion on 129², no key of config.yaml merged in)."""
+    sweep = tmp_path / f"one-yaml-{os.getpid()}.yaml"   # a stem no one else's study has
     sweep.write_text("grid: {n: 257}\nhurst: [0.7]\nradius: [0.5]\nh_rms: [9.0e-3]\nseeds: 2\n")
-    from_root = _jobs(["--configfile", str(sweep)], ROOT)
+    own = ROOT / "studies" / sweep.stem
+    assert not own.exists()
+    try:
+        from_root = _jobs(["--configfile", str(sweep)], ROOT)
+        assert own.is_dir()   # made by the dry run, as --directory makes its directory
+    finally:
+        shutil.rmtree(own, ignore_errors=True)
+        with contextlib.suppress(OSError):
+            (ROOT / "studies").rmdir()   # where no other study is
     elsewhere = _jobs(["--configfile", str(sweep), "--directory", str(tmp_path / "study")], tmp_path)
     assert from_root == elsewhere
     assert any(rule.startswith("indent_coarse") for rule in from_root), from_root

@@ -45,11 +45,11 @@ def scratch(tmp_path_factory):
     shutil.copy(ROOT / "Snakefile", where / "Snakefile")
     base = where / "base.yaml"
     base.write_text(yaml.safe_dump(BASE))
-    _run(where, base, "-q")
+    _run(where, base, "-q", "--directory", str(where))   # in the checkout's results/, not studies/base/
     before = {p: p.read_bytes() for p in sorted((where / "results" / "runs").rglob("*.nc"))}
     assert not (where / "src" / target).exists()
     shutil.copy(EXAMPLE, where / "src" / target)
-    planned = _run(where, base, "-n").stdout
+    planned = _run(where, base, "-n", "--directory", str(where)).stdout
     study = where / "with.yaml"
     study.write_text(yaml.safe_dump({**BASE, "fields": {"quantities": ["peak_pressure", "mean_contact_pressure"]}}))
     _run(where, study, "-q", "--directory", str(where / "with"))

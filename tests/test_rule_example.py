@@ -200,7 +200,9 @@ BASE = {"grid": {"n": 65, "length": 1.0, "coarse": None}, "e_star": 1.0, "hurst"
 
 def _snakemake(where: Path, *args: str) -> str:
     env = {**os.environ, "PYTHONPATH": str(where / "src")}
-    done = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", *args, "--configfile", "base.yaml"],
+    # the study in the scratch checkout's results/ (a --configfile run there would go to studies/base/)
+    done = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", *args, "--configfile", "base.yaml",
+                           "--directory", str(where)],
                           cwd=where, env=env, capture_output=True, text=True, timeout=900)
     assert done.returncode == 0, f"snakemake failed:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}"
     return done.stdout + done.stderr

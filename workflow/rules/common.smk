@@ -30,6 +30,7 @@ from roughcontact.study.config.companions import (
 from roughcontact.study.analysis import adhesion as study_adhesion  # noqa: E402
 from roughcontact.study.config.stickiness import StickinessSettings  # noqa: E402
 from roughcontact.study.config import measured as measured_inputs  # noqa: E402
+from roughcontact.study.files import directory as study_directory  # noqa: E402
 
 try:
     # one line naming the key and what is allowed, before any job starts; the paths of
@@ -56,6 +57,7 @@ COARSE = StudySettings.of(COARSE_CONFIG) if COARSE_CONFIG is not None else None
 # the fine reference of the small loads (grid.fine): the sphere runs' loads up to grid.fine_to
 FINE_CONFIG = fine_config(config) if STUDY.grid.fine is not None else None
 FINE = StudySettings.of(FINE_CONFIG) if FINE_CONFIG is not None else None
+
 
 # The workflow's paths: one run file, log and benchmark per (combination, seed).
 RUN_PATTERN = "results/runs/{combo}/seed{seed}.nc"
@@ -90,6 +92,55 @@ ANALYSIS_PRIORITY = 1 + max(
 )
 FIGURE_DIR = "results/figures"
 CAPTION_DIR = "../report"  # relative to workflow/rules/
+
+# One directory, one study (roughcontact.study.files.directory): the config file(s) of this study,
+# as its directory records them (results/configfile.txt, written when its first job starts); a
+# directory holding another configuration's study is refused in one line naming both, before any
+# job (a directory made before the record: refused where a run file of this study's paths was
+# computed with other settings; the checkout's results/ is config.yaml's).
+STUDY_NAMES = study_directory.config_names(workflow.configfiles, workflow.basedir)
+
+
+def _expected_runs():
+    """{run file: its job record} of this study's runs (the check of a directory without record)."""
+    return {
+        study_runs.run_path(run, RUN_PATTERN): study_settings.job_settings(
+            STUDY, run
+        ).record()
+        for run in study_runs.runs(STUDY)
+    }
+
+
+if workflow.is_main_process:
+    try:
+        study_directory.check_study(
+            Path.cwd(),
+            STUDY_NAMES,
+            checkout=workflow.basedir,
+            # paths relative to the checkout where the command was typed there, else absolute
+            shown_from=(
+                workflow.basedir
+                if workflow.overwrite_workdir is None
+                and Path(workflow.workdir_init).resolve()
+                == Path(workflow.basedir).resolve()
+                else None
+            ),
+            runs=(
+                None
+                if not STUDY.generated
+                or (
+                    STUDY_NAMES == ["config.yaml"]
+                    and Path.cwd().resolve() == Path(workflow.basedir).resolve()
+                )
+                else _expected_runs
+            ),
+        )
+    except ConfigError as err:
+        raise SystemExit(str(err))
+
+
+onstart:
+    study_directory.record_study(Path.cwd(), STUDY_NAMES)
 
 
 def run_files(wildcards):
