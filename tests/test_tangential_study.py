@@ -160,7 +160,8 @@ def test_partial_slip_path_is_in_the_run(tmp_path):
 def _synthetic(factor: float = 1.0, seeds: int = 6):
     """A full_stick and a partial_slip group on a Hertzian sphere (k_n ∝ F^(1/3), a in cells ≥ 50)
     whose k_t, k_t(Q) and δ_max follow Mindlin, Cattaneo–Mindlin and Grzemba times *factor*, with
-    1 % noise over seeds; F_tr far below the loads (all on the Hertz branch)."""
+    1 % noise over seeds (δ_max: paired factors 1 ± 1 %); F_tr far below the loads (all on the Hertz
+    branch)."""
     rng = np.random.default_rng(3)
     force = np.geomspace(1e-4, 1e-2, 8)
     nu, mu = 0.3, 0.5
@@ -180,7 +181,9 @@ def _synthetic(factor: float = 1.0, seeds: int = 6):
     loads = np.array([4, 6])
     slip_k = ratio * k_n[:, loads, None] * theory.cattaneo_stiffness_ratio(f)[None, None] * factor
     depth = force[loads] ** (2 / 3) * np.ones((seeds, 1))
-    delta = theory.largest_micro_slip(depth, friction=mu, poisson=nu) * factor
+    # per-seed factors 1 ± 1 % in pairs (their mean is 1): δ_max has an interval over the seeds
+    paired = 1 + 0.01 * np.array([-1.0, 1.0, -0.5, 0.5, -0.25, 0.25, -0.75, 0.75])[:seeds, None]
+    delta = theory.largest_micro_slip(depth, friction=mu, poisson=nu) * factor * paired
     dims = ("hurst", "radius", "h_rms", "poisson", "friction", "seed")
     slip = xr.Dataset(
         {"slip_stiffness": ((*dims, "slip_load", "slip_step"), slip_k[None, None, None, None, None]),
