@@ -38,7 +38,8 @@ shrinking; 25–40 s for the file on two shared cores (2026-12-03). Long::
     ROUGHCONTACT_FUZZ_EXAMPLES=2000 python -m pytest tests/test_kernel_fuzz.py -q
 
 draws that many paths per kernel at random (``--hypothesis-seed=N`` replays a run; a failure prints
-its ``@reproduce_failure`` blob), shrinking a failure to a smaller one; ``-k capped`` (or another
+its ``@reproduce_failure`` blob), shrinking a failure to a smaller one, and leaves the explicit
+examples (draws that failed once) to the quick run; ``-k capped`` (or another
 kernel's name: ``elastic``, ``detachment``, ``maugis``, ``full_stick``, ``partial_slip``) runs one
 kernel. 200 paths per kernel took 7 min on two shared cores, so 2000 take more than an hour.
 docs/guide/solver.md, "Convergence fuzzing".
@@ -74,11 +75,13 @@ _LONG = os.environ.get("ROUGHCONTACT_FUZZ_EXAMPLES")
 
 
 def fuzz(kernel: str):
-    """The hypothesis settings of one kernel's test: :data:`QUICK` derandomized paths without
-    shrinking, or ``ROUGHCONTACT_FUZZ_EXAMPLES`` random ones with shrinking (module docstring)."""
+    """The hypothesis settings of one kernel's test: the explicit examples and :data:`QUICK`
+    derandomized paths without shrinking, or ``ROUGHCONTACT_FUZZ_EXAMPLES`` random ones with shrinking
+    and without the explicit examples (the quick run's; a known failure would end the search at once)."""
     common = dict(deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
     if _LONG:
-        return settings(max_examples=int(_LONG), derandomize=False, print_blob=True, **common)
+        return settings(max_examples=int(_LONG), derandomize=False, print_blob=True,
+                        phases=(Phase.generate, Phase.target, Phase.shrink), **common)
     return settings(max_examples=QUICK[kernel], derandomize=True,
                     phases=(Phase.explicit, Phase.generate), **common)
 
