@@ -54,7 +54,8 @@ from .result import KernelResult
 
 __all__ = ["GRADIENT_EVERY", "SNAP", "bounded_cg", "optimality", "project"]
 
-#: Cells this close to a bound, relative to ``H``, are put on it by :func:`project`.
+#: Cells this close to a bound, relative to ``H``, are put on it (by :func:`project` and after each
+#: conjugate-gradient step): a move of at most ``SNAP·H`` per cell, below any tolerance on the gap.
 SNAP = 1e-12
 #: Most iterations between two projected-gradient steps (the termination argument needs them).
 GRADIENT_EVERY = 50
@@ -99,10 +100,7 @@ def project(values: np.ndarray, total: float, hardness: float) -> np.ndarray:
         if guess in (low, high):
             result = np.clip(values - low, 0.0, hardness)
             break
-    # cells within SNAP·H of a bound sit on it (the rounding of λ would leave them a hair
-    # inside, counted free with the residual of a bound cell)
-    result[result <= SNAP * hardness] = 0.0
-    result[result >= (1.0 - SNAP) * hardness] = hardness
+    _snap(result, hardness)
     free = (result > 0.0) & (result < hardness)
     if free.any():
         result[free] += (total - result.sum()) / np.count_nonzero(free)
@@ -268,14 +266,13 @@ def bounded_cg(lift, operator, total, hardness, pressure, *, tol, maxiter) -> Ke
             counts.conjugate += 1
             since_gradient += 1
             if tau < room[limit]:
-                p[free] = current - tau * values
+                p[free] = _snap(current - tau * values, hardness)
                 face = free
             else:  # stop at the first bound; that cell joins it
                 tau = float(room[limit])
                 moved = current - tau * values
                 moved[limit] = 0.0 if values[limit] > 0.0 else hardness
-                np.clip(moved, 0.0, hardness, out=moved)
-                p[free] = moved
+                p[free] = _snap(np.clip(moved, 0.0, hardness, out=moved), hardness)
                 counts.truncated += 1
                 face, since_gradient = None, GRADIENT_EVERY  # expansion: a projected-gradient step next
             response *= -tau
@@ -291,6 +288,15 @@ def bounded_cg(lift, operator, total, hardness, pressure, *, tol, maxiter) -> Ke
     return KernelResult(pressure=p.reshape(shape), depth=depth, iterations=iteration, converged=False,
                         error=error,
                         diagnosis=counts.diagnosis(reason, shape, gap, p, hardness, depth))
+
+
+def _snap(p, hardness):
+    """*p* with the cells within :data:`SNAP` ``· H`` of a bound put on it, in place: the rounding of
+    ``λ`` in :func:`project`, or of a step that takes a ring of cells of equal heights to a bound
+    together, would leave them a hair inside, counted free with the residual of a bound cell."""
+    p[p <= SNAP * hardness] = 0.0
+    p[p >= (1.0 - SNAP) * hardness] = hardness
+    return p
 
 
 def _start(pressure, total, hardness):
