@@ -40,7 +40,8 @@ by a multiple of ``‖P(p − α r) − p‖`` (Luo & Tseng, Ann. Oper. Res. 46,
 converges to ``g*``, which meets the optimality conditions exactly, and every term of the
 stopping test tends to 0: it is met after finitely many iterations for any ``tol`` above the
 rounding floor of the gap (a few ``10⁻¹⁵ |g|``). There the Armijo condition can no longer be
-decided: the kernel then stops and says so (:attr:`KernelResult.diagnosis`) instead of cycling.
+decided (no projected step has a negative slope, on an exactly recomputed displacement): the kernel
+then stops and says so (:attr:`KernelResult.diagnosis`) instead of cycling.
 """
 
 from __future__ import annotations
@@ -234,6 +235,10 @@ def bounded_cg(lift, operator, total, hardness, pressure, *, tol, maxiter) -> Ke
                 or chopped > _PROPORTION**2 * float(phi @ phi)):
             step = _gradient_step(p, residual, alpha, total, hardness, apply, counts)
             if step is None:
+                if not exact:   # the updated displacement may hide the descent: recompute, retry
+                    displacement, exact, since_exact = apply(p), True, 0
+                    counts.refreshes += 1
+                    continue
                 reason = ("no step decreases the energy in floating point (the rounding floor of the "
                           f"gap, error {error:.3g} > tol {tol:.3g})")
                 break
