@@ -167,20 +167,16 @@ def _vertical_lines(ax):
             if len(line.get_xdata()) == 2 and line.get_xdata()[0] == line.get_xdata()[1]}
 
 
-def test_fig3_draws_eq17_with_zeta_of_eq13_at_its_value(plt):
+@pytest.mark.parametrize("label, value", [
+    ("F_tr eq. 17, ζ = 1.7/(H+1)", 8.0e-5),   # eq. 17 with ζ of eq. 13
+    ("F_tr eq. 17, fitted ζ", 7.2e-5),         # the fitted ζ, its own line
+])
+def test_fig3_draws_each_eq17_line_at_its_value(plt, label, value):
     study = _study()
     fig = figures.fig3(plt, _inputs(study), _fig3_key(study))
     lines = _vertical_lines(fig.axes[0])
-    estimate = [x for label, x in lines.items() if label.startswith("F_tr eq. 17, ζ = 1.7/(H+1)")]
-    assert estimate == [pytest.approx(8.0e-5)], lines
-
-
-def test_fig3_draws_eq17_with_the_fitted_zeta_as_its_own_line(plt):
-    study = _study()
-    fig = figures.fig3(plt, _inputs(study), _fig3_key(study))
-    lines = _vertical_lines(fig.axes[0])
-    fitted = [x for label, x in lines.items() if label.startswith("F_tr eq. 17, fitted ζ")]
-    assert fitted == [pytest.approx(7.2e-5)], lines
+    drawn = [x for name, x in lines.items() if name.startswith(label)]
+    assert drawn == [pytest.approx(value)], lines
 
 
 @pytest.mark.parametrize("column, text", [
