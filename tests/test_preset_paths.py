@@ -41,6 +41,8 @@ from roughcontact.study.config.stickiness import StickinessSettings
 from roughcontact.study.runs import indent, jobs, naming
 
 ROOT = Path(__file__).resolve().parents[1]
+#: the shared measured scans (a clone of the repository elsewhere is not beside shared/)
+SHARED = Path(os.environ.get("ROUGHCONTACT_TOPOGRAPHIES", ROOT.parent / "shared" / "topographies"))
 CONFIGS = [ROOT / "config.yaml", *sorted((ROOT / "presets").glob("*.yaml"))]
 #: The reduced grids, smallest first: a preset runs on the first its checks accept.
 GRIDS = (65, 129, 257)
@@ -57,6 +59,14 @@ def reduced(path: Path) -> tuple[dict, int]:
     """The resolved configuration of *path* on the smallest of :data:`GRIDS` it accepts, with its
     grid's companions reduced alike, and that grid."""
     raw = resolve.load_config(path)
+    for entry in raw.get("topography") or []:   # a scan beside the preset, else in SHARED, else skip
+        if isinstance(entry, dict) and "file" in entry:
+            here = (path.parent / entry["file"]).resolve()
+            there = SHARED / Path(entry["file"]).name
+            if not (here.is_file() or there.is_file()):
+                pytest.skip(f"{path.name}: the scan {entry['file']} is not on this machine (the shared "
+                            "topographies; ROUGHCONTACT_TOPOGRAPHIES)")
+            entry["file"] = str(here if here.is_file() else there)
     grid = dict(raw.get("grid") or {})
     full = resolve.resolve_config(copy.deepcopy(raw), base_dir=path.parent)
     refused = []
