@@ -101,12 +101,7 @@ def project(values: np.ndarray, total: float, hardness: float) -> np.ndarray:
         if guess in (low, high):
             result = np.clip(values - low, 0.0, hardness)
             break
-    _snap(result, hardness)
-    free = (result > 0.0) & (result < hardness)
-    if free.any():
-        result[free] += (total - result.sum()) / np.count_nonzero(free)
-        np.clip(result, 0.0, hardness, out=result)
-    return result
+    return _restore_total(_snap(result, hardness), total, hardness)
 
 
 def _depth(gap, free, capped, zero):
@@ -229,8 +224,9 @@ def bounded_cg(lift, operator, total, hardness, pressure, *, tol, maxiter) -> Ke
         residual = gap - depth
         free = np.flatnonzero(classes == 1)
         phi = residual[free] - residual[free].mean() if free.size else residual[free]
-        chopped = (np.minimum(residual[classes == 0], 0.0) @ np.minimum(residual[classes == 0], 0.0)
-                   + np.maximum(residual[classes == 2], 0.0) @ np.maximum(residual[classes == 2], 0.0))
+        entering = np.minimum(residual[classes == 0], 0.0)    # at 0, wanting pressure
+        leaving = np.maximum(residual[classes == 2], 0.0)     # at the cap, wanting less
+        chopped = float(entering @ entering + leaving @ leaving)
         if (free.size < 2 or since_gradient >= GRADIENT_EVERY
                 or chopped > _PROPORTION**2 * float(phi @ phi)):
             step = _gradient_step(p, residual, alpha, total, hardness, apply, counts)
@@ -324,7 +320,7 @@ def _classes(p, hardness):
 
 
 def _restore_total(p, total, hardness):
-    """``p`` with the rounding drift of ``Σ p`` spread over the free cells."""
+    """``p`` with its difference of ``Σ p`` from *total* spread over the free cells (in place)."""
     free = (p > 0.0) & (p < hardness)
     if free.any():
         p[free] += (total - p.sum()) / np.count_nonzero(free)
