@@ -53,6 +53,7 @@ from ...errors import MergeError
 
 from .ensemble import combinations, resolved
 from ..config.settings import StudySettings
+from ..files.io import REASON
 from .statistics import bootstrap_indices, interval
 
 __all__ = ["grid_error", "richardson", "estimate", "run_grid_error", "GridErrorStatement", "statement",
@@ -210,6 +211,13 @@ class GridErrorStatement:
     largest: float = math.nan
     median: float = math.nan
 
+    @property
+    def why_not(self) -> str:
+        """Why a page's scores hold no grid error: :attr:`reason`, or :data:`NO_COMPANION` for a
+        study that has no statement or whose grid error is measured (a table without it then has
+        no companion value)."""
+        return self.reason or NO_COMPANION
+
     def sentence(self) -> str:
         """``grid error measured against 193²: up to 16 % (median 9.2 %) at the resolved loads`` or
         ``grid error not measured: <reason>``."""
@@ -223,8 +231,6 @@ def statement(table, coarse: int | None) -> GridErrorStatement:
     """The :class:`GridErrorStatement` of ``grid_error.csv`` as read by
     :func:`roughcontact.study.files.io.read_csv` (its empty reason in ``attrs``), or of ``None``
     (the study has no companion: *coarse* is ``None``)."""
-    from ..files.io import REASON
-
     if table is None or coarse is None:
         return GridErrorStatement(measured=False, coarse=coarse, reason=NO_COMPANION)
     values = np.asarray([], dtype=float)

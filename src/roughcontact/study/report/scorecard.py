@@ -26,7 +26,7 @@ def scorecard_lead(table=None, grid=None) -> str:
     summaries = "; ".join(f"{model.summary} (modelled axes: {', '.join(model.axes) or 'none'})"
                           for model in registry.models().values())
     optional = ", ".join(a.name for a in axes.optional_axes(normal=True))
-    reason = grid.reason if grid is not None and not grid.measured else NO_COMPANION
+    reason = grid.why_not if grid is not None else NO_COMPANION
     grid = "" if table is None else decision.grid_note(table, reason) + " "
     return (f"{decision.RULE} {grid}"
             "Each model predicts the rough sphere's stiffness k(F) from the surface's parameters; "
@@ -108,7 +108,7 @@ def write_scorecard_page(table, study, path, grid=None) -> None:
     where it is) and the columns that decide first; *grid*: the study's
     :class:`~roughcontact.study.analysis.grid_error.GridErrorStatement`."""
     absent = "" if len(table) else f"{not_measured(empty_reason(study))} "
-    reason = grid.reason if grid is not None and not grid.measured else NO_COMPANION
+    reason = grid.why_not if grid is not None else NO_COMPANION
     write_html_table(table, path, title="Model scorecard", lead=absent + scorecard_lead(table, grid),
                      above=decision.matrix_html(table, list(registry.models()), grid_reason=reason),
                      verdict_columns=("systematic_low_verdict", "systematic_high_verdict",

@@ -214,7 +214,7 @@ def summary_html(claims, crossover, zeta, models, fig3_png, *, fig3_title: str =
                      "ensemble below and above the crossover force (mean relative deviation, 95 % interval, "
                      "verdict).</p>")
         grid = size.grid_error if size is not None else None
-        reason = grid.reason if grid is not None and not grid.measured else NO_COMPANION
+        reason = grid.why_not if grid is not None else NO_COMPANION
         parts.append(f"<p>{html.escape(decision.grid_note(models, reason))}</p>")
         rows = []
         for r in recommended_models(models):

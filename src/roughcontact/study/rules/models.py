@@ -27,7 +27,7 @@ def run(cfg, *, stiffness, zeta, csv, nc, html, figures, grid_error=None, fine_r
 
     from ..analysis.fine_reference import combined_grid_error
     from ..analysis.grid_error import statement
-    from ..analysis.scorecard import empty_reason, scorecard
+    from ..analysis.scorecard import NOT_MEASURED_HERE, empty_reason, scorecard
     from ..config.settings import StudySettings
     from ..files import provenance
     from ..files.io import read_csv, read_groups, write_csv, write_groups
@@ -39,8 +39,9 @@ def run(cfg, *, stiffness, zeta, csv, nc, html, figures, grid_error=None, fine_r
                                  pd.read_csv(fine_reference) if fine_reference else None)
     precomputed = read_groups(model_curves) if model_curves else None
     grid = statement(read_csv(grid_error) if grid_error else None, study.grid.coarse)
+    # a combination without grid-error rows: the study's reason, or (measured elsewhere) none here
     table, curves = scorecard(read_groups(stiffness), pd.read_csv(zeta), study, errors, precomputed,
-                              not_measured=grid.sentence())
+                              not_measured=NOT_MEASURED_HERE if grid.measured else grid.sentence())
     attrs = provenance.provenance_attrs(config=study.config, title="model scorecard: k_model/k_BEM - 1 per load",
                                         bootstrap_over="seeds", forces="F/(E* L^2)")
     write_csv(table, csv, reason=empty_reason(study))
